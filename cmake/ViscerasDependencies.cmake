@@ -1,0 +1,46 @@
+# Every dependency comes from a Debian 12 package through find_package; nothing is fetched.
+# The order matters (BUILD_NOTES.md): MPI with C before VTK, Eigen's own config before VTK's
+# FindEigen3 module shadows it.
+
+find_package(MPI REQUIRED COMPONENTS C CXX)
+find_package(Eigen3 3.4 REQUIRED NO_MODULE)
+find_package(Threads REQUIRED)
+find_package(nlohmann_json 3.11 REQUIRED)
+find_package(CLI11 REQUIRED)
+find_package(spdlog REQUIRED)
+find_package(SQLite3 REQUIRED)
+# libzip's CMake config in bookworm references the zipcmp/zipmerge/ziptool programs of other
+# packages; pkg-config needs none of them.
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(LIBZIP REQUIRED IMPORTED_TARGET libzip)
+if(NOT TARGET libzip::zip)
+  add_library(libzip::zip ALIAS PkgConfig::LIBZIP)
+endif()
+find_package(CGAL REQUIRED COMPONENTS ImageIO)
+find_package(assimp REQUIRED)
+find_package(OpenCV REQUIRED COMPONENTS core imgproc imgcodecs)
+find_package(Qt5 REQUIRED COMPONENTS Core Gui Widgets Test)
+find_package(VTK 9.1 REQUIRED COMPONENTS
+  CommonCore CommonDataModel CommonExecutionModel CommonMath CommonTransforms
+  IOXML IOLegacy IOGeometry IOImage
+  FiltersCore FiltersGeneral FiltersGeometry
+  ImagingCore
+  GUISupportQt RenderingCore RenderingOpenGL2 RenderingVolumeOpenGL2 InteractionStyle
+  ChartsCore ViewsContext2D RenderingContextOpenGL2 IOOggTheora)
+
+# gmsh ships no CMake config (BUILD_NOTES.md).
+find_library(GMSH_LIBRARY gmsh REQUIRED)
+find_path(GMSH_INCLUDE_DIR gmsh.h REQUIRED)
+if(NOT TARGET Gmsh::gmsh)
+  add_library(Gmsh::gmsh UNKNOWN IMPORTED)
+  set_target_properties(Gmsh::gmsh PROPERTIES
+    IMPORTED_LOCATION ${GMSH_LIBRARY}
+    INTERFACE_INCLUDE_DIRECTORIES ${GMSH_INCLUDE_DIR})
+endif()
+
+if(VISCERA_BUILD_TESTS)
+  find_package(GTest REQUIRED)
+endif()
+if(VISCERA_BUILD_BENCHMARKS)
+  find_package(benchmark REQUIRED)
+endif()

@@ -1,0 +1,71 @@
+#pragma once
+/// Typed errors of Viscera. Libraries throw these and never end the process; the CLI maps them
+/// to exit codes (DESIGN.md §9) and the studio to a dialog. Every error carries where it
+/// happened: a file, a JSON pointer inside it, or the id of an element.
+
+#include <stdexcept>
+#include <string>
+
+namespace viscera::core {
+
+/// Where an error happened. Any field may be empty.
+struct ErrorLocation {
+  std::string file;          ///< path of the file being read or written
+  std::string json_pointer;  ///< RFC 6901 pointer inside a JSON document, e.g. "/objects/3"
+  std::string element;       ///< id of a mesh element, object, or entry
+};
+
+/// Base of every Viscera error. what() is one sentence naming the file and place first.
+class Error : public std::runtime_error {
+ public:
+  Error(const std::string& message, ErrorLocation location = {});
+
+  /// The message without the location prefix.
+  const std::string& reason() const noexcept { return reason_; }
+  const ErrorLocation& location() const noexcept { return location_; }
+
+ private:
+  std::string reason_;
+  ErrorLocation location_;
+};
+
+/// The input cannot be read or does not follow its format (CLI exit code 3).
+class InputError : public Error {
+ public:
+  using Error::Error;
+};
+
+/// The input names a format version newer than this build understands (exit code 3).
+class UnsupportedVersionError : public InputError {
+ public:
+  using InputError::InputError;
+};
+
+/// The input was read but fails its checks: schema, references, checksums (exit code 4).
+class ValidationError : public Error {
+ public:
+  using Error::Error;
+};
+
+/// Writing an output failed; nothing partial was left behind (exit code 1).
+class OutputError : public Error {
+ public:
+  using Error::Error;
+};
+
+/// A user or caller cancelled a long operation through its Progress object.
+class CancelledError : public Error {
+ public:
+  using Error::Error;
+};
+
+/// A caller passed arguments outside the documented range (exit code 2 in the CLI).
+class UsageError : public Error {
+ public:
+  using Error::Error;
+};
+
+/// Formats "file: /pointer: element: message" from the non-empty parts.
+std::string format_error_message(const std::string& message, const ErrorLocation& location);
+
+}  // namespace viscera::core

@@ -1,0 +1,164 @@
+#pragma once
+/// The parts of a Scenario other than objects and materials (DESIGN.md §3). Lean for now;
+/// every part exists, serialises and round-trips so later issues can fill it in.
+
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "core/math_types.h"
+
+namespace viscera::core {
+
+/// A procedural texture applied to objects; baked maps are package files.
+struct TextureSpec {
+  std::string id;
+  std::string preset;        ///< e.g. "endometrium"
+  std::uint64_t seed = 0;
+  int width = 512, height = 512;  ///< pixels
+  std::map<std::string, std::string> maps;  ///< "albedo"|"normal"|"specular" → package path
+
+  bool operator==(const TextureSpec&) const = default;
+};
+
+/// One cylindrical segment of a vessel tree. Positions in m, radius in m, flow in m³/s.
+struct VesselSegment {
+  int id = 0;
+  int parent = -1;  ///< index of the parent segment, -1 for the root
+  Vec3 proximal = Vec3::Zero();
+  Vec3 distal = Vec3::Zero();
+  double radius = 0.0;
+  double flow = 0.0;
+
+  bool operator==(const VesselSegment&) const = default;
+};
+
+/// A vessel tree hosted by an object.
+struct VesselTree {
+  std::string id;
+  std::string host_object;
+  std::string kind = "arterial";  ///< "arterial" | "venous"
+  std::vector<VesselSegment> segments;
+
+  bool operator==(const VesselTree&) const = default;
+};
+
+/// Pulse waves along a vessel tree (seed 001 §5).
+struct PulseSpec {
+  std::string vessel_tree;
+  double heart_rate = 70.0;       ///< beats per minute
+  double pulse_velocity = 5.0;    ///< m/s
+  double wall_force = 0.05;       ///< N
+
+  bool operator==(const PulseSpec&) const = default;
+};
+
+/// Organ motility: travelling contraction waves plus impulsive contractions (seed 001 §5).
+struct MotilitySpec {
+  double amplitude_mean = 0.002;      ///< m
+  double amplitude_variance = 0.0;    ///< m²
+  double wave_speed = 0.01;           ///< m/s
+  Vec3 wave_direction = Vec3::UnitX();
+  double frequency = 0.1;             ///< Hz
+  double frequency_disturbance = 0.0; ///< Hz
+  double contraction_interval_mean = 0.0;      ///< s, 0 = none
+  double contraction_interval_variance = 0.0;  ///< s²
+
+  bool operator==(const MotilitySpec&) const = default;
+};
+
+/// An active deformation of one object.
+struct ActiveDeformation {
+  std::string id;
+  std::string target_object;
+  std::variant<PulseSpec, MotilitySpec> spec;
+
+  bool operator==(const ActiveDeformation&) const = default;
+};
+
+/// A pathology placed on or in a host organ; its geometry is its own scene object.
+struct Pathology {
+  std::string id;
+  std::string kind;          ///< "myoma-submucosal" | "myoma-intramural" | "myoma-pedunculated" | "polyp" | "adhesion"
+  std::string host_object;
+  std::string object;        ///< scene object holding its geometry, or empty
+  Vec3 position = Vec3::Zero();  ///< m
+  double size = 0.0;             ///< m, characteristic diameter
+
+  bool operator==(const Pathology&) const = default;
+};
+
+/// Two objects joined at pairs of nodes of their bodies (seed 001: nearest knots).
+struct Connection {
+  std::string id;
+  std::string object_a, object_b;
+  std::vector<std::array<int, 2>> node_pairs;
+  double stiffness = 100.0;  ///< N/m per pair
+
+  bool operator==(const Connection&) const = default;
+};
+
+/// Distension fluid set-up (seed 000 §2). Pressures in Pa.
+struct FluidSpec {
+  bool enabled = false;
+  std::string medium = "saline";
+  double inflow_pressure = 13332.0;   ///< Pa (100 mmHg)
+  double outflow_pressure = 0.0;      ///< Pa
+  double overload_volume = 1.0e-3;    ///< m³ of deficit that ends a session
+
+  bool operator==(const FluidSpec&) const = default;
+};
+
+/// One task of a procedure (seed 000 §11: steps → substeps → tasks).
+struct TaskSpec {
+  std::string id;
+  std::string name;
+  std::string kind;     ///< what completes it, e.g. "observe", "reach", "settle"
+  nlohmann::json parameters = nlohmann::json::object();
+
+  bool operator==(const TaskSpec&) const = default;
+};
+
+/// How a session on this scenario runs and is scored.
+struct SessionSpec {
+  double time_step = 1.0e-3;        ///< s, the fixed physics step
+  double duration_limit = 600.0;    ///< s
+  Vec3 gravity = Vec3(0.0, 0.0, -9.81);  ///< m/s²
+  std::vector<TaskSpec> tasks;
+  std::vector<std::string> metrics;
+
+  bool operator==(const SessionSpec&) const = default;
+};
+
+/// A distribution attached to a template parameter (variability rules).
+struct VariabilityRule {
+  std::string parameter;
+  std::string distribution;  ///< "fixed" | "uniform" | "truncated-normal" | "choice" | "integer-range"
+  nlohmann::json arguments = nlohmann::json::object();
+
+  bool operator==(const VariabilityRule&) const = default;
+};
+
+/// Where a scenario came from, so any patient can be rebuilt.
+struct Provenance {
+  std::string template_name;
+  std::string template_version;
+  std::uint64_t seed = 0;
+  nlohmann::json parameters = nlohmann::json::object();
+  std::map<std::string, std::string> tool_versions;
+
+  bool operator==(const Provenance&) const = default;
+};
+
+/// Free description of the scenario.
+struct Metadata {
+  std::string name;
+  std::string description;
+  std::string author;
+
+  bool operator==(const Metadata&) const = default;
+};
+
+}  // namespace viscera::core

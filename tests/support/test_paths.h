@@ -1,0 +1,16 @@
+#pragma once
+/// Helpers shared by the test suites: a fresh scratch folder per test.
+
+#include <filesystem>
+#include <string>
+
+namespace viscera::testing {
+
+/// A new empty folder for the running test, under VISCERA_TEST_TMP or the system temp folder.
+/// Named after the test suite and test so failures leave inspectable files.
+std::filesystem::path scratch_dir();
+
+/// The source tree root (for shipped data and docs/).
+std::filesystem::path source_dir();
+
+}  // namespace viscera::testing

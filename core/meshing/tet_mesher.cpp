@@ -1,0 +1,123 @@
+#include "core/meshing/tet_mesher.h"
+
+#include <gmsh.h>
+
+#include <map>
+#include <mutex>
+
+#include "core/error.h"
+
+namespace viscera::core {
+namespace {
+
+/// gmsh is one global model per process: one session at a time, finalised on every path.
+class GmshSession {
+ public:
+  GmshSession() : lock_(mutex()) {
+    gmsh::initialize();
+    gmsh::option::setNumber("General.Terminal", 0);
+    gmsh::option::setNumber("General.Verbosity", 1);
+    gmsh::option::setNumber("General.NumThreads", 1);
+  }
+  ~GmshSession() { gmsh::finalize(); }
+  GmshSession(const GmshSession&) = delete;
+  GmshSession& operator=(const GmshSession&) = delete;
+
+ private:
+  static std::mutex& mutex() {
+    static std::mutex instance;
+    return instance;
+  }
+  std::lock_guard<std::mutex> lock_;
+};
+
+constexpr int kTriangle3 = 2;     // gmsh element type of 3-node triangles
+constexpr int kTetrahedron4 = 4;  // gmsh element type of 4-node tetrahedra
+
+}  // namespace
+
+TetMesh mesh_closed_surface(const SurfaceMesh& surface, const TetMeshingOptions& options,
+                            Progress& progress) {
+  check_surface_mesh(surface, "surface to mesh");
+  if (!is_closed_and_consistently_oriented(surface)) {
+    throw InputError("surface is not closed and consistently oriented; cannot fill it with tets");
+  }
+  if (enclosed_volume(surface) <= 0.0) {
+    throw InputError("surface encloses no positive volume (inward-facing triangles?)");
+  }
+  progress.begin_stage("tetrahedral meshing", 3);
+
+  GmshSession session;
+  TetMesh result;
+  try {
+    gmsh::model::add("viscera");
+    gmsh::option::setNumber("Mesh.RandomSeed", options.random_seed);
+    gmsh::option::setNumber("Mesh.Optimize", options.optimize ? 1 : 0);
+    gmsh::option::setNumber("Mesh.Algorithm3D", 1);  // Delaunay
+    if (options.cell_size > 0.0) {
+      gmsh::option::setNumber("Mesh.MeshSizeMax", options.cell_size);
+    }
+
+    const int surface_tag = gmsh::model::addDiscreteEntity(2);
+    std::vector<std::size_t> node_tags(surface.vertices.size());
+    std::vector<double> coordinates;
+    coordinates.reserve(3 * surface.vertices.size());
+    for (std::size_t i = 0; i < surface.vertices.size(); ++i) {
+      node_tags[i] = i + 1;
+      for (int c = 0; c < 3; ++c) coordinates.push_back(surface.vertices[i][c]);
+    }
+    gmsh::model::mesh::addNodes(2, surface_tag, node_tags, coordinates);
+    std::vector<std::size_t> element_tags(surface.triangles.size());
+    std::vector<std::size_t> element_nodes;
+    element_nodes.reserve(3 * surface.triangles.size());
+    for (std::size_t t = 0; t < surface.triangles.size(); ++t) {
+      element_tags[t] = t + 1;
+      for (const int v : surface.triangles[t]) element_nodes.push_back(static_cast<std::size_t>(v) + 1);
+    }
+    gmsh::model::mesh::addElementsByType(surface_tag, kTriangle3, element_tags, element_nodes);
+    // A built-in-kernel volume bounded by the discrete surface: gmsh keeps the surface
+    // triangles as they are and fills the inside.
+    const int loop = gmsh::model::geo::addSurfaceLoop({surface_tag});
+    const int volume_tag = gmsh::model::geo::addVolume({loop});
+    gmsh::model::geo::synchronize();
+    progress.step();
+
+    gmsh::model::mesh::generate(3);
+    progress.step();
+
+    std::vector<std::size_t> all_tags;
+    std::vector<double> all_coordinates, parametric;
+    gmsh::model::mesh::getNodes(all_tags, all_coordinates, parametric, -1, -1, true, false);
+    // gmsh numbers nodes by tag; map tags to dense indices, keeping the surface's own
+    // vertices first and in their order so surface_faces reuse the input triangles.
+    std::map<std::size_t, int> index_of_tag;
+    result.nodes = surface.vertices;
+    for (std::size_t i = 0; i < surface.vertices.size(); ++i) index_of_tag[i + 1] = static_cast<int>(i);
+    for (std::size_t i = 0; i < all_tags.size(); ++i) {
+      if (index_of_tag.contains(all_tags[i])) continue;
+      index_of_tag[all_tags[i]] = static_cast<int>(result.nodes.size());
+      result.nodes.emplace_back(all_coordinates[3 * i], all_coordinates[3 * i + 1],
+                                all_coordinates[3 * i + 2]);
+    }
+    std::vector<std::size_t> tet_tags, tet_nodes;
+    gmsh::model::mesh::getElementsByType(kTetrahedron4, tet_tags, tet_nodes, volume_tag);
+    result.tets.resize(tet_tags.size());
+    for (std::size_t t = 0; t < tet_tags.size(); ++t) {
+      for (int c = 0; c < 4; ++c) result.tets[t][c] = index_of_tag.at(tet_nodes[4 * t + c]);
+    }
+  } catch (const std::string& gmsh_message) {
+    // gmsh 4.8 throws std::string (BUILD_NOTES.md).
+    throw InputError("gmsh could not mesh the surface: " + gmsh_message);
+  } catch (const std::out_of_range&) {
+    throw InputError("gmsh returned a tetrahedron with an unknown node");
+  }
+  if (result.tets.empty()) {
+    throw InputError("gmsh produced no tetrahedra (surface self-intersecting or too coarse?)");
+  }
+  orient_tets_positively(result);
+  result.surface_faces = surface.triangles;
+  progress.step();
+  return result;
+}
+
+}  // namespace viscera::core

@@ -1,0 +1,26 @@
+#pragma once
+/// Closed surface → tetrahedral mesh with gmsh's Delaunay mesher and its optimiser.
+
+#include "core/mesh/surface_mesh.h"
+#include "core/mesh/tet_mesh.h"
+#include "core/progress.h"
+
+namespace viscera::core {
+
+/// Options for tetrahedral meshing of a closed surface.
+struct TetMeshingOptions {
+  double cell_size = 0.0;  ///< target edge length inside the volume in m; 0 = from the surface
+  bool optimize = true;    ///< gmsh's tetrahedral optimisation (removes slivers)
+  int random_seed = 1;     ///< gmsh's Mesh.RandomSeed, fixed for byte-identical output
+};
+
+/// Fills the volume bounded by `surface` with tetrahedra. The surface triangles are kept as
+/// the boundary of the result (so they become TetMesh::surface_faces, oriented outward); the
+/// result has positive tets, no masses and no fixed nodes.
+/// Throws InputError when the surface is not closed and consistently oriented, and when gmsh
+/// refuses it (self-intersections: "PLC Error"); CancelledError through `progress`.
+/// gmsh keeps global state: calls are serialised inside.
+TetMesh mesh_closed_surface(const SurfaceMesh& surface, const TetMeshingOptions& options = {},
+                            Progress& progress = Progress::none());
+
+}  // namespace viscera::core

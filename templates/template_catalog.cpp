@@ -1,0 +1,96 @@
+#include "templates/template_catalog.h"
+
+#include <charconv>
+#include <cmath>
+
+#include "core/error.h"
+#include "core/version.h"
+#include "templates/ball_template.h"
+
+namespace viscera::templates {
+
+const std::vector<std::unique_ptr<ScenarioTemplate>>& template_catalog() {
+  static const std::vector<std::unique_ptr<ScenarioTemplate>> catalog = [] {
+    std::vector<std::unique_ptr<ScenarioTemplate>> list;
+    list.push_back(std::make_unique<BallTemplate>());
+    return list;
+  }();
+  return catalog;
+}
+
+const ScenarioTemplate& find_template(const std::string& name) {
+  std::string known;
+  for (const auto& t : template_catalog()) {
+    if (t->name() == name) return *t;
+    known += (known.empty() ? "" : ", ") + t->name();
+  }
+  throw core::UsageError("unknown template \"" + name + "\"; known templates: " + known);
+}
+
+ParameterValues resolve_parameters(const ScenarioTemplate& scenario_template,
+                                   const std::map<std::string, std::string>& overrides) {
+  ParameterValues values;
+  const auto parameters = scenario_template.parameters();
+  for (const auto& p : parameters) values[p.name] = p.default_value;
+  for (const auto& [name, text] : overrides) {
+    const auto it = std::find_if(parameters.begin(), parameters.end(),
+                                 [&](const TemplateParameter& p) { return p.name == name; });
+    if (it == parameters.end()) {
+      throw core::UsageError("template \"" + scenario_template.name() +
+                             "\" has no parameter \"" + name + "\"");
+    }
+    double value = 0.0;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(value)) {
+      throw core::UsageError("parameter \"" + name + "\": \"" + text + "\" is not a number");
+    }
+    if (it->integer && value != std::floor(value)) {
+      throw core::UsageError("parameter \"" + name + "\" must be a whole number");
+    }
+    if (value < it->minimum || value > it->maximum) {
+      throw core::UsageError("parameter \"" + name + "\" = " + text + " is outside [" +
+                             std::to_string(it->minimum) + ", " + std::to_string(it->maximum) +
+                             "] " + it->unit);
+    }
+    values[name] = value;
+  }
+  return values;
+}
+
+nlohmann::json catalog_to_json() {
+  nlohmann::json list = nlohmann::json::array();
+  for (const auto& t : template_catalog()) {
+    nlohmann::json parameters = nlohmann::json::array();
+    for (const auto& p : t->parameters()) {
+      parameters.push_back({{"name", p.name},
+                            {"unit", p.unit},
+                            {"description", p.description},
+                            {"minimum", p.minimum},
+                            {"maximum", p.maximum},
+                            {"default", p.default_value},
+                            {"integer", p.integer}});
+    }
+    list.push_back({{"name", t->name()},
+                    {"description", t->description()},
+                    {"version", t->version()},
+                    {"procedure", t->procedure()},
+                    {"parameters", parameters}});
+  }
+  return list;
+}
+
+core::Scenario build_from_template(const std::string& name,
+                                   const std::map<std::string, std::string>& overrides,
+                                   std::uint64_t seed, core::Progress& progress) {
+  const ScenarioTemplate& scenario_template = find_template(name);
+  const ParameterValues values = resolve_parameters(scenario_template, overrides);
+  core::Scenario scenario = scenario_template.build(values, seed, progress);
+  scenario.provenance.template_name = scenario_template.name();
+  scenario.provenance.template_version = scenario_template.version();
+  scenario.provenance.seed = seed;
+  scenario.provenance.parameters = nlohmann::json(values);
+  scenario.provenance.tool_versions = core::tool_versions();
+  return scenario;
+}
+
+}  // namespace viscera::templates

@@ -1,0 +1,71 @@
+#pragma once
+/// Scenario templates: deterministic functions (parameters, seed) → Scenario, and the catalogue
+/// that `viscera templates` lists and `viscera new` builds from (DESIGN.md §9).
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "core/progress.h"
+#include "core/scenario/scenario.h"
+
+namespace viscera::templates {
+
+/// One numeric parameter of a template, with its unit, range and default.
+struct TemplateParameter {
+  std::string name;
+  std::string unit;  ///< SI unit, "1" for dimensionless, "count" for integers
+  std::string description;
+  double minimum = 0.0;
+  double maximum = 0.0;
+  double default_value = 0.0;
+  bool integer = false;
+};
+
+/// Parameter values by name; every parameter of the template is present after resolution.
+using ParameterValues = std::map<std::string, double>;
+
+/// A parametric scenario template.
+class ScenarioTemplate {
+ public:
+  virtual ~ScenarioTemplate() = default;
+
+  virtual std::string name() const = 0;
+  virtual std::string description() const = 0;
+  virtual std::string version() const = 0;
+  /// The procedure the built scenario is set up for (see core::kProcedures).
+  virtual std::string procedure() const = 0;
+  virtual std::vector<TemplateParameter> parameters() const = 0;
+
+  /// Builds a scenario from fully resolved parameters; the same (parameters, seed) give the
+  /// same scenario. Throws core::Error subclasses; CancelledError through `progress`.
+  virtual core::Scenario build(const ParameterValues& parameters, std::uint64_t seed,
+                               core::Progress& progress) const = 0;
+};
+
+/// Every built-in template, in a stable order.
+const std::vector<std::unique_ptr<ScenarioTemplate>>& template_catalog();
+
+/// The template named `name`; throws core::UsageError listing the known names otherwise.
+const ScenarioTemplate& find_template(const std::string& name);
+
+/// Defaults overridden by `overrides` ("name" → text value). Throws core::UsageError naming
+/// the parameter for unknown names, unparsable numbers, non-integers for integer parameters
+/// and values outside [minimum, maximum].
+ParameterValues resolve_parameters(const ScenarioTemplate& scenario_template,
+                                   const std::map<std::string, std::string>& overrides);
+
+/// The catalogue as JSON: [{name, description, version, procedure, parameters:[…]}].
+nlohmann::json catalog_to_json();
+
+/// Builds `name` with `overrides` and `seed`, and records the provenance (template, version,
+/// seed, parameters, tool versions) in the scenario.
+core::Scenario build_from_template(const std::string& name,
+                                   const std::map<std::string, std::string>& overrides,
+                                   std::uint64_t seed,
+                                   core::Progress& progress = core::Progress::none());
+
+}  // namespace viscera::templates

@@ -15,6 +15,13 @@ std::string format_error_message(const std::string& message, const ErrorLocation
   return text + message;
 }
 
+ExitCode exit_code_for(const std::exception& error) noexcept {
+  if (dynamic_cast<const UsageError*>(&error)) return ExitCode::Usage;
+  if (dynamic_cast<const ValidationError*>(&error)) return ExitCode::ValidationFailed;
+  if (dynamic_cast<const InputError*>(&error)) return ExitCode::InvalidInput;
+  return ExitCode::InternalError;
+}
+
 Error::Error(const std::string& message, ErrorLocation location)
     : std::runtime_error(format_error_message(message, location)),
       reason_(message),

@@ -65,6 +65,18 @@ class UsageError : public Error {
   using Error::Error;
 };
 
+/// Exit codes of the command-line contract (DESIGN.md §9).
+enum class ExitCode : int {
+  Success = 0,
+  InternalError = 1,
+  Usage = 2,
+  InvalidInput = 3,
+  ValidationFailed = 4,
+};
+
+/// The exit code a command-line tool returns for an exception that reached its main().
+ExitCode exit_code_for(const std::exception& error) noexcept;
+
 /// Formats "file: /pointer: element: message" from the non-empty parts.
 std::string format_error_message(const std::string& message, const ErrorLocation& location);
 

@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "core/version.h"
+#include "studio/cli/mesh_commands.h"
 #include "studio/cli/package_commands.h"
 #include "studio/cli/template_commands.h"
 #include "studio/cli/texture_commands.h"
@@ -26,6 +27,7 @@ int main(int argc, char** argv) {
   viscera::cli::add_template_commands(app);
   viscera::cli::add_package_commands(app, exit_code);
   viscera::cli::add_texture_commands(app);
+  viscera::cli::add_mesh_commands(app);
 
   try {
     app.parse(argc, argv);

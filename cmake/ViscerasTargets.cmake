@@ -4,7 +4,10 @@
 function(viscera_apply_warnings target)
   target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow -Wnon-virtual-dtor
                                            -Wold-style-cast -Wcast-align -Woverloaded-virtual
-                                           -Wdouble-promotion)
+                                           -Wdouble-promotion
+                                           # GCC 12 reports std::string concatenation as
+                                           # overlapping memcpy at -O2 (GCC bug 105651).
+                                           -Wno-restrict)
   if(VISCERA_WARNINGS_AS_ERRORS)
     target_compile_options(${target} PRIVATE -Werror)
   endif()

@@ -18,11 +18,11 @@ std::vector<TemplateParameter> BallTemplate::parameters() const {
       {"fixed_base_height", "1", "height of the fixed base slice as a fraction of the diameter",
        0.0, 0.5, 0.1, false},
       {"density", "kg/m^3", "tissue density", 500.0, 2000.0, 1050.0, false},
-      {"distance_stiffness", "Pa", "Teschner distance stiffness density", 100.0, 1.0e5, 6000.0,
+      {"distance_stiffness", "Pa", "Teschner distance stiffness density", 100.0, 1.0e6, 30000.0,
        false},
-      {"volume_stiffness", "Pa", "Teschner volume stiffness density", 0.0, 1.0e5, 6000.0, false},
+      {"volume_stiffness", "Pa", "Teschner volume stiffness density", 0.0, 1.0e6, 30000.0, false},
       {"area_stiffness", "N/m", "Teschner surface area stiffness density", 0.0, 1.0e3, 2.0, false},
-      {"distance_damping", "Pa*s", "damping density on distance terms", 0.0, 1.0e3, 10.0, false},
+      {"distance_damping", "Pa*s", "damping density on distance terms", 0.0, 1.0e3, 100.0, false},
   };
 }
 
@@ -46,7 +46,7 @@ core::Scenario BallTemplate::build(const ParameterValues& p, std::uint64_t /*see
   tissue.area_stiffness = p.at("area_stiffness");
   tissue.distance_damping = p.at("distance_damping");
   tissue.source =
-      "order of magnitude of soft abdominal tissue moduli (a few kPa); density of water-rich tissue";
+      "effective modulus about a fifth of distance_stiffness (edge-spring network), i.e. ~6 kPa, the order of soft abdominal tissue; density of water-rich tissue";
   scenario.materials[tissue.id] = tissue;
 
   // The body surface is an icosphere whose edges match the cell size; the visual surface is

@@ -14,6 +14,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -61,6 +62,11 @@ struct PackageSummary {
 /// Throws OutputError (nothing left behind) or ValidationError if the scenario is inconsistent.
 void write_package(const Scenario& scenario, const std::filesystem::path& path,
                    Progress& progress = Progress::none());
+
+/// Same, with extra files (package-relative path → bytes, e.g. "textures/ball_albedo.png")
+/// written into the package and listed with their checksums.
+void write_package(const Scenario& scenario, const std::map<std::string, std::string>& extra_files,
+                   const std::filesystem::path& path, Progress& progress = Progress::none());
 
 /// Reads a package folder or .vscz, checking schema, references, versions and checksums.
 /// Throws InputError (unreadable, malformed, unsafe zip), UnsupportedVersionError (newer

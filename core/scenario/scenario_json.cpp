@@ -1,0 +1,338 @@
+#include "core/scenario/scenario_json.h"
+
+#include "core/error.h"
+#include "core/json_eigen.h"
+
+namespace viscera::core {
+
+// nlohmann::json conversions for every part, found by argument-dependent lookup. Optional
+// members fall back to the struct's defaults so older manifests stay readable.
+
+namespace {
+
+template <typename T>
+void read_optional(const nlohmann::json& j, const char* key, T& value) {
+  if (const auto it = j.find(key); it != j.end()) it->get_to(value);
+}
+
+}  // namespace
+
+void to_json(nlohmann::json& j, const StressStrainCurve& c) {
+  j = {{"strain", c.strain}, {"stress", c.stress}, {"cubic", c.cubic}, {"fit_rms_error", c.fit_rms_error}};
+}
+void from_json(const nlohmann::json& j, StressStrainCurve& c) {
+  j.at("strain").get_to(c.strain);
+  j.at("stress").get_to(c.stress);
+  read_optional(j, "cubic", c.cubic);
+  read_optional(j, "fit_rms_error", c.fit_rms_error);
+}
+
+void to_json(nlohmann::json& j, const Material& m) {
+  j = {{"id", m.id},
+       {"name", m.name},
+       {"density", m.density},
+       {"distance_stiffness", m.distance_stiffness},
+       {"area_stiffness", m.area_stiffness},
+       {"volume_stiffness", m.volume_stiffness},
+       {"distance_damping", m.distance_damping},
+       {"tearing_threshold", m.tearing_threshold},
+       {"plastic_yield", m.plastic_yield},
+       {"source", m.source}};
+  if (m.stress_strain) j["stress_strain"] = *m.stress_strain;
+}
+void from_json(const nlohmann::json& j, Material& m) {
+  j.at("id").get_to(m.id);
+  read_optional(j, "name", m.name);
+  read_optional(j, "density", m.density);
+  read_optional(j, "distance_stiffness", m.distance_stiffness);
+  read_optional(j, "area_stiffness", m.area_stiffness);
+  read_optional(j, "volume_stiffness", m.volume_stiffness);
+  read_optional(j, "distance_damping", m.distance_damping);
+  read_optional(j, "tearing_threshold", m.tearing_threshold);
+  read_optional(j, "plastic_yield", m.plastic_yield);
+  read_optional(j, "source", m.source);
+  if (const auto it = j.find("stress_strain"); it != j.end()) m.stress_strain = it->get<StressStrainCurve>();
+}
+
+void to_json(nlohmann::json& j, const TextureSpec& t) {
+  j = {{"id", t.id}, {"preset", t.preset}, {"seed", t.seed}, {"width", t.width}, {"height", t.height}, {"maps", t.maps}};
+}
+void from_json(const nlohmann::json& j, TextureSpec& t) {
+  j.at("id").get_to(t.id);
+  read_optional(j, "preset", t.preset);
+  read_optional(j, "seed", t.seed);
+  read_optional(j, "width", t.width);
+  read_optional(j, "height", t.height);
+  read_optional(j, "maps", t.maps);
+}
+
+void to_json(nlohmann::json& j, const VesselSegment& s) {
+  j = {{"id", s.id},         {"parent", s.parent}, {"proximal", s.proximal},
+       {"distal", s.distal}, {"radius", s.radius}, {"flow", s.flow}};
+}
+void from_json(const nlohmann::json& j, VesselSegment& s) {
+  j.at("id").get_to(s.id);
+  read_optional(j, "parent", s.parent);
+  j.at("proximal").get_to(s.proximal);
+  j.at("distal").get_to(s.distal);
+  j.at("radius").get_to(s.radius);
+  read_optional(j, "flow", s.flow);
+}
+
+void to_json(nlohmann::json& j, const VesselTree& t) {
+  j = {{"id", t.id}, {"host_object", t.host_object}, {"kind", t.kind}, {"segments", t.segments}};
+}
+void from_json(const nlohmann::json& j, VesselTree& t) {
+  j.at("id").get_to(t.id);
+  read_optional(j, "host_object", t.host_object);
+  read_optional(j, "kind", t.kind);
+  read_optional(j, "segments", t.segments);
+}
+
+void to_json(nlohmann::json& j, const PulseSpec& p) {
+  j = {{"vessel_tree", p.vessel_tree}, {"heart_rate", p.heart_rate},
+       {"pulse_velocity", p.pulse_velocity}, {"wall_force", p.wall_force}};
+}
+void from_json(const nlohmann::json& j, PulseSpec& p) {
+  read_optional(j, "vessel_tree", p.vessel_tree);
+  read_optional(j, "heart_rate", p.heart_rate);
+  read_optional(j, "pulse_velocity", p.pulse_velocity);
+  read_optional(j, "wall_force", p.wall_force);
+}
+
+void to_json(nlohmann::json& j, const MotilitySpec& m) {
+  j = {{"amplitude_mean", m.amplitude_mean},
+       {"amplitude_variance", m.amplitude_variance},
+       {"wave_speed", m.wave_speed},
+       {"wave_direction", m.wave_direction},
+       {"frequency", m.frequency},
+       {"frequency_disturbance", m.frequency_disturbance},
+       {"contraction_interval_mean", m.contraction_interval_mean},
+       {"contraction_interval_variance", m.contraction_interval_variance}};
+}
+void from_json(const nlohmann::json& j, MotilitySpec& m) {
+  read_optional(j, "amplitude_mean", m.amplitude_mean);
+  read_optional(j, "amplitude_variance", m.amplitude_variance);
+  read_optional(j, "wave_speed", m.wave_speed);
+  read_optional(j, "wave_direction", m.wave_direction);
+  read_optional(j, "frequency", m.frequency);
+  read_optional(j, "frequency_disturbance", m.frequency_disturbance);
+  read_optional(j, "contraction_interval_mean", m.contraction_interval_mean);
+  read_optional(j, "contraction_interval_variance", m.contraction_interval_variance);
+}
+
+void to_json(nlohmann::json& j, const ActiveDeformation& a) {
+  j = {{"id", a.id}, {"target_object", a.target_object}};
+  if (const auto* pulse = std::get_if<PulseSpec>(&a.spec)) {
+    j["type"] = "pulse";
+    j["pulse"] = *pulse;
+  } else {
+    j["type"] = "motility";
+    j["motility"] = std::get<MotilitySpec>(a.spec);
+  }
+}
+void from_json(const nlohmann::json& j, ActiveDeformation& a) {
+  j.at("id").get_to(a.id);
+  read_optional(j, "target_object", a.target_object);
+  const std::string type = j.at("type").get<std::string>();
+  if (type == "pulse") {
+    a.spec = j.value("pulse", nlohmann::json::object()).get<PulseSpec>();
+  } else if (type == "motility") {
+    a.spec = j.value("motility", nlohmann::json::object()).get<MotilitySpec>();
+  } else {
+    throw ValidationError("unknown active deformation type \"" + type + "\"", {"", "/type", ""});
+  }
+}
+
+void to_json(nlohmann::json& j, const Pathology& p) {
+  j = {{"id", p.id},         {"kind", p.kind},         {"host_object", p.host_object},
+       {"object", p.object}, {"position", p.position}, {"size", p.size}};
+}
+void from_json(const nlohmann::json& j, Pathology& p) {
+  j.at("id").get_to(p.id);
+  j.at("kind").get_to(p.kind);
+  read_optional(j, "host_object", p.host_object);
+  read_optional(j, "object", p.object);
+  read_optional(j, "position", p.position);
+  read_optional(j, "size", p.size);
+}
+
+void to_json(nlohmann::json& j, const Connection& c) {
+  j = {{"id", c.id}, {"object_a", c.object_a}, {"object_b", c.object_b},
+       {"node_pairs", c.node_pairs}, {"stiffness", c.stiffness}};
+}
+void from_json(const nlohmann::json& j, Connection& c) {
+  j.at("id").get_to(c.id);
+  j.at("object_a").get_to(c.object_a);
+  j.at("object_b").get_to(c.object_b);
+  read_optional(j, "node_pairs", c.node_pairs);
+  read_optional(j, "stiffness", c.stiffness);
+}
+
+void to_json(nlohmann::json& j, const FluidSpec& f) {
+  j = {{"enabled", f.enabled},
+       {"medium", f.medium},
+       {"inflow_pressure", f.inflow_pressure},
+       {"outflow_pressure", f.outflow_pressure},
+       {"overload_volume", f.overload_volume}};
+}
+void from_json(const nlohmann::json& j, FluidSpec& f) {
+  read_optional(j, "enabled", f.enabled);
+  read_optional(j, "medium", f.medium);
+  read_optional(j, "inflow_pressure", f.inflow_pressure);
+  read_optional(j, "outflow_pressure", f.outflow_pressure);
+  read_optional(j, "overload_volume", f.overload_volume);
+}
+
+void to_json(nlohmann::json& j, const TaskSpec& t) {
+  j = {{"id", t.id}, {"name", t.name}, {"kind", t.kind}, {"parameters", t.parameters}};
+}
+void from_json(const nlohmann::json& j, TaskSpec& t) {
+  j.at("id").get_to(t.id);
+  read_optional(j, "name", t.name);
+  j.at("kind").get_to(t.kind);
+  read_optional(j, "parameters", t.parameters);
+}
+
+void to_json(nlohmann::json& j, const SessionSpec& s) {
+  j = {{"time_step", s.time_step}, {"duration_limit", s.duration_limit}, {"gravity", s.gravity},
+       {"tasks", s.tasks}, {"metrics", s.metrics}};
+}
+void from_json(const nlohmann::json& j, SessionSpec& s) {
+  read_optional(j, "time_step", s.time_step);
+  read_optional(j, "duration_limit", s.duration_limit);
+  read_optional(j, "gravity", s.gravity);
+  read_optional(j, "tasks", s.tasks);
+  read_optional(j, "metrics", s.metrics);
+}
+
+void to_json(nlohmann::json& j, const VariabilityRule& r) {
+  j = {{"parameter", r.parameter}, {"distribution", r.distribution}, {"arguments", r.arguments}};
+}
+void from_json(const nlohmann::json& j, VariabilityRule& r) {
+  j.at("parameter").get_to(r.parameter);
+  j.at("distribution").get_to(r.distribution);
+  read_optional(j, "arguments", r.arguments);
+}
+
+void to_json(nlohmann::json& j, const Provenance& p) {
+  j = {{"template", p.template_name}, {"template_version", p.template_version}, {"seed", p.seed},
+       {"parameters", p.parameters}, {"tool_versions", p.tool_versions}};
+}
+void from_json(const nlohmann::json& j, Provenance& p) {
+  read_optional(j, "template", p.template_name);
+  read_optional(j, "template_version", p.template_version);
+  read_optional(j, "seed", p.seed);
+  read_optional(j, "parameters", p.parameters);
+  read_optional(j, "tool_versions", p.tool_versions);
+}
+
+void to_json(nlohmann::json& j, const Metadata& m) {
+  j = {{"name", m.name}, {"description", m.description}, {"author", m.author}};
+}
+void from_json(const nlohmann::json& j, Metadata& m) {
+  j.at("name").get_to(m.name);
+  read_optional(j, "description", m.description);
+  read_optional(j, "author", m.author);
+}
+
+std::string surface_file_of(const std::string& object_id) { return "objects/" + object_id + "/surface.vtp"; }
+std::string body_file_of(const std::string& object_id) { return "objects/" + object_id + "/body.vtu"; }
+
+nlohmann::json scenario_to_json(const Scenario& s) {
+  nlohmann::json objects = nlohmann::json::array();
+  for (const auto& o : s.objects) {
+    nlohmann::json object = {{"id", o.id},
+                             {"name", o.name},
+                             {"role", to_string(o.role)},
+                             {"material", o.material},
+                             {"texture", o.texture},
+                             {"group", o.group},
+                             {"body_kind", to_string(o.body_kind)},
+                             {"surface", surface_file_of(o.id)}};
+    if (o.body_kind != BodyKind::None) object["body"] = body_file_of(o.id);
+    objects.push_back(std::move(object));
+  }
+  return {{"metadata", s.metadata},
+          {"procedure", s.procedure},
+          {"objects", objects},
+          {"materials", s.materials},
+          {"textures", s.textures},
+          {"vessel_trees", s.vessel_trees},
+          {"active_deformations", s.active_deformations},
+          {"pathologies", s.pathologies},
+          {"connections", s.connections},
+          {"fluid", s.fluid},
+          {"session", s.session},
+          {"variability", s.variability},
+          {"provenance", s.provenance}};
+}
+
+namespace {
+
+/// Converts member `key` of `j`, turning a conversion failure into a ValidationError whose
+/// pointer names the member.
+template <typename T>
+void convert_member(const nlohmann::json& j, const char* key, T& value, const std::string& file,
+                    const std::string& pointer) {
+  const auto it = j.find(key);
+  if (it == j.end()) return;
+  try {
+    it->get_to(value);
+  } catch (const nlohmann::json::exception& e) {
+    throw ValidationError(std::string("cannot read: ") + e.what(), {file, pointer + "/" + key, ""});
+  } catch (const ValidationError& e) {
+    throw ValidationError(e.reason(), {file, pointer + "/" + key + e.location().json_pointer, ""});
+  }
+}
+
+}  // namespace
+
+Scenario scenario_from_json(const nlohmann::json& j, const std::string& file,
+                            const std::string& pointer_prefix) {
+  if (!j.is_object()) throw ValidationError("scenario must be a JSON object", {file, pointer_prefix, ""});
+  Scenario s;
+  convert_member(j, "metadata", s.metadata, file, pointer_prefix);
+  convert_member(j, "procedure", s.procedure, file, pointer_prefix);
+  convert_member(j, "materials", s.materials, file, pointer_prefix);
+  convert_member(j, "textures", s.textures, file, pointer_prefix);
+  convert_member(j, "vessel_trees", s.vessel_trees, file, pointer_prefix);
+  convert_member(j, "active_deformations", s.active_deformations, file, pointer_prefix);
+  convert_member(j, "pathologies", s.pathologies, file, pointer_prefix);
+  convert_member(j, "connections", s.connections, file, pointer_prefix);
+  convert_member(j, "fluid", s.fluid, file, pointer_prefix);
+  convert_member(j, "session", s.session, file, pointer_prefix);
+  convert_member(j, "variability", s.variability, file, pointer_prefix);
+  convert_member(j, "provenance", s.provenance, file, pointer_prefix);
+
+  const auto objects = j.find("objects");
+  if (objects == j.end()) return s;
+  for (std::size_t i = 0; i < objects->size(); ++i) {
+    const auto& o = (*objects)[i];
+    const std::string pointer = pointer_prefix + "/objects/" + std::to_string(i);
+    SceneObject object;
+    try {
+      o.at("id").get_to(object.id);
+      object.name = o.value("name", std::string());
+      object.material = o.value("material", std::string());
+      object.texture = o.value("texture", std::string());
+      object.group = o.value("group", std::string());
+    } catch (const nlohmann::json::exception& e) {
+      throw ValidationError(std::string("cannot read object: ") + e.what(), {file, pointer, ""});
+    }
+    try {
+      object.role = object_role_from_string(o.value("role", std::string("organ")));
+    } catch (const InputError& e) {
+      throw ValidationError(e.reason(), {file, pointer + "/role", ""});
+    }
+    try {
+      object.body_kind = body_kind_from_string(o.value("body_kind", std::string("none")));
+    } catch (const InputError& e) {
+      throw ValidationError(e.reason(), {file, pointer + "/body_kind", ""});
+    }
+    s.objects.push_back(std::move(object));
+  }
+  return s;
+}
+
+}  // namespace viscera::core

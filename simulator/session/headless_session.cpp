@@ -1,0 +1,137 @@
+#include "simulator/session/headless_session.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "core/error.h"
+#include "simulator/world/world.h"
+
+namespace viscera::sim {
+namespace {
+
+/// Watches one "settle" task: at rest once kinetic energy stays below a bound long enough.
+struct SettleWatch {
+  std::size_t task = 0;
+  double kinetic_bound = 1e-6;  ///< J
+  double hold_time = 0.1;       ///< s
+  double calm_since = -1.0;     ///< s, or −1 while moving
+};
+
+}  // namespace
+
+SessionReport run_headless(const core::Scenario& scenario, const HeadlessRunOptions& options, core::Progress& progress) {
+  if (!(options.duration > 0.0)) throw core::UsageError("session duration must be positive");
+  const auto started = std::chrono::steady_clock::now();
+  World world(scenario);
+
+  SessionReport report;
+  report.package = options.package;
+  report.time_step = world.time_step();
+  report.substeps = world.substeps();
+
+  std::vector<SettleWatch> settles;
+  for (std::size_t t = 0; t < scenario.session.tasks.size(); ++t) {
+    const auto& task = scenario.session.tasks[t];
+    TaskResult result{task.id, task.kind, "not-completed", -1.0, ""};
+    if (task.kind == "settle") {
+      settles.push_back({t, task.parameters.value("kinetic_energy_below", 1e-6), task.parameters.value("hold_time", 0.1), -1.0});
+    } else {
+      result.status = "unavailable";
+      result.note = "tasks of kind \"" + task.kind + "\" need the session runtime of a later release";
+    }
+    report.tasks.push_back(result);
+  }
+
+  const auto total_steps = static_cast<long long>(std::llround(options.duration / world.time_step()));
+  const long long sample_every = std::max<long long>(1, std::llround(options.sample_interval / world.time_step()));
+  progress.begin_stage("simulating", total_steps);
+  const auto sample = [&] {
+    const BodyEnergies e = world.energies();
+    double displacement = 0.0;
+    for (const auto& body : world.bodies()) displacement = std::max(displacement, body.max_displacement());
+    report.samples.push_back({world.time(), e.kinetic, e.elastic, e.gravitational, displacement});
+    report.max_displacement = std::max(report.max_displacement, displacement);
+    for (auto& watch : settles) {
+      auto& result = report.tasks[watch.task];
+      if (result.status == "completed") continue;
+      if (e.kinetic < watch.kinetic_bound) {
+        if (watch.calm_since < 0.0) watch.calm_since = world.time();
+        if (world.time() - watch.calm_since >= watch.hold_time) {
+          result.status = "completed";
+          result.completed_at = world.time();
+        }
+      } else {
+        watch.calm_since = -1.0;
+      }
+    }
+  };
+  sample();
+  for (long long s = 1; s <= total_steps; ++s) {
+    world.step();
+    if (s % sample_every == 0 || s == total_steps) sample();
+    progress.step();
+  }
+
+  report.steps = world.steps();
+  report.simulated_time = world.time();
+  report.final_state_hash = world.state_hash();
+  for (const auto& body : world.bodies()) {
+    BodySummary summary;
+    summary.name = body.name();
+    summary.nodes = body.node_count();
+    summary.edges = body.distance_terms().edges.size();
+    summary.tets = body.volume_terms().tets.size();
+    summary.surface_triangles = body.area_terms().triangles.size();
+    summary.max_displacement = body.max_displacement();
+    const core::Vec3 down = world.gravity().norm() > 0.0 ? core::Vec3(world.gravity().normalized()) : core::Vec3::Zero();
+    summary.centre_of_mass_drop = down.dot(body.centre_of_mass() - body.rest_centre_of_mass());
+    report.bodies.push_back(summary);
+  }
+  report.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  return report;
+}
+
+nlohmann::json report_to_json(const SessionReport& r) {
+  nlohmann::json series = {{"time", nlohmann::json::array()},          {"kinetic", nlohmann::json::array()},
+                           {"elastic", nlohmann::json::array()},       {"gravitational", nlohmann::json::array()},
+                           {"total", nlohmann::json::array()},         {"max_displacement", nlohmann::json::array()}};
+  for (const auto& s : r.samples) {
+    series["time"].push_back(s.time);
+    series["kinetic"].push_back(s.kinetic);
+    series["elastic"].push_back(s.elastic);
+    series["gravitational"].push_back(s.gravitational);
+    series["total"].push_back(s.total());
+    series["max_displacement"].push_back(s.max_displacement);
+  }
+  nlohmann::json bodies = nlohmann::json::array();
+  for (const auto& b : r.bodies) {
+    bodies.push_back({{"name", b.name}, {"nodes", b.nodes}, {"edges", b.edges}, {"tets", b.tets},
+                      {"surface_triangles", b.surface_triangles}, {"max_displacement", b.max_displacement},
+                      {"centre_of_mass_drop", b.centre_of_mass_drop}});
+  }
+  nlohmann::json tasks = nlohmann::json::array();
+  for (const auto& t : r.tasks) {
+    nlohmann::json task = {{"id", t.id}, {"kind", t.kind}, {"status", t.status}};
+    if (t.completed_at >= 0.0) task["completed_at"] = t.completed_at;
+    if (!t.note.empty()) task["note"] = t.note;
+    tasks.push_back(task);
+  }
+  return {{"format", "viscera-session-report"},
+          {"version", 1},
+          {"package", r.package},
+          {"steps", r.steps},
+          {"simulated_time", r.simulated_time},
+          {"wall_time", r.wall_time},
+          {"time_step", r.time_step},
+          {"substeps", r.substeps},
+          {"real_time_factor", r.wall_time > 0.0 ? r.simulated_time / r.wall_time : 0.0},
+          {"units", {{"time", "s"}, {"energy", "J"}, {"length", "m"}}},
+          {"energy", series},
+          {"max_displacement", r.max_displacement},
+          {"bodies", bodies},
+          {"tasks", tasks},
+          {"final_state_hash", r.final_state_hash}};
+}
+
+}  // namespace viscera::sim

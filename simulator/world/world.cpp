@@ -1,0 +1,66 @@
+#include "simulator/world/world.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.h"
+#include "core/sha256.h"
+
+namespace viscera::sim {
+
+World::World(const core::Scenario& scenario)
+    : gravity_(scenario.session.gravity), time_step_(scenario.session.time_step) {
+  if (!(time_step_ > 0.0)) throw core::InputError("session time step must be positive", {"", "/scenario/session/time_step", ""});
+  for (const auto& object : scenario.objects) {
+    if (object.body_kind != core::BodyKind::TetMesh) continue;
+    core::Material material;
+    if (!object.material.empty()) {
+      const auto it = scenario.materials.find(object.material);
+      if (it == scenario.materials.end()) {
+        throw core::InputError("unknown material id \"" + object.material + "\"", {"", "", "object " + object.id});
+      }
+      material = it->second;
+    }
+    bodies_.emplace_back(object.id, object.body, material);
+  }
+  double stable = time_step_;
+  for (const auto& body : bodies_) stable = std::min(stable, body.stable_time_step());
+  substeps_ = std::max(1, static_cast<int>(std::ceil(time_step_ / stable - 1e-12)));
+}
+
+void World::step() {
+  const double h = time_step_ / substeps_;
+  for (int s = 0; s < substeps_; ++s) {
+    for (auto& body : bodies_) {
+      body.compute_forces(gravity_, h);
+      body.integrate(h);
+    }
+  }
+  ++steps_;
+}
+
+BodyEnergies World::energies() const {
+  BodyEnergies sum;
+  const double h = time_step_ / substeps_;
+  for (const auto& body : bodies_) {
+    const BodyEnergies e = body.energies(gravity_, h);
+    sum.kinetic += e.kinetic;
+    sum.elastic += e.elastic;
+    sum.gravitational += e.gravitational;
+  }
+  return sum;
+}
+
+std::string World::state_hash() const {
+  core::Sha256 hash;
+  const auto add = [&hash](const std::vector<core::Vec3>& points) {
+    hash.update(std::as_bytes(std::span<const core::Vec3>(points)));
+  };
+  for (const auto& body : bodies_) {
+    add(body.positions());
+    add(body.previous_positions());
+  }
+  return hash.hex_digest();
+}
+
+}  // namespace viscera::sim

@@ -1,0 +1,49 @@
+#pragma once
+/// The simulated world of a scenario: its deformable bodies stepped at a fixed time step
+/// (DESIGN.md §5). Single-threaded and in a fixed order, so the same scenario gives the same
+/// state bit for bit (the deterministic mode of sessions and replays).
+
+#include <string>
+#include <vector>
+
+#include "core/scenario/scenario.h"
+#include "simulator/physics/deformable_body.h"
+
+namespace viscera::sim {
+
+/// Bodies, gravity and the clock of one simulation.
+class World {
+ public:
+  /// Builds a body for every object whose body kind is a tet mesh, with its material (or the
+  /// default Material when it names none). The physics step is scenario.session.time_step,
+  /// split into equal sub-steps when a body needs a smaller step to stay stable.
+  /// Throws core::InputError for a missing material or an invalid body.
+  explicit World(const core::Scenario& scenario);
+
+  /// Advances by one physics step (time_step() seconds).
+  void step();
+
+  double time() const { return static_cast<double>(steps_) * time_step_; }
+  long long steps() const { return steps_; }
+  double time_step() const { return time_step_; }
+  int substeps() const { return substeps_; }
+  const core::Vec3& gravity() const { return gravity_; }
+  const std::vector<DeformableBody>& bodies() const { return bodies_; }
+  std::vector<DeformableBody>& bodies() { return bodies_; }
+
+  /// Sum of the bodies' energies at the current state.
+  BodyEnergies energies() const;
+
+  /// SHA-256 (hex) of every body's current and previous positions, in body order: equal hashes
+  /// mean bit-identical states.
+  std::string state_hash() const;
+
+ private:
+  std::vector<DeformableBody> bodies_;
+  core::Vec3 gravity_;
+  double time_step_ = 1.0e-3;
+  int substeps_ = 1;
+  long long steps_ = 0;
+};
+
+}  // namespace viscera::sim

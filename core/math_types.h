@@ -2,7 +2,9 @@
 /// Vector types shared by every module. Positions are in metres (SI inside, DESIGN.md §3).
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>  // cross products wherever vectors are used
 #include <array>
+#include <limits>
 
 namespace viscera::core {
 

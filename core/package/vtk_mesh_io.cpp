@@ -19,6 +19,7 @@
 #include <vtkXMLUnstructuredGridWriter.h>
 
 #include "core/error.h"
+#include "core/vtk_silence.h"
 
 namespace viscera::core {
 namespace {
@@ -75,6 +76,7 @@ template <typename Reader>
 void read_checked(Reader& reader, const std::filesystem::path& path) {
   if (!std::filesystem::is_regular_file(path)) throw InputError("file is missing", {path.string(), "", ""});
   reader.SetFileName(path.string().c_str());
+  const ScopedVtkSilence silence;  // the failure is reported below, once, naming the file
   reader.Update();
   if (reader.GetErrorCode() != 0 || reader.GetOutput() == nullptr) {
     throw InputError("not a readable VTK XML file", {path.string(), "", ""});

@@ -1,6 +1,7 @@
 #include "templates/ball_template.h"
 
 #include "core/meshing/tet_mesher.h"
+#include "core/primitives/box.h"
 #include "core/primitives/icosphere.h"
 
 namespace viscera::templates {
@@ -23,8 +24,45 @@ std::vector<TemplateParameter> BallTemplate::parameters() const {
       {"volume_stiffness", "Pa", "Teschner volume stiffness density", 0.0, 1.0e6, 30000.0, false},
       {"area_stiffness", "N/m", "Teschner surface area stiffness density", 0.0, 1.0e3, 2.0, false},
       {"distance_damping", "Pa*s", "damping density on distance terms", 0.0, 1.0e3, 100.0, false},
+      {"floor", "count",
+       "1: the ball rests free on a fixed tissue slab (two touching bodies) instead of a fixed base",
+       0, 1, 0, true},
   };
 }
+
+namespace {
+
+/// A fixed slab of stiff tissue whose top face touches the bottom of the ball (z = −radius).
+void add_floor(core::Scenario& scenario, double radius, double cell_size, core::Progress& progress) {
+  core::Material slab;
+  slab.id = "floor-tissue";
+  slab.name = "Stiff supporting tissue";
+  slab.density = 1100.0;
+  slab.distance_stiffness = 3.0e5;
+  slab.volume_stiffness = 3.0e5;
+  slab.distance_damping = 100.0;
+  slab.source = "ten times the ball's stiffness, so the ball does the deforming";
+  scenario.materials[slab.id] = slab;
+
+  const core::Vec3 min(-2.0 * radius, -2.0 * radius, -1.5 * radius);
+  const core::Vec3 max(2.0 * radius, 2.0 * radius, -radius);
+  core::SceneObject floor;
+  floor.id = "floor";
+  floor.name = "Floor";
+  floor.role = core::ObjectRole::Fixture;
+  floor.material = slab.id;
+  floor.body_kind = core::BodyKind::TetMesh;
+  floor.surface = core::make_box(min, max, 2.0 * cell_size);
+  core::TetMeshingOptions meshing;
+  meshing.cell_size = 2.0 * cell_size;
+  floor.body = core::mesh_closed_surface(floor.surface, meshing, progress);
+  floor.body.node_mass = core::lumped_node_masses(floor.body, slab.density);
+  floor.body.fixed.assign(floor.body.nodes.size(), 1);  // the slab holds still
+  floor.embedding = core::embed_points(floor.surface.vertices, floor.body);
+  scenario.objects.push_back(std::move(floor));
+}
+
+}  // namespace
 
 core::Scenario BallTemplate::build(const ParameterValues& p, std::uint64_t /*seed*/,
                                    core::Progress& progress) const {
@@ -58,9 +96,10 @@ core::Scenario BallTemplate::build(const ParameterValues& p, std::uint64_t /*see
   core::TetMesh body = core::mesh_closed_surface(body_surface, meshing, progress);
   body.node_mass = core::lumped_node_masses(body, tissue.density);
 
+  const bool on_floor = p.at("floor") != 0.0;
   const double fixed_below = -radius + 2.0 * radius * p.at("fixed_base_height");
   body.fixed.assign(body.nodes.size(), 0);
-  for (std::size_t n = 0; n < body.nodes.size(); ++n) {
+  for (std::size_t n = 0; n < body.nodes.size() && !on_floor; ++n) {
     if (body.nodes[n].z() <= fixed_below) body.fixed[n] = 1;
   }
 
@@ -76,6 +115,7 @@ core::Scenario BallTemplate::build(const ParameterValues& p, std::uint64_t /*see
   ball.embedding = core::embed_points(ball.surface.vertices, body);
   ball.body = std::move(body);
   scenario.objects.push_back(std::move(ball));
+  if (on_floor) add_floor(scenario, radius, cell_size, progress);
 
   core::TaskSpec settle;
   settle.id = "settle";

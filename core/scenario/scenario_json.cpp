@@ -196,12 +196,14 @@ void from_json(const nlohmann::json& j, TaskSpec& t) {
 
 void to_json(nlohmann::json& j, const SessionSpec& s) {
   j = {{"time_step", s.time_step}, {"duration_limit", s.duration_limit}, {"gravity", s.gravity},
+       {"contact_stiffness", s.contact_stiffness},
        {"tasks", s.tasks}, {"metrics", s.metrics}};
 }
 void from_json(const nlohmann::json& j, SessionSpec& s) {
   read_optional(j, "time_step", s.time_step);
   read_optional(j, "duration_limit", s.duration_limit);
   read_optional(j, "gravity", s.gravity);
+  read_optional(j, "contact_stiffness", s.contact_stiffness);
   read_optional(j, "tasks", s.tasks);
   read_optional(j, "metrics", s.metrics);
 }

@@ -126,6 +126,7 @@ struct SessionSpec {
   double time_step = 1.0e-3;        ///< s, the fixed physics step
   double duration_limit = 600.0;    ///< s
   Vec3 gravity = Vec3(0.0, 0.0, -9.81);  ///< m/s²
+  double contact_stiffness = 500.0;      ///< N/m per colliding point (penalty response)
   std::vector<TaskSpec> tasks;
   std::vector<std::string> metrics;
 

@@ -45,9 +45,9 @@ DeformableBody::DeformableBody(std::string name, const core::TetMesh& mesh, cons
     distance_.stiffness.push_back(material.distance_stiffness * share);
     distance_.damping.push_back(material.distance_damping * share);
   }
+  surface_faces_ = mesh.surface_faces.empty() ? core::boundary_faces(mesh.tets) : mesh.surface_faces;
   if (material.area_stiffness > 0.0) {
-    const auto faces = mesh.surface_faces.empty() ? core::boundary_faces(mesh.tets) : mesh.surface_faces;
-    for (const auto& f : faces) {
+    for (const auto& f : surface_faces_) {
       const double a0 = 0.5 * (mesh.nodes[f[1]] - mesh.nodes[f[0]]).cross(mesh.nodes[f[2]] - mesh.nodes[f[0]]).norm();
       if (!(a0 > 0.0)) continue;
       area_.triangles.push_back(f);
@@ -86,7 +86,7 @@ BodyEnergies DeformableBody::energies(const core::Vec3& gravity, double h) const
   return e;
 }
 
-double DeformableBody::stable_time_step() const {
+double DeformableBody::stable_time_step(double contact_stiffness) const {
   // Gershgorin bound of M⁻¹K per node: a term of stiffness k with constraint gradient g
   // contributes k |g_i| Σ_j |g_j| to row i. Damping bounds the step by m / c.
   const std::size_t n = positions_.size();
@@ -119,6 +119,12 @@ double DeformableBody::stable_time_step() const {
     for (int e = 0; e < 3; ++e) longest = std::max(longest, (rest_[tri[e]] - rest_[tri[(e + 1) % 3]]).norm());
     const double g = 0.5 * longest;
     for (const int i : tri) stiffness[i] += area_.stiffness[t] / (a0 * a0) * g * 3.0 * g;
+  }
+  if (contact_stiffness > 0.0) {
+    std::vector<char> on_surface(n, 0);
+    for (const auto& f : surface_faces_)
+      for (const int v : f) on_surface[v] = 1;
+    for (std::size_t i = 0; i < n; ++i) stiffness[i] += on_surface[i] ? contact_stiffness : 0.0;
   }
   // Per node, the undamped limit 2/ω and the explicit-damping limit 2m/c combine harmonically:
   // each alone is the exact bound when the other vanishes, and together this stays below both.

@@ -52,6 +52,11 @@ class DeformableBody {
   double compute_forces(const core::Vec3& gravity, double h);
   const std::vector<core::Vec3>& forces() const { return forces_; }
 
+  /// Adds an external force in N at `node` (contacts, instruments) after compute_forces().
+  void add_force(int node, const core::Vec3& force) { forces_[node] += force; }
+  /// Boundary triangles of the body, outward (TetMesh::surface_faces or derived from tets).
+  const std::vector<core::Triangle>& surface_faces() const { return surface_faces_; }
+
   /// One Verlet step of h seconds with the forces of compute_forces().
   void integrate(double h);
 
@@ -60,7 +65,8 @@ class DeformableBody {
 
   /// Largest step in s for which explicit integration of this body stays stable, from a
   /// Gershgorin bound on the stiffness and damping of each node, with a 0.9 safety factor.
-  double stable_time_step() const;
+  /// `contact_stiffness` (N/m) is the penalty stiffness surface nodes may meet in contacts.
+  double stable_time_step(double contact_stiffness = 0.0) const;
 
   /// Largest distance in m of any node from its rest position.
   double max_displacement() const;
@@ -73,6 +79,7 @@ class DeformableBody {
   std::string name_;
   std::vector<core::Vec3> rest_, positions_, previous_, velocities_, forces_;
   std::vector<double> mass_, inverse_mass_;
+  std::vector<core::Triangle> surface_faces_;
   DistanceTerms distance_;
   AreaTerms area_;
   VolumeTerms volume_;

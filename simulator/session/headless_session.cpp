@@ -50,7 +50,8 @@ SessionReport run_headless(const core::Scenario& scenario, const HeadlessRunOpti
     const BodyEnergies e = world.energies();
     double displacement = 0.0;
     for (const auto& body : world.bodies()) displacement = std::max(displacement, body.max_displacement());
-    report.samples.push_back({world.time(), e.kinetic, e.elastic, e.gravitational, displacement});
+    report.samples.push_back({world.time(), e.kinetic, e.elastic, e.gravitational, displacement,
+                              world.contacts().colliding_points, world.contacts().max_penetration});
     report.max_displacement = std::max(report.max_displacement, displacement);
     for (auto& watch : settles) {
       auto& result = report.tasks[watch.task];
@@ -76,6 +77,8 @@ SessionReport run_headless(const core::Scenario& scenario, const HeadlessRunOpti
   report.steps = world.steps();
   report.simulated_time = world.time();
   report.final_state_hash = world.state_hash();
+  report.max_penetration = world.max_penetration();
+  report.contact_stiffness = world.bodies().size() > 1 ? scenario.session.contact_stiffness : 0.0;
   for (const auto& body : world.bodies()) {
     BodySummary summary;
     summary.name = body.name();
@@ -96,6 +99,7 @@ nlohmann::json report_to_json(const SessionReport& r) {
   nlohmann::json series = {{"time", nlohmann::json::array()},          {"kinetic", nlohmann::json::array()},
                            {"elastic", nlohmann::json::array()},       {"gravitational", nlohmann::json::array()},
                            {"total", nlohmann::json::array()},         {"max_displacement", nlohmann::json::array()}};
+  nlohmann::json contacts = {{"colliding_points", nlohmann::json::array()}, {"max_penetration", nlohmann::json::array()}};
   for (const auto& s : r.samples) {
     series["time"].push_back(s.time);
     series["kinetic"].push_back(s.kinetic);
@@ -103,7 +107,11 @@ nlohmann::json report_to_json(const SessionReport& r) {
     series["gravitational"].push_back(s.gravitational);
     series["total"].push_back(s.total());
     series["max_displacement"].push_back(s.max_displacement);
+    contacts["colliding_points"].push_back(s.colliding_points);
+    contacts["max_penetration"].push_back(s.max_penetration);
   }
+  contacts["max_penetration_overall"] = r.max_penetration;
+  contacts["stiffness"] = r.contact_stiffness;
   nlohmann::json bodies = nlohmann::json::array();
   for (const auto& b : r.bodies) {
     bodies.push_back({{"name", b.name}, {"nodes", b.nodes}, {"edges", b.edges}, {"tets", b.tets},
@@ -129,6 +137,7 @@ nlohmann::json report_to_json(const SessionReport& r) {
           {"units", {{"time", "s"}, {"energy", "J"}, {"length", "m"}}},
           {"energy", series},
           {"max_displacement", r.max_displacement},
+          {"contacts", contacts},
           {"bodies", bodies},
           {"tasks", tasks},
           {"final_state_hash", r.final_state_hash}};

@@ -26,6 +26,8 @@ struct EnergySample {
   double elastic = 0.0;
   double gravitational = 0.0;
   double max_displacement = 0.0;
+  int colliding_points = 0;      ///< vertices inside another body
+  double max_penetration = 0.0;  ///< m, deepest colliding point of the last sub-step
   double total() const { return kinetic + elastic + gravitational; }
 };
 
@@ -56,6 +58,8 @@ struct SessionReport {
   int substeps = 1;
   std::vector<EnergySample> samples;
   double max_displacement = 0.0;  ///< m, over the whole run
+  double max_penetration = 0.0;   ///< m, deepest contact over every sub-step of the run
+  double contact_stiffness = 0.0; ///< N/m, 0 when the scene has fewer than two bodies
   std::vector<BodySummary> bodies;
   std::vector<TaskResult> tasks;
   std::string final_state_hash;

@@ -23,18 +23,22 @@ World::World(const core::Scenario& scenario)
     }
     bodies_.emplace_back(object.id, object.body, material);
   }
+  const double contact_stiffness = bodies_.size() > 1 ? scenario.session.contact_stiffness : 0.0;
+  if (contact_stiffness > 0.0) contact_ = std::make_unique<ContactResponse>(bodies_, contact_stiffness);
   double stable = time_step_;
-  for (const auto& body : bodies_) stable = std::min(stable, body.stable_time_step());
+  for (const auto& body : bodies_) stable = std::min(stable, body.stable_time_step(contact_stiffness));
   substeps_ = std::max(1, static_cast<int>(std::ceil(time_step_ / stable - 1e-12)));
 }
 
 void World::step() {
   const double h = time_step_ / substeps_;
   for (int s = 0; s < substeps_; ++s) {
-    for (auto& body : bodies_) {
-      body.compute_forces(gravity_, h);
-      body.integrate(h);
+    for (auto& body : bodies_) body.compute_forces(gravity_, h);
+    if (contact_) {
+      contacts_ = contact_->apply(bodies_);
+      max_penetration_ = std::max(max_penetration_, contacts_.max_penetration);
     }
+    for (auto& body : bodies_) body.integrate(h);
   }
   ++steps_;
 }

@@ -7,6 +7,9 @@
 #include <vector>
 
 #include "core/scenario/scenario.h"
+#include <memory>
+
+#include "simulator/collision/contact_response.h"
 #include "simulator/physics/deformable_body.h"
 
 namespace viscera::sim {
@@ -16,7 +19,8 @@ class World {
  public:
   /// Builds a body for every object whose body kind is a tet mesh, with its material (or the
   /// default Material when it names none). The physics step is scenario.session.time_step,
-  /// split into equal sub-steps when a body needs a smaller step to stay stable.
+  /// split into equal sub-steps when a body needs a smaller step to stay stable. With two or
+  /// more bodies, contacts between them get penalty forces of scenario.session.contact_stiffness.
   /// Throws core::InputError for a missing material or an invalid body.
   explicit World(const core::Scenario& scenario);
 
@@ -31,6 +35,11 @@ class World {
   const std::vector<DeformableBody>& bodies() const { return bodies_; }
   std::vector<DeformableBody>& bodies() { return bodies_; }
 
+  /// Contacts of the last sub-step.
+  const ContactStatistics& contacts() const { return contacts_; }
+  /// Largest penetration in m seen in any sub-step so far.
+  double max_penetration() const { return max_penetration_; }
+
   /// Sum of the bodies' energies at the current state.
   BodyEnergies energies() const;
 
@@ -44,6 +53,9 @@ class World {
   double time_step_ = 1.0e-3;
   int substeps_ = 1;
   long long steps_ = 0;
+  std::unique_ptr<ContactResponse> contact_;
+  ContactStatistics contacts_;
+  double max_penetration_ = 0.0;
 };
 
 }  // namespace viscera::sim

@@ -9,6 +9,7 @@
 #include "core/mesh/surface_mesh.h"
 #include "core/mesh/tet_mesh.h"
 #include "core/meshing/tet_mesher.h"
+#include "core/primitives/box.h"
 #include "core/primitives/icosphere.h"
 
 namespace viscera::core {
@@ -124,6 +125,20 @@ TEST(SurfaceEmbedding, reproduces_points_inside_and_near_the_body) {
   for (auto& n : moved) n += Vec3(0.01, -0.02, 0.005);
   const auto shifted = embedded_positions(embedding, body.tets, moved);
   EXPECT_NEAR((shifted[5] - fine.vertices[5] - Vec3(0.01, -0.02, 0.005)).norm(), 0.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace viscera::core
+
+namespace viscera::core {
+namespace {
+
+TEST(Box, is_closed_outward_with_the_exact_volume_and_area) {
+  const SurfaceMesh box = make_box(Vec3(-0.1, 0.0, 0.2), Vec3(0.1, 0.05, 0.23), 0.01);
+  EXPECT_TRUE(is_closed_and_consistently_oriented(box));
+  EXPECT_NEAR(enclosed_volume(box), 0.2 * 0.05 * 0.03, 1e-12);
+  EXPECT_NEAR(surface_area(box), 2 * (0.2 * 0.05 + 0.2 * 0.03 + 0.05 * 0.03), 1e-12);
+  EXPECT_THROW(make_box(Vec3::Zero(), Vec3(1, 0, 1), 0.1), UsageError);
 }
 
 }  // namespace

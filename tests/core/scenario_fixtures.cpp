@@ -94,6 +94,7 @@ core::Scenario full_scenario() {
   s.connections.push_back({"stalk", "uterus", "polyp-1", {{5, 0}, {7, 1}}, 250.0});
   s.fluid = {true, "glycine", 12000.0, 500.0, 0.0015};
   s.session.time_step = 0.0005;
+  s.session.contact_stiffness = 750.0;
   s.session.duration_limit = 300.0;
   s.session.gravity = core::Vec3(0, -9.81, 0);
   s.session.tasks.push_back({"look", "Inspect the cavity", "observe", {{"coverage", 0.8}}});

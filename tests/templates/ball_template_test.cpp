@@ -69,3 +69,27 @@ TEST(TemplateCatalog, same_seed_and_parameters_build_the_same_scenario) {
 
 }  // namespace
 }  // namespace viscera::templates
+
+namespace viscera::templates {
+namespace {
+
+TEST(BallTemplate, on_the_floor_the_two_bodies_touch_without_interpenetrating) {
+  const core::Scenario scenario =
+      build_from_template("ball", {{"radius", "0.03"}, {"cell_size", "0.01"}, {"floor", "1"}}, 2);
+  ASSERT_EQ(scenario.objects.size(), 2u);
+  EXPECT_EQ(scenario.objects[1].role, core::ObjectRole::Fixture);
+  sim::HeadlessRunOptions options;
+  options.duration = 0.5;
+  const sim::SessionReport report = sim::run_headless(scenario, options);
+  int touching_samples = 0;
+  for (const auto& s : report.samples) touching_samples += s.colliding_points > 0;
+  EXPECT_GT(touching_samples, static_cast<int>(report.samples.size()) / 2);  // it rests on the floor
+  EXPECT_GT(report.max_penetration, 0.0);
+  EXPECT_LT(report.max_penetration, 1e-3);  // under a millimetre, a tenth of the cell size
+  EXPECT_GT(report.bodies[0].centre_of_mass_drop, 0.0);
+  EXPECT_LT(report.bodies[0].centre_of_mass_drop, 0.015);  // held up by the floor, not falling through
+  EXPECT_EQ(report.bodies[1].max_displacement, 0.0);       // the floor is fixed
+}
+
+}  // namespace
+}  // namespace viscera::templates

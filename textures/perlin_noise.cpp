@@ -29,12 +29,18 @@ constexpr std::array<std::uint8_t, 256> kReferencePermutation = {
 inline double fade(double t) { return t * t * t * (t * (t * 6.0 - 15.0) + 10.0); }
 inline double lerp(double t, double a, double b) { return a + t * (b - a); }
 
-/// Dot product with one of the 12 edge-midpoint gradients (16 cases, 4 repeated).
+/// Components of the 16 gradients of the reference grad(): hash & 15 → (gx, gy, gz).
+constexpr double kGx[16] = {1, -1, 1, -1, 1, -1, 1, -1, 0, 0, 0, 0, 1, 0, -1, 0};
+constexpr double kGy[16] = {1, 1, -1, -1, 0, 0, 0, 0, 1, -1, 1, -1, 1, -1, 1, -1};
+constexpr double kGz[16] = {0, 0, 0, 0, 1, 1, -1, -1, 1, 1, -1, -1, 0, 1, 0, -1};
+
+/// Dot product with one of the 12 edge-midpoint gradients (16 cases, 4 repeated). Perlin's
+/// grad() picks ±u ± v with branches; every gradient has exactly two non-zero components of ±1,
+/// so the table form adds the same two terms and gives the same value, without the branch
+/// mispredictions that random hashes cause.
 inline double grad(int hash, double x, double y, double z) {
   const int h = hash & 15;
-  const double u = h < 8 ? x : y;
-  const double v = h < 4 ? y : (h == 12 || h == 14 ? x : z);
-  return ((h & 1) == 0 ? u : -u) + ((h & 2) == 0 ? v : -v);
+  return kGx[h] * x + (kGy[h] * y + kGz[h] * z);
 }
 
 }  // namespace
@@ -89,6 +95,16 @@ double PerlinNoise::turbulence(double x, double y, double z, int octaves,
     frequency *= 2.0;
   }
   return sum;
+}
+
+double PerlinNoise::noise(double x, double y) const { return noise(x, y, 0.0); }
+
+double PerlinNoise::fractal_sum(double x, double y, int octaves, double persistence) const {
+  return fractal_sum(x, y, 0.0, octaves, persistence);
+}
+
+double PerlinNoise::turbulence(double x, double y, int octaves, double persistence) const {
+  return turbulence(x, y, 0.0, octaves, persistence);
 }
 
 }  // namespace viscera::textures

@@ -1,0 +1,122 @@
+#include "simulator/haptics/haptic_proxy.h"
+
+#include <gtest/gtest.h>
+
+#include "core/primitives/icosphere.h"
+#include "simulator/haptics/device_limits.h"
+
+namespace viscera::sim {
+namespace {
+
+/// A flat 10 cm × 10 cm sheet at z = 0 facing +z, split into 20 × 20 squares.
+struct Sheet {
+  std::vector<core::Vec3> positions;
+  std::vector<core::Triangle> faces;
+};
+
+Sheet make_sheet() {
+  Sheet s;
+  const int n = 20;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) s.positions.emplace_back(-0.05 + 0.1 * i / n, -0.05 + 0.1 * j / n, 0.0);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
+      s.faces.push_back({a, b, d});
+      s.faces.push_back({a, d, c});
+    }
+  return s;
+}
+
+TEST(HapticProxy, stays_on_the_surface_above_the_tip_with_a_spring_force) {
+  const Sheet sheet = make_sheet();
+  const ProxySurface surface(sheet.faces);
+  HapticProxy proxy(200.0);
+  proxy.reset({0.001, 0.002, 0.01});
+  proxy.update({0.001, 0.002, 0.005}, surface, sheet.positions);
+  EXPECT_FALSE(proxy.in_contact());
+  EXPECT_EQ(proxy.force(), core::Vec3::Zero());
+  proxy.update({0.001, 0.002, -0.004}, surface, sheet.positions);
+  ASSERT_TRUE(proxy.in_contact());
+  EXPECT_NEAR(proxy.proxy().z(), 0.0, 1e-15);
+  EXPECT_NEAR(proxy.proxy().x(), 0.001, 1e-15);
+  EXPECT_TRUE(proxy.force().isApprox(core::Vec3(0, 0, 200.0 * 0.004), 1e-12));
+}
+
+TEST(HapticProxy, slides_across_triangles_and_its_force_changes_continuously) {
+  const Sheet sheet = make_sheet();
+  const ProxySurface surface(sheet.faces);
+  HapticProxy proxy(300.0);
+  proxy.reset({-0.04, 0.0013, 0.01});
+  proxy.update({-0.04, 0.0013, -0.003}, surface, sheet.positions);
+  ASSERT_TRUE(proxy.in_contact());
+  core::Vec3 previous_force = proxy.force();
+  core::Vec3 tip(-0.04, 0.0013, -0.003);
+  const core::Vec3 step(0.0001, 0.00003, -0.00001);  // drag across many triangles, pressing deeper
+  for (int s = 0; s < 700; ++s) {
+    tip += step;
+    proxy.update(tip, surface, sheet.positions);
+    ASSERT_TRUE(proxy.in_contact()) << s;
+    EXPECT_NEAR(proxy.proxy().z(), 0.0, 1e-12) << s;
+    EXPECT_NEAR(proxy.proxy().x(), tip.x(), 1e-12) << s;  // the nearest surface point
+    EXPECT_LE((proxy.force() - previous_force).norm(), 300.0 * step.norm() + 1e-12) << s;
+    previous_force = proxy.force();
+  }
+  EXPECT_GT(proxy.contact().triangle, 100);  // it walked far from where it started
+}
+
+TEST(HapticProxy, is_released_when_the_tip_comes_back_out) {
+  const Sheet sheet = make_sheet();
+  const ProxySurface surface(sheet.faces);
+  HapticProxy proxy(100.0);
+  proxy.reset({0.0, 0.0, 0.01});
+  proxy.update({0.0, 0.0, -0.002}, surface, sheet.positions);
+  ASSERT_TRUE(proxy.in_contact());
+  proxy.update({0.003, 0.0, 0.004}, surface, sheet.positions);
+  EXPECT_FALSE(proxy.in_contact());
+  EXPECT_EQ(proxy.proxy(), core::Vec3(0.003, 0.0, 0.004));
+  EXPECT_EQ(proxy.force(), core::Vec3::Zero());
+}
+
+TEST(HapticProxy, pushed_into_a_sphere_the_proxy_stays_on_it_and_pushes_outward) {
+  const core::SurfaceMesh sphere = core::make_icosphere(0.03, 4);
+  const ProxySurface surface(sphere.triangles);
+  HapticProxy proxy(150.0);
+  const core::Vec3 direction = core::Vec3(0.3, -0.2, 1.0).normalized();
+  proxy.reset(0.05 * direction);
+  for (double r = 0.05; r >= 0.02; r -= 0.0005) {
+    const core::Vec3 tip = r * direction + core::Vec3(0.0, 0.0002 * (0.05 - r) / 0.0005, 0.0);
+    proxy.update(tip, surface, sphere.vertices);
+    if (r < 0.0295) {
+      ASSERT_TRUE(proxy.in_contact()) << r;
+      EXPECT_NEAR(proxy.proxy().norm(), 0.03, 0.03 * 0.003) << r;  // on the faceted sphere
+      EXPECT_GT(proxy.force().normalized().dot(proxy.proxy().normalized()), 0.99) << r;
+    }
+  }
+}
+
+TEST(HapticProxy, the_reaction_spreads_to_the_triangle_nodes_by_barycentric_weights) {
+  const auto parts = distribute_to_triangle({4, 7, 9}, {0.2, 0.3, 0.5}, core::Vec3(0, 0, -1.0));
+  EXPECT_EQ(parts[0].first, 4);
+  EXPECT_EQ(parts[2].first, 9);
+  EXPECT_TRUE((parts[0].second + parts[1].second + parts[2].second).isApprox(core::Vec3(0, 0, -1.0)));
+  EXPECT_DOUBLE_EQ(parts[1].second.z(), -0.3);
+}
+
+TEST(DeviceLimits, clamp_force_and_torques_to_the_hysteroscopy_device) {
+  const core::Vec3 axis = core::Vec3::UnitZ();
+  auto out = clamp_to_device({3.0, 4.0, 0.0}, {0.0, 0.0, 0.0}, axis);
+  EXPECT_NEAR(out.force.norm(), 2.0, 1e-12);
+  EXPECT_TRUE(out.force_limited);
+  EXPECT_TRUE(out.force.normalized().isApprox(core::Vec3(0.6, 0.8, 0.0)));
+  out = clamp_to_device({0.01, 0.0, 0.0}, {0.0, 0.0, 0.0}, axis);
+  EXPECT_EQ(out.force, core::Vec3::Zero());  // below the 0.04 N the drive can render
+  out = clamp_to_device({0.5, 0.0, 0.0}, {1.2, 0.0, 0.1}, axis);
+  EXPECT_EQ(out.force, core::Vec3(0.5, 0.0, 0.0));
+  EXPECT_NEAR(out.torque.x(), 0.5, 1e-12);   // pitch/yaw ≤ 0.5 N·m
+  EXPECT_NEAR(out.torque.z(), 0.02, 1e-12);  // roll ≤ 0.02 N·m
+  EXPECT_TRUE(out.torque_limited);
+}
+
+}  // namespace
+}  // namespace viscera::sim

@@ -52,6 +52,7 @@ SampleNoiseField::SampleNoiseField(const Image8& sample, std::uint64_t seed, int
 }
 
 const Rgb& SampleNoiseField::at(const Lattice& l, int x, int y) const {
+  // Negative coordinates wrap through the mask like positive ones.
   return l.colors[l.permutation[l.permutation[x & kMask] + (y & kMask)]];
 }
 
@@ -60,11 +61,43 @@ const Rgb& SampleNoiseField::at(const Lattice& l, int x, int y, int z) const {
   return l.colors[p[p[p[x & kMask] + (y & kMask)] + (z & kMask)]];
 }
 
+namespace {
+
+/// Rotation of octave o: o·atan(3/4) about z in the plane, and about the (1,1,1) axis in space;
+/// both irrational in turns, so no two octaves share lattice directions.
+constexpr double kOctaveAngle = 0.6435011087932844;
+
+void rotate_2d(int octave, double& x, double& y) {
+  const double a = kOctaveAngle * octave;
+  const double c = std::cos(a), s = std::sin(a);
+  const double rx = c * x - s * y;
+  y = s * x + c * y;
+  x = rx;
+}
+
+void rotate_3d(int octave, double& x, double& y, double& z) {
+  // Rodrigues about the unit (1,1,1)/√3 axis.
+  const double a = kOctaveAngle * octave;
+  const double c = std::cos(a), s = std::sin(a), k = 1.0 / std::sqrt(3.0);
+  const double dot = k * (x + y + z);
+  const double cx = k * (y - z), cy = k * (z - x), cz = k * (x - y);  // axis × p
+  const double rx = x * c + cx * s + k * dot * (1.0 - c);
+  const double ry = y * c + cy * s + k * dot * (1.0 - c);
+  const double rz = z * c + cz * s + k * dot * (1.0 - c);
+  x = rx;
+  y = ry;
+  z = rz;
+}
+
+}  // namespace
+
 Rgb SampleNoiseField::color(double x, double y) const {
   Rgb sum{0.0f, 0.0f, 0.0f};
   double frequency = 1.0;
-  for (const auto& lattice : lattices_) {
-    const double sx = x * frequency, sy = y * frequency;
+  for (std::size_t o = 0; o < lattices_.size(); ++o) {
+    const auto& lattice = lattices_[o];
+    double sx = x * frequency, sy = y * frequency;
+    rotate_2d(static_cast<int>(o), sx, sy);
     const double fx = std::floor(sx), fy = std::floor(sy);
     const int X = static_cast<int>(fx), Y = static_cast<int>(fy);
     const float u = fade(static_cast<float>(sx - fx)), v = fade(static_cast<float>(sy - fy));
@@ -79,8 +112,10 @@ Rgb SampleNoiseField::color(double x, double y) const {
 Rgb SampleNoiseField::color(double x, double y, double z) const {
   Rgb sum{0.0f, 0.0f, 0.0f};
   double frequency = 1.0;
-  for (const auto& lattice : lattices_) {
-    const double sx = x * frequency, sy = y * frequency, sz = z * frequency;
+  for (std::size_t o = 0; o < lattices_.size(); ++o) {
+    const auto& lattice = lattices_[o];
+    double sx = x * frequency, sy = y * frequency, sz = z * frequency;
+    rotate_3d(static_cast<int>(o), sx, sy, sz);
     const double fx = std::floor(sx), fy = std::floor(sy), fz = std::floor(sz);
     const int X = static_cast<int>(fx), Y = static_cast<int>(fy), Z = static_cast<int>(fz);
     const float u = fade(static_cast<float>(sx - fx)), v = fade(static_cast<float>(sy - fy)),
@@ -96,49 +131,8 @@ Rgb SampleNoiseField::color(double x, double y, double z) const {
   return sum;
 }
 
-void SampleNoiseField::color_row(const double* xs, int count, double y, float* rgb) const {
-  // Planar accumulators keep the per-sample loop free of strides so it vectorises.
-  std::vector<float> planes(3 * static_cast<std::size_t>(count), 0.0f), u(count);
-  std::vector<double> scaled(count);
-  float* red = planes.data();
-  float* green = red + count;
-  float* blue = green + count;
-  double frequency = 1.0;
-  for (const auto& lattice : lattices_) {
-    const double sy = y * frequency;
-    const double fy = std::floor(sy);
-    const int Y = static_cast<int>(fy);
-    const float v = fade(static_cast<float>(sy - fy));
-    for (int i = 0; i < count; ++i) scaled[i] = xs[i] * frequency;
-    int i = 0;
-    while (i < count) {
-      // Samples in one lattice cell share its four corner colours, blended along y once.
-      const double fx = std::floor(scaled[i]);
-      const double next = fx + 1.0;
-      int end = i + 1;
-      while (end < count && scaled[end] >= fx && scaled[end] < next) ++end;
-      const int X = static_cast<int>(fx);
-      const Rgb left = mix(at(lattice, X, Y), at(lattice, X, Y + 1), v);
-      const Rgb right = mix(at(lattice, X + 1, Y), at(lattice, X + 1, Y + 1), v);
-      const float w = lattice.weight;
-      const float r0 = w * left[0], g0 = w * left[1], b0 = w * left[2];
-      const float dr = w * (right[0] - left[0]), dg = w * (right[1] - left[1]),
-                  db = w * (right[2] - left[2]);
-      for (int k = i; k < end; ++k) u[k] = fade(static_cast<float>(scaled[k] - fx));
-      for (int k = i; k < end; ++k) {
-        red[k] += r0 + u[k] * dr;
-        green[k] += g0 + u[k] * dg;
-        blue[k] += b0 + u[k] * db;
-      }
-      i = end;
-    }
-    frequency *= 2.0;
-  }
-  for (int i = 0; i < count; ++i) {
-    rgb[3 * i] = red[i];
-    rgb[3 * i + 1] = green[i];
-    rgb[3 * i + 2] = blue[i];
-  }
+double SampleNoiseField::top_frequency() const {
+  return std::ldexp(1.0, static_cast<int>(lattices_.size()) - 1);
 }
 
 Image8 palette_sample(const std::vector<Rgb>& colors, const std::vector<double>& weights,

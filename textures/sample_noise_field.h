@@ -16,10 +16,11 @@ using Rgb = std::array<float, 3>;  ///< sRGB values in [0, 255]
 
 /// A smooth colour field whose lattice values are pixels drawn uniformly at random from a sample
 /// image with the project's RNG. Octave o has its own lattice (4096 drawn colours, hashed by a
-/// seeded permutation, so the field repeats only every 4096 cells) at frequency 2^o; the colour
-/// is Σ_o a_o·V_o(2^o·p) / Σ_o a_o with a_o = persistence^o and V_o the quintic-weighted
-/// interpolation of the lattice. Each value is a convex combination of drawn pixels, so the
-/// field stays inside the sample's colour range and its expected colour is the sample's mean.
+/// seeded permutation, so the field repeats only every 4096 cells) at frequency 2^o, rotated by
+/// o·36.87° so the octaves' lattice lines never align (value noise otherwise shows its grid); the
+/// colour is Σ_o a_o·V_o(2^o·R_o·p) / Σ_o a_o with a_o = persistence^o and V_o the quintic-
+/// weighted interpolation of the lattice. Each value is a convex combination of drawn pixels, so
+/// the field stays inside the sample's colour range and its expected colour is the sample's mean.
 class SampleNoiseField {
  public:
   /// Draws the lattices from `sample` (RGB). Throws core::InputError when the sample is empty
@@ -31,8 +32,8 @@ class SampleNoiseField {
   Rgb color(double x, double y) const;
   /// Colour at (x, y, z), for solid textures.
   Rgb color(double x, double y, double z) const;
-  /// rgb[3i..3i+2] = color(xs[i], y) for i < count; fastest when xs ascends.
-  void color_row(const double* xs, int count, double y, float* rgb) const;
+  /// Highest lattice frequency (cells per unit length), for choosing a sampling grid.
+  double top_frequency() const;
 
   int octaves() const { return static_cast<int>(lattices_.size()); }
 

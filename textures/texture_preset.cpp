@@ -70,6 +70,8 @@ VesselLayerSpec vessel_layer(const json& j, const std::string& p) {
   v.width = number(j, "width", v.width, 1e-5, 0.2, p);
   v.angle = number(j, "angle", v.angle, 0.0, 180.0, p);
   v.angle_jitter = number(j, "angle_jitter", v.angle_jitter, 0.0, 90.0, p);
+  v.subdivisions = integer(j, "subdivisions", v.subdivisions, 1, 32, p);
+  v.wiggle = number(j, "wiggle", v.wiggle, 0.0, 90.0, p);
   v.direction = number(j, "direction", v.direction, -360.0, 360.0, p);
   v.direction_jitter = number(j, "direction_jitter", v.direction_jitter, 0.0, 180.0, p);
   v.taper = number(j, "taper", v.taper, 0.0, 10.0, p);
@@ -154,7 +156,8 @@ json texture_preset_to_json(const TexturePreset& t) {
   for (const auto& v : t.vessels) {
     vessels.push_back({{"grammar", v.grammar}, {"generations", v.generations}, {"trees", v.trees},
                        {"step", v.step}, {"width", v.width}, {"angle", v.angle},
-                       {"angle_jitter", v.angle_jitter}, {"direction", v.direction},
+                       {"angle_jitter", v.angle_jitter}, {"subdivisions", v.subdivisions},
+                       {"wiggle", v.wiggle}, {"direction", v.direction},
                        {"direction_jitter", v.direction_jitter}, {"taper", v.taper},
                        {"width_factor", v.width_factor}, {"depth_step", v.depth_step},
                        {"color", rgb_json(v.color)}, {"deep_color", rgb_json(v.deep_color)},

@@ -21,6 +21,8 @@ struct VesselLayerSpec {
   double width = 0.004;         ///< initial stroke width, texture widths
   double angle = 25.0;          ///< degrees
   double angle_jitter = 10.0;   ///< degrees
+  int subdivisions = 3;         ///< pieces per F, each turning by up to ± wiggle
+  double wiggle = 8.0;          ///< degrees: tortuosity of the vessels
   double direction = 90.0;      ///< degrees from the +u axis of each tree's first segment
   double direction_jitter = 180.0;  ///< degrees; 180 = any direction
   double taper = 0.0;           ///< width lost per texture width drawn (relative)

@@ -29,6 +29,52 @@ double amplitude_sum(int octaves, double persistence) {
   return sum;
 }
 
+/// The colour field sampled every `spacing` pixels and interpolated bilinearly in between. The
+/// field is smooth at that scale (at least 8 samples per cell of its finest octave), so a few
+/// thousand exact evaluations stand in for millions.
+class ColorGrid {
+ public:
+  ColorGrid(const SampleNoiseField& field, double frequency, int width, int height, int threads) {
+    const double finest_cell_px = width / (frequency * field.top_frequency());
+    spacing_ = std::clamp(static_cast<int>(finest_cell_px / 8.0), 1, 16);
+    nx_ = (width - 1) / spacing_ + 2;
+    ny_ = (height - 1) / spacing_ + 2;
+    nodes_.resize(3 * static_cast<std::size_t>(nx_) * ny_);
+    parallel_rows(ny_, [&](int begin, int end) {
+      for (int j = begin; j < end; ++j) {
+        for (int i = 0; i < nx_; ++i) {
+          const Rgb c = field.color((i * spacing_ + 0.5) / width * frequency,
+                                    (j * spacing_ + 0.5) / width * frequency);
+          std::copy(c.begin(), c.end(), nodes_.begin() + 3 * (static_cast<std::ptrdiff_t>(j) * nx_ + i));
+        }
+      }
+    }, threads);
+  }
+
+  /// Interleaved RGB of pixel row y into rgb (3 × width floats); row_buffer holds 3·nx floats.
+  void row(int y, int width, float* rgb, std::vector<float>& row_buffer) const {
+    row_buffer.resize(3 * static_cast<std::size_t>(nx_));
+    const int j = y / spacing_;
+    const float ty = static_cast<float>(y - j * spacing_) / static_cast<float>(spacing_);
+    const float* top = nodes_.data() + 3 * static_cast<std::size_t>(j) * nx_;
+    const float* bottom = top + 3 * static_cast<std::size_t>(nx_);
+    for (int k = 0; k < 3 * nx_; ++k) row_buffer[k] = top[k] + ty * (bottom[k] - top[k]);
+    const float inverse = 1.0f / static_cast<float>(spacing_);
+    for (int x = 0; x < width; ++x) {
+      const int i = x / spacing_;
+      const float tx = static_cast<float>(x - i * spacing_) * inverse;
+      for (int k = 0; k < 3; ++k) {
+        const float a = row_buffer[3 * i + k], b = row_buffer[3 * i + 3 + k];
+        rgb[3 * x + k] = a + tx * (b - a);
+      }
+    }
+  }
+
+ private:
+  int spacing_ = 1, nx_ = 0, ny_ = 0;
+  std::vector<float> nodes_;
+};
+
 }  // namespace
 
 Image8 normal_map_from_height(const std::vector<float>& h, int width, int height, double strength,
@@ -88,7 +134,7 @@ TextureMaps synthesize_texture(const TexturePreset& preset, const TextureOptions
     for (int x = 0; x < width; ++x) xs[x] = (x + 0.5) / width * frequency;
     return xs;
   };
-  const std::vector<double> color_xs = coordinates(preset.color_frequency);
+  const ColorGrid color_grid(colors, preset.color_frequency, width, height, options.threads);
   const std::vector<double> grain_xs = coordinates(preset.grain_frequency);
   const std::vector<double> wet_xs = coordinates(preset.specular_frequency);
   const double grain_norm = 1.0 / amplitude_sum(preset.grain_octaves, preset.grain_persistence);
@@ -103,7 +149,7 @@ TextureMaps synthesize_texture(const TexturePreset& preset, const TextureOptions
   // full-size coverage buffer is ever allocated or zeroed.
   constexpr int kChunkRows = 16;
   parallel_rows(height, [&](int begin, int end) {
-    std::vector<float> rgb(3 * static_cast<std::size_t>(width)), albedo_rgb(rgb.size());
+    std::vector<float> rgb(3 * static_cast<std::size_t>(width)), albedo_rgb(rgb.size()), grid_row;
     std::vector<float> heights(width), wet_values(width);
     std::vector<double> turbulence(width), wet(width);
     const std::size_t chunk_size = static_cast<std::size_t>(kChunkRows) * width;
@@ -119,7 +165,7 @@ TextureMaps synthesize_texture(const TexturePreset& preset, const TextureOptions
       }
       for (int y = chunk; y < chunk_end; ++y) {
         const double v = (y + 0.5) / width;  // texture widths, so texels stay square
-        colors.color_row(color_xs.data(), width, v * preset.color_frequency, rgb.data());
+        color_grid.row(y, width, rgb.data(), grid_row);
         grain.turbulence_row(grain_xs.data(), width,
                              v * preset.grain_frequency * preset.grain_aspect,
                              preset.grain_octaves, preset.grain_persistence, turbulence.data());

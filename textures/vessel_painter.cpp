@@ -29,6 +29,8 @@ std::vector<core::TurtleSegment> grow_vessel_layer(const VesselLayerSpec& spec, 
     turtle.left = core::Vec3(-std::sin(a), std::cos(a), 0.0);
     turtle.angle = spec.angle;
     turtle.angle_jitter = spec.angle_jitter;
+    turtle.subdivisions = spec.subdivisions;
+    turtle.wiggle = spec.wiggle;
     turtle.width_factor = spec.width_factor;
     turtle.depth_step = spec.depth_step;
     turtle.taper = spec.taper * spec.step;  // per grammar unit of length

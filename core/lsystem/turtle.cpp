@@ -1,6 +1,7 @@
 #include "core/lsystem/turtle.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -49,18 +50,25 @@ std::vector<TurtleSegment> interpret_turtle(const LsystemString& modules,
       case 'F': {
         const double length = m.parameters.empty() ? options.step : m.parameters[0];
         if (m.parameters.size() > 1) state.width = m.parameters[1];
-        TurtleSegment s;
-        s.start = state.position;
-        state.position += length * state.heading;
-        s.end = state.position;
-        s.start_width = state.width;
-        state.width *= std::fmax(0.0, 1.0 - options.taper * length);
-        s.end_width = state.width;
-        s.depth = state.depth;
-        s.parent = state.last_segment;
-        s.order = state.order;
-        state.last_segment = static_cast<int>(segments.size());
-        segments.push_back(s);
+        const int pieces = std::max(1, options.subdivisions);
+        for (int piece = 0; piece < pieces; ++piece) {
+          if (options.wiggle > 0.0) {
+            rotate(state.heading, state.left, state.up, rng.uniform(-options.wiggle, options.wiggle));
+          }
+          const double piece_length = length / pieces;
+          TurtleSegment s;
+          s.start = state.position;
+          state.position += piece_length * state.heading;
+          s.end = state.position;
+          s.start_width = state.width;
+          state.width *= std::fmax(0.0, 1.0 - options.taper * piece_length);
+          s.end_width = state.width;
+          s.depth = state.depth;
+          s.parent = state.last_segment;
+          s.order = state.order;
+          state.last_segment = static_cast<int>(segments.size());
+          segments.push_back(s);
+        }
         break;
       }
       case 'f':

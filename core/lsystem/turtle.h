@@ -5,7 +5,8 @@
 ///
 /// | module      | action                                                                   |
 /// |-------------|--------------------------------------------------------------------------|
-/// | F(l[,w])    | draw a segment of length l (default step), optionally setting width w first |
+/// | F(l[,w])    | draw a segment of length l (default step), optionally setting width w first; |
+/// |             | drawn as `subdivisions` pieces that each turn by up to ± `wiggle` degrees    |
 /// | f(l)        | move by l without drawing                                                 |
 /// | +(a) -(a)   | turn left / right about the up vector by a degrees (default angle)        |
 /// | &(a) ^(a)   | pitch down / up about the left vector                                     |
@@ -37,6 +38,8 @@ struct TurtleOptions {
   double taper = 0.0;            ///< relative width lost per unit length drawn (1/length)
   double depth_step = 0.1;       ///< ' without a parameter adds this to the depth
   double angle_jitter = 0.0;     ///< degrees; each turn varies uniformly by ± this
+  int subdivisions = 1;          ///< each F is drawn as this many collinear-ish pieces
+  double wiggle = 0.0;           ///< degrees; before each piece the heading turns about up by ± this (tortuosity)
   std::uint64_t seed = 0;        ///< for angle_jitter, through the project's Rng
 };
 

@@ -1,11 +1,114 @@
 #include "studio/cli/texture_commands.h"
 
 #include <cstdio>
+#include <filesystem>
+#include <optional>
 
+#include "core/error.h"
 #include "studio/cli/command_output.h"
+#include "studio/cli/terminal_progress.h"
 #include "textures/perlin_noise.h"
+#include "textures/png_io.h"
+#include "textures/texture_preset.h"
+#include "textures/texture_synthesis.h"
 
 namespace viscera::cli {
+namespace {
+
+struct TextureCommandOptions {
+  std::string preset;
+  std::uint64_t seed = 1;
+  std::string size = "1024x1024";
+  std::string sample;
+  std::string output;
+  bool all_maps = false;
+  bool no_vessels = false;
+  bool list = false;
+  bool json = false;
+};
+
+/// "WxH" or "N" (square) → pixels; throws UsageError otherwise.
+std::pair<int, int> parse_size(const std::string& text) {
+  const auto x = text.find('x');
+  try {
+    std::size_t used = 0;
+    const int width = std::stoi(text.substr(0, x), &used);
+    if (used != text.substr(0, x).size()) throw std::invalid_argument(text);
+    int height = width;
+    if (x != std::string::npos) {
+      const std::string rest = text.substr(x + 1);
+      height = std::stoi(rest, &used);
+      if (used != rest.size()) throw std::invalid_argument(text);
+    }
+    return {width, height};
+  } catch (const std::logic_error&) {
+    throw core::UsageError("--size expects WxH in pixels, e.g. 1024x1024, got \"" + text + "\"");
+  }
+}
+
+/// OUT.png → OUT_<suffix>.png beside it.
+std::filesystem::path sibling_map(const std::filesystem::path& output, const std::string& suffix) {
+  return output.parent_path() / (output.stem().string() + "_" + suffix + output.extension().string());
+}
+
+void list_presets(bool json) {
+  nlohmann::json presets = nlohmann::json::array();
+  std::string text;
+  for (const auto& name : textures::texture_preset_names()) {
+    const auto& preset = textures::find_texture_preset(name);
+    presets.push_back(textures::texture_preset_to_json(preset));
+    text += name + "\n  " + preset.description + "\n";
+  }
+  if (json) {
+    print_json(presets);
+  } else {
+    print_text(text);
+  }
+}
+
+void make_texture(const TextureCommandOptions& o) {
+  if (o.list) return list_presets(o.json);
+  if (o.preset.empty()) throw core::UsageError("--preset is required (see --list)");
+  if (o.output.empty()) throw core::UsageError("-o OUT.png is required");
+  const auto& preset = textures::find_texture_preset(o.preset);
+  const auto [width, height] = parse_size(o.size);
+  std::optional<textures::Image8> sample;
+  if (!o.sample.empty()) sample = textures::read_image_rgb(o.sample);
+
+  textures::TextureOptions options;
+  options.seed = o.seed;
+  options.width = width;
+  options.height = height;
+  options.sample = sample ? &*sample : nullptr;
+  options.vessels = !o.no_vessels;
+  options.normal_and_specular = o.all_maps;
+  TerminalProgress bar;
+  const textures::TextureMaps maps = textures::synthesize_texture(preset, options, bar.progress());
+
+  // Encode everything before writing anything, so an encoding failure leaves no file behind.
+  const std::filesystem::path output = o.output;
+  std::vector<std::pair<std::filesystem::path, std::string>> files = {
+      {output, textures::encode_png(maps.albedo)}};
+  if (o.all_maps) {
+    files.emplace_back(sibling_map(output, "normal"), textures::encode_png(maps.normal));
+    files.emplace_back(sibling_map(output, "specular"), textures::encode_png(maps.specular));
+  }
+  nlohmann::json written = nlohmann::json::array();
+  for (const auto& [path, bytes] : files) {
+    textures::write_file_atomically(bytes, path);
+    written.push_back(std::filesystem::absolute(path).string());
+  }
+  if (o.json) {
+    print_json({{"preset", o.preset}, {"seed", o.seed}, {"width", width}, {"height", height},
+                {"sample", o.sample}, {"files", written}});
+  } else {
+    std::string text;
+    for (const auto& path : written) text += "wrote " + path.get<std::string>() + "\n";
+    print_text(text);
+  }
+}
+
+}  // namespace
 
 void add_texture_commands(CLI::App& app) {
   auto* noise = app.add_subcommand("noise", "Perlin improved noise at a point (17 significant digits)");
@@ -25,6 +128,22 @@ void add_texture_commands(CLI::App& app) {
       print_text(text);
     }
   });
+
+  auto* texture = app.add_subcommand(
+      "texture", "Synthesise a tissue texture (albedo PNG; --maps adds normal and specular)");
+  auto options = std::make_shared<TextureCommandOptions>();
+  texture->add_option("--preset,-p", options->preset,
+                      "Preset: endometrium, myoma-surface, peritoneum, liver, urethral-mucosa");
+  texture->add_option("--seed", options->seed, "Random seed")->capture_default_str();
+  texture->add_option("--size", options->size, "Size in pixels, WxH")->capture_default_str();
+  texture->add_option("--sample", options->sample,
+                      "Sample image whose pixels fill the noise lattice (KisMo), instead of the preset palette");
+  texture->add_option("-o,--output", options->output, "Output PNG (albedo)");
+  texture->add_flag("--maps", options->all_maps, "Also write OUT_normal.png and OUT_specular.png");
+  texture->add_flag("--no-vessels", options->no_vessels, "Leave out the vessel layers");
+  texture->add_flag("--list", options->list, "List the presets and their parameters");
+  texture->add_flag("--json", options->json, "Print JSON");
+  texture->callback([options] { make_texture(*options); });
 }
 
 }  // namespace viscera::cli

@@ -1,5 +1,5 @@
 #pragma once
-/// Texture subcommands: `viscera noise X Y Z` (DESIGN.md §9).
+/// Texture subcommands: `viscera noise X Y Z` and `viscera texture --preset P …` (DESIGN.md §9).
 
 #include <CLI/CLI.hpp>
 

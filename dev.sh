@@ -17,7 +17,7 @@ packages=(
   libassimp-dev libopencv-dev libeigen3-dev libgmsh-dev gmsh
   libvtk9-dev libvtk9-qt-dev libvtkgdcm-dev qtbase5-dev
   nlohmann-json3-dev libcli11-dev libspdlog-dev libsqlite3-dev libzip-dev
-  libgtest-dev libgmock-dev libbenchmark-dev libnoise-dev
+  libgtest-dev libgmock-dev libbenchmark-dev libnoise-dev libbullet-dev
   libopenmpi-dev openmpi-bin
   xvfb xauth libgl1-mesa-dri
 )

@@ -1,0 +1,27 @@
+#pragma once
+// Structured tet meshes shared by the physics tests and benchmarks.
+
+#include "core/mesh/tet_mesh.h"
+
+namespace viscera::testing {
+
+/// nx × ny × nz cubes of `cell` m, 6 tets each (Kuhn subdivision), boundary faces included.
+inline core::TetMesh tet_block(int nx, int ny, int nz, double cell) {
+  core::TetMesh mesh;
+  const auto index = [&](int i, int j, int k) { return (k * (ny + 1) + j) * (nx + 1) + i; };
+  for (int k = 0; k <= nz; ++k)
+    for (int j = 0; j <= ny; ++j)
+      for (int i = 0; i <= nx; ++i) mesh.nodes.emplace_back(cell * i, cell * j, cell * k);
+  static constexpr int kPaths[6][2] = {{1, 3}, {1, 5}, {2, 3}, {2, 6}, {4, 5}, {4, 6}};
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i) {
+        const auto corner = [&](int c) { return index(i + (c & 1), j + ((c >> 1) & 1), k + ((c >> 2) & 1)); };
+        for (const auto& path : kPaths) mesh.tets.push_back({corner(0), corner(path[0]), corner(path[1]), corner(7)});
+      }
+  core::orient_tets_positively(mesh);
+  mesh.surface_faces = core::boundary_faces(mesh.tets);
+  return mesh;
+}
+
+}  // namespace viscera::testing

@@ -9,16 +9,25 @@
 namespace viscera::sim {
 
 SpatialHash::SpatialHash(double cell_size, std::size_t table_size)
-    : cell_size_(cell_size), inverse_cell_size_(1.0 / cell_size), table_(table_size) {
+    : cell_size_(cell_size),
+      inverse_cell_size_(1.0 / cell_size),
+      table_size_(table_size),
+      reduce_factor_(table_size > 0 ? ~std::uint64_t{0} / table_size + 1 : 0) {
   if (!(cell_size > 0.0)) throw core::UsageError("spatial hash cell size must be positive");
-  if (table_size == 0) throw core::UsageError("spatial hash needs at least one bucket");
+  if (table_size == 0 || table_size > 0xFFFFFFFFU) throw core::UsageError("spatial hash needs 1 to 2^32 - 1 buckets");
+}
+
+std::uint32_t SpatialHash::reduce(std::uint32_t x) const {
+  __extension__ typedef unsigned __int128 UInt128;
+  const std::uint64_t low_bits = reduce_factor_ * x;
+  return static_cast<std::uint32_t>((static_cast<UInt128>(low_bits) * table_size_) >> 64);
 }
 
 std::size_t SpatialHash::hash(std::int64_t i, std::int64_t j, std::int64_t k) const {
   // The primes of Teschner et al. 2003. Unsigned arithmetic wraps instead of overflowing.
-  const auto h = (static_cast<std::uint64_t>(i) * 73856093ULL) ^ (static_cast<std::uint64_t>(j) * 19349663ULL) ^
-                 (static_cast<std::uint64_t>(k) * 83492791ULL);
-  return static_cast<std::size_t>(h % table_.size());
+  const std::uint32_t h = (static_cast<std::uint32_t>(i) * 73856093U) ^ (static_cast<std::uint32_t>(j) * 19349663U) ^
+                          (static_cast<std::uint32_t>(k) * 83492791U);
+  return reduce(h);
 }
 
 std::int64_t SpatialHash::cell_of(double coordinate) const {
@@ -26,19 +35,52 @@ std::int64_t SpatialHash::cell_of(double coordinate) const {
 }
 
 std::vector<VertexInTet> SpatialHash::detect(std::span<const CollisionBodyView> bodies, bool self_collisions) {
-  ++stamp_;
-  // Pass 1: every vertex into the bucket of its cell.
-  last_tested_.resize(bodies.size());
+  // Without self-collisions, the vertices of a body matter only if another body has tets.
+  std::size_t bodies_with_tets = 0;
+  for (const auto& body : bodies) bodies_with_tets += body.tets.empty() ? 0 : 1;
+  const auto needs_hashing = [&](std::size_t b) {
+    return self_collisions || bodies_with_tets > (bodies[b].tets.empty() ? 0U : 1U);
+  };
+
+  // Cells of the vertices of bodies with tets, computed once: a tet's cell range is the range
+  // of its corners' cells, the same cells its bounding box covers.
+  first_cell_.assign(bodies.size() + 1, 0);
   for (std::size_t b = 0; b < bodies.size(); ++b) {
-    const auto& positions = bodies[b].positions;
-    last_tested_[b].assign(positions.size(), -1);
-    for (std::size_t v = 0; v < positions.size(); ++v) {
-      Bucket& bucket = table_[hash(cell_of(positions[v].x()), cell_of(positions[v].y()), cell_of(positions[v].z()))];
-      if (bucket.stamp != stamp_) {
-        bucket.stamp = stamp_;
-        bucket.vertices.clear();
+    first_cell_[b + 1] = first_cell_[b] + (bodies[b].tets.empty() ? 0 : bodies[b].positions.size());
+  }
+  cells_.resize(first_cell_.back());
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    if (bodies[b].tets.empty()) continue;
+    for (std::size_t v = 0; v < bodies[b].positions.size(); ++v) {
+      const auto& p = bodies[b].positions[v];
+      cells_[first_cell_[b] + v] = {static_cast<std::int32_t>(cell_of(p.x())), static_cast<std::int32_t>(cell_of(p.y())),
+                                    static_cast<std::int32_t>(cell_of(p.z()))};
+    }
+  }
+
+  // Pass 1: every vertex into the bucket of its cell, as a counting sort by bucket.
+  last_tested_.resize(bodies.size());
+  bucket_start_.assign(table_size_ + 1, 0);
+  vertex_bucket_.clear();
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    last_tested_[b].assign(bodies[b].positions.size(), -1);
+    if (!needs_hashing(b)) continue;
+    for (const auto& p : bodies[b].positions) {
+      const auto bucket = static_cast<std::uint32_t>(hash(cell_of(p.x()), cell_of(p.y()), cell_of(p.z())));
+      vertex_bucket_.push_back(bucket);
+      ++bucket_start_[bucket + 1];
+    }
+  }
+  for (std::size_t h = 0; h < table_size_; ++h) bucket_start_[h + 1] += bucket_start_[h];
+  entries_.resize(vertex_bucket_.size());
+  {
+    std::vector<std::uint32_t> fill(bucket_start_.begin(), bucket_start_.end() - 1);
+    std::size_t next = 0;
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+      if (!needs_hashing(b)) continue;
+      for (std::size_t v = 0; v < bodies[b].positions.size(); ++v) {
+        entries_[fill[vertex_bucket_[next++]]++] = {static_cast<int>(b), static_cast<int>(v)};
       }
-      bucket.vertices.push_back({static_cast<int>(b), static_cast<int>(v)});
     }
   }
 
@@ -72,12 +114,20 @@ std::vector<VertexInTet> SpatialHash::detect(std::span<const CollisionBodyView> 
       const core::Vec3 lo = a.cwiseMin(b).cwiseMin(c.cwiseMin(d));
       const core::Vec3 hi = a.cwiseMax(b).cwiseMax(c.cwiseMax(d));
       if (!may_hold_others(tb, lo, hi)) continue;
-      for (std::int64_t k = cell_of(lo.z()); k <= cell_of(hi.z()); ++k)
-        for (std::int64_t j = cell_of(lo.y()); j <= cell_of(hi.y()); ++j)
-          for (std::int64_t i = cell_of(lo.x()); i <= cell_of(hi.x()); ++i) {
-            const Bucket& bucket = table_[hash(i, j, k)];
-            if (bucket.stamp != stamp_) continue;
-            for (const auto& [vb, v] : bucket.vertices) {
+      const auto* cell = &cells_[first_cell_[tb]];
+      std::array<std::int32_t, 3> c_lo = cell[tet[0]], c_hi = cell[tet[0]];
+      for (int corner = 1; corner < 4; ++corner) {
+        for (int axis = 0; axis < 3; ++axis) {
+          c_lo[axis] = std::min(c_lo[axis], cell[tet[corner]][axis]);
+          c_hi[axis] = std::max(c_hi[axis], cell[tet[corner]][axis]);
+        }
+      }
+      for (std::int64_t k = c_lo[2]; k <= c_hi[2]; ++k)
+        for (std::int64_t j = c_lo[1]; j <= c_hi[1]; ++j)
+          for (std::int64_t i = c_lo[0]; i <= c_hi[0]; ++i) {
+            const std::size_t h = hash(i, j, k);
+            for (std::uint32_t e = bucket_start_[h]; e < bucket_start_[h + 1]; ++e) {
+              const auto [vb, v] = entries_[e];
               if (vb == static_cast<int>(tb) &&
                   (!self_collisions || v == tet[0] || v == tet[1] || v == tet[2] || v == tet[3])) {
                 continue;

@@ -1,0 +1,46 @@
+#include "simulator/physics/kismo_mass_spring.h"
+
+#include <cmath>
+
+namespace viscera::sim {
+
+std::array<double, 3> spring_coefficients_from_cubic(const std::array<double, 3>& c, double cross_section) {
+  return {c[0] * cross_section, c[1] * cross_section, c[2] * cross_section};
+}
+
+double add_cubic_spring_forces(std::span<const core::Vec3> x, const CubicSprings& springs, std::span<core::Vec3> f) {
+  double energy = 0.0;
+  for (std::size_t s = 0; s < springs.knots.size(); ++s) {
+    const auto [i, j] = springs.knots[s];
+    const core::Vec3 d = x[j] - x[i];
+    const double length = d.norm();
+    if (length <= 0.0) continue;
+    const double l0 = springs.rest_length[s];
+    const double e = (length - l0) / l0;
+    const auto& k = springs.coefficients[s];
+    const double magnitude = k[0] * e + k[1] * e * std::abs(e) + k[2] * e * e * e;
+    const core::Vec3 pull = (magnitude / length) * d;  // along the spring, towards each other when stretched
+    f[i] += pull;
+    f[j] -= pull;
+    const double a = std::abs(e);
+    energy += l0 * (k[0] * e * e / 2.0 + k[1] * a * a * a / 3.0 + k[2] * e * e * e * e / 4.0);
+  }
+  return energy;
+}
+
+void kismo_step(std::span<core::Vec3> x, std::span<core::Vec3> v, std::span<const core::Vec3> f,
+                const KnotParameters& knots, const core::Vec3& g, double h) {
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const core::Vec3 acceleration = (f[i] - knots.damping[i] * v[i]) / knots.mass[i] + g;
+    for (int axis = 0; axis < 3; ++axis) {
+      if (knots.bound[i][axis] == 0) {
+        v[i][axis] = 0.0;
+        continue;
+      }
+      v[i][axis] += h * acceleration[axis];  // eq. 2
+      x[i][axis] += h * v[i][axis];          // eq. 3, with the new velocity
+    }
+  }
+}
+
+}  // namespace viscera::sim

@@ -38,9 +38,31 @@ void World::step() {
       contacts_ = contact_->apply(bodies_);
       max_penetration_ = std::max(max_penetration_, contacts_.max_penetration);
     }
+    if (instrument_) {
+      // The instrument presses on the tissue with the opposite of the force it feels.
+      DeformableBody& body = bodies_[static_cast<std::size_t>(instrument_->body)];
+      instrument_->proxy.update(tool_tip_, instrument_->surface, body.positions());
+      if (instrument_->proxy.in_contact()) {
+        const auto& contact = instrument_->proxy.contact();
+        const auto& triangle = instrument_->surface.faces()[static_cast<std::size_t>(contact.triangle)];
+        for (const auto& [node, force] : distribute_to_triangle(triangle, contact.barycentric, -instrument_->proxy.force())) {
+          body.add_force(node, force);
+        }
+      }
+    }
     for (auto& body : bodies_) body.integrate(h);
   }
   ++steps_;
+}
+
+void World::attach_instrument(int body, double stiffness, const core::Vec3& tip) {
+  if (body < 0 || body >= static_cast<int>(bodies_.size())) {
+    throw core::UsageError("no body " + std::to_string(body) + " to attach the instrument to");
+  }
+  instrument_ = std::make_unique<Instrument>(Instrument{body, ProxySurface(bodies_[static_cast<std::size_t>(body)].surface_faces()),
+                                                        HapticProxy(stiffness)});
+  instrument_->proxy.reset(tip);
+  tool_tip_ = tip;
 }
 
 BodyEnergies World::energies() const {

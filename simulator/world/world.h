@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "simulator/collision/contact_response.h"
+#include "simulator/haptics/haptic_proxy.h"
 #include "simulator/physics/deformable_body.h"
 
 namespace viscera::sim {
@@ -35,6 +36,16 @@ class World {
   const std::vector<DeformableBody>& bodies() const { return bodies_; }
   std::vector<DeformableBody>& bodies() { return bodies_; }
 
+  /// Puts a haptic instrument into the world: one proxy point on the surface of body `body`
+  /// with a proxy–tip spring of `stiffness` N/m (seed 000 §8.2). The tip starts at `tip`.
+  /// Throws core::UsageError for a body index out of range.
+  void attach_instrument(int body, double stiffness, const core::Vec3& tip);
+  /// Moves the instrument tip (m); takes effect at the next step.
+  void set_instrument_tip(const core::Vec3& tip) { tool_tip_ = tip; }
+  /// Force in N that the tissue puts on the instrument (zero without contact or instrument).
+  core::Vec3 instrument_force() const { return instrument_ ? instrument_->proxy.force() : core::Vec3::Zero(); }
+  bool instrument_in_contact() const { return instrument_ && instrument_->proxy.in_contact(); }
+
   /// Contacts of the last sub-step.
   const ContactStatistics& contacts() const { return contacts_; }
   /// Largest penetration in m seen in any sub-step so far.
@@ -54,6 +65,13 @@ class World {
   int substeps_ = 1;
   long long steps_ = 0;
   std::unique_ptr<ContactResponse> contact_;
+  struct Instrument {
+    int body;
+    ProxySurface surface;
+    HapticProxy proxy;
+  };
+  std::unique_ptr<Instrument> instrument_;
+  core::Vec3 tool_tip_ = core::Vec3::Zero();
   ContactStatistics contacts_;
   double max_penetration_ = 0.0;
 };

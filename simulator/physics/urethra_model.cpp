@@ -1,0 +1,130 @@
+#include "simulator/physics/urethra_model.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "core/error.h"
+
+namespace viscera::sim {
+
+UrethraModel::UrethraModel(const UrethraParameters& parameters) : p_(parameters) {
+  if (p_.basic_sections < 2 || p_.points_per_section < 3) throw core::UsageError("urethra needs ≥ 2 sections of ≥ 3 points");
+  if (!(p_.radius > 0.0) || !(p_.endoscope_radius >= p_.radius) || !(p_.length > 0.0) || !(p_.transition_length > 0.0)) {
+    throw core::UsageError("urethra radii, length and transition must be positive, endoscope ≥ lumen");
+  }
+  for (int j = 0; j < p_.basic_sections; ++j) section_z_.push_back(p_.length * j / (p_.basic_sections - 1));
+}
+
+core::Vec3 UrethraModel::centre_line(double z) const { return {0.0, p_.curvature * z * z, z}; }
+
+core::Vec3 UrethraModel::tangent(double z) const { return core::Vec3(0.0, 2.0 * p_.curvature * z, 1.0).normalized(); }
+
+double UrethraModel::widened_radius(double ahead) const {
+  if (ahead <= 0.0) return p_.endoscope_radius;
+  if (ahead >= p_.transition_length) return p_.radius;
+  // Half a cosine wave: tangent-continuous with the endoscope at the tip and with the
+  // undeformed lumen at the end of the moving deformation (seed 002 §3.2).
+  return p_.radius + (p_.endoscope_radius - p_.radius) * 0.5 * (1.0 + std::cos(std::numbers::pi * ahead / p_.transition_length));
+}
+
+double UrethraModel::insertion_fraction(double tip_z) const {
+  return std::clamp((tip_z - p_.free_length) / (p_.length - p_.free_length), 0.0, 1.0);
+}
+
+std::vector<UrethraSection> UrethraModel::lattice(double tip_z) const {
+  std::vector<double> zs = section_z_;
+  constexpr int kMovingSections = 10;  // seed 002: ten subsections
+  for (int k = 1; k <= kMovingSections; ++k) {
+    const double z = tip_z + p_.transition_length * k / kMovingSections;
+    if (z > 0.0 && z < p_.length) zs.push_back(z);
+  }
+  std::sort(zs.begin(), zs.end());
+  std::vector<UrethraSection> sections;
+  for (const double z : zs) {
+    UrethraSection s;
+    s.centre = centre_line(z);
+    s.normal = tangent(z);
+    s.radius = widened_radius(z - tip_z);
+    const core::Vec3 u = core::Vec3::UnitX();
+    const core::Vec3 v = s.normal.cross(u);
+    for (int i = 0; i < p_.points_per_section; ++i) {
+      const double angle = 2.0 * std::numbers::pi * i / p_.points_per_section;
+      s.points.push_back(s.centre + s.radius * (std::cos(angle) * u + std::sin(angle) * v));
+    }
+    sections.push_back(std::move(s));
+  }
+  return sections;
+}
+
+UrethraFeedback UrethraModel::feedback(const EndoscopeState& e) const {
+  UrethraFeedback out;
+  const double tip_z = e.tip.z();
+  const core::Vec3 axis(std::sin(e.yaw) * std::cos(e.pitch), std::sin(e.pitch), std::cos(e.yaw) * std::cos(e.pitch));
+  const int springs = p_.points_per_section - 1;
+
+  // Wall springs of the basic sections: stretched to the endoscope behind the tip, partly
+  // within the moving deformation ahead of it. Their sum presses on the shaft (N); ahead of the
+  // tip the sloping wall also pushes back along the axis (F3).
+  for (const double z : section_z_) {
+    const double ahead = z - tip_z;
+    const double stretch = widened_radius(ahead) - p_.radius;
+    if (stretch <= 0.0) continue;
+    const double spring_force = springs * p_.spring_stiffness * stretch;
+    out.normal_force += spring_force;
+    if (ahead > 0.0) {
+      const double slope = (p_.endoscope_radius - p_.radius) * 0.5 * std::numbers::pi / p_.transition_length *
+                           std::sin(std::numbers::pi * ahead / p_.transition_length);
+      out.wall_resistance -= spring_force * slope / std::sqrt(1.0 + slope * slope);
+    }
+  }
+
+  // Friction (eq. 7, 8, 12, 13): the tissue slides past the shaft axially and around it.
+  const double axial_speed = e.velocity.dot(axis);
+  const double around_speed = e.spin_rate * p_.endoscope_radius;  // V⊥ = ω r
+  const double speed = std::sqrt(e.velocity.squaredNorm() + around_speed * around_speed);
+  if (speed > 1e-12) {
+    out.coulomb_friction = -p_.friction * out.normal_force * axial_speed / speed;
+    out.torque_z = -p_.friction * out.normal_force * p_.endoscope_radius * around_speed / speed;
+  }
+  out.viscous_friction = -p_.viscous_friction * axial_speed;
+  out.torque_z -= p_.viscous_torque_friction * e.spin_rate;
+
+  const double along_axis = out.coulomb_friction + out.viscous_friction + out.wall_resistance;  // eq. 6
+  out.force = along_axis * axis;
+  out.force.x() = 0.0;  // only the y–z projections are fed to the device (seed 002 §5.1)
+
+  // Tx: a rotational spring at the tip against leaving the centre line's direction, stiffening
+  // with insertion, plus the bladder spring on the telescopic rod (eq. 9–10). Ty likewise for
+  // turning out of the plane of symmetry.
+  const double tip_stiffness = p_.tip_rotational_stiffness * insertion_fraction(tip_z);
+  out.torque_x = -tip_stiffness * (e.pitch - std::atan(2.0 * p_.curvature * tip_z));
+  const core::Vec3 bladder = centre_line(p_.length);
+  const double run = tip_z - bladder.z();
+  if (std::abs(run) > 1e-12) {
+    const double reference = std::atan((p_.curvature * tip_z * tip_z - bladder.y()) / run);  // eq. 9
+    const double actual = std::atan((e.tip.y() - bladder.y()) / run);                     // eq. 10
+    out.torque_x -= p_.bladder_rotational_stiffness * (actual - reference);
+  }
+  out.torque_y = -tip_stiffness * e.yaw;
+
+  // Bars and warnings (seed 002 §5.2, Fig. 11).
+  out.bar_force = std::abs(along_axis) / p_.break_force;
+  out.bar_tx = std::abs(out.torque_x) / p_.break_torque;
+  out.bar_ty = std::abs(out.torque_y) / p_.break_torque;
+  out.bar_tz = std::abs(out.torque_z) / p_.break_torque;
+  const auto warn = [&](double bar, const std::string& what) {
+    if (bar >= 1.0) {
+      out.warnings.push_back(what + " exceeds the tissue-break limit");
+    } else if (bar >= p_.warning_fraction) {
+      out.warnings.push_back(what + " near the tissue-break limit");
+    }
+  };
+  warn(out.bar_force, "axial force");
+  warn(out.bar_tx, "torque Tx");
+  warn(out.bar_ty, "torque Ty");
+  warn(out.bar_tz, "torque Tz");
+  return out;
+}
+
+}  // namespace viscera::sim

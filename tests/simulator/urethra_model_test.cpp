@@ -1,0 +1,110 @@
+#include "simulator/physics/urethra_model.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/error.h"
+
+namespace viscera::sim {
+namespace {
+
+/// The endoscope on the centre line at z, pointing along it, moving with `speed` m/s.
+EndoscopeState on_centre_line(const UrethraModel& model, double z, double speed = 0.0, double spin = 0.0) {
+  EndoscopeState e;
+  e.tip = model.centre_line(z);
+  e.pitch = std::atan(2.0 * model.parameters().curvature * z);
+  const core::Vec3 axis(0.0, std::sin(e.pitch), std::cos(e.pitch));
+  e.velocity = speed * axis;
+  e.spin_rate = spin;
+  return e;
+}
+
+TEST(UrethraModel, lattice_sits_on_the_parabola_and_widens_to_the_endoscope_behind_the_tip) {
+  const UrethraModel model;
+  const auto& p = model.parameters();
+  const auto sections = model.lattice(0.06);
+  EXPECT_EQ(sections.size(), static_cast<std::size_t>(p.basic_sections + 10));
+  for (const auto& s : sections) {
+    EXPECT_NEAR(s.centre.y(), p.curvature * s.centre.z() * s.centre.z(), 1e-15);
+    ASSERT_EQ(s.points.size(), static_cast<std::size_t>(p.points_per_section));
+    for (const auto& q : s.points) {
+      EXPECT_NEAR((q - s.centre).norm(), s.radius, 1e-15);
+      EXPECT_NEAR((q - s.centre).dot(s.normal), 0.0, 1e-15);  // sections normal to the centre line
+    }
+    if (s.centre.z() <= 0.06) {
+      EXPECT_EQ(s.radius, p.endoscope_radius);
+    }
+    if (s.centre.z() >= 0.06 + p.transition_length) {
+      EXPECT_EQ(s.radius, p.radius);
+    }
+  }
+  // The moving deformation narrows monotonically ahead of the tip.
+  double previous = p.endoscope_radius;
+  for (const auto& s : sections) {
+    if (s.centre.z() <= 0.06) continue;
+    EXPECT_LE(s.radius, previous);
+    previous = s.radius;
+  }
+}
+
+TEST(UrethraModel, coulomb_and_viscous_friction_oppose_insertion_and_grow_with_depth) {
+  const UrethraModel model;
+  const auto& p = model.parameters();
+  const UrethraFeedback shallow = model.feedback(on_centre_line(model, 0.03, 0.01));
+  const UrethraFeedback deep = model.feedback(on_centre_line(model, 0.12, 0.01));
+  EXPECT_GT(deep.normal_force, shallow.normal_force);
+  // Purely axial sliding: |F1| = μ N and F2 = −b_V V.
+  EXPECT_NEAR(deep.coulomb_friction, -p.friction * deep.normal_force, 1e-12);
+  EXPECT_NEAR(deep.viscous_friction, -p.viscous_friction * 0.01, 1e-15);
+  EXPECT_LT(deep.wall_resistance, 0.0);  // the narrowing wall ahead pushes back
+  // Withdrawing reverses the friction.
+  EXPECT_NEAR(model.feedback(on_centre_line(model, 0.12, -0.01)).coulomb_friction, -deep.coulomb_friction, 1e-12);
+  // Along the axis: F_re has no x component and points back along the shaft.
+  EXPECT_EQ(deep.force.x(), 0.0);
+  EXPECT_LT(deep.force.z(), 0.0);
+}
+
+TEST(UrethraModel, torques_vanish_on_the_centre_line_and_restore_deviations) {
+  const UrethraModel model;
+  const UrethraFeedback centred = model.feedback(on_centre_line(model, 0.1));
+  EXPECT_NEAR(centred.torque_x, 0.0, 1e-15);
+  EXPECT_NEAR(centred.torque_y, 0.0, 1e-15);
+  EXPECT_NEAR(centred.torque_z, 0.0, 1e-15);
+  EndoscopeState raised = on_centre_line(model, 0.1);
+  raised.tip.y() += 0.005;  // tip lifted off the centre line: the bladder spring pulls it back
+  raised.pitch += 0.1;      // and tilted up: the tip spring turns it back
+  EXPECT_LT(model.feedback(raised).torque_x, 0.0);
+  EndoscopeState turned = on_centre_line(model, 0.1);
+  turned.yaw = 0.2;
+  EXPECT_LT(model.feedback(turned).torque_y, 0.0);
+  // Outside the body (free part) the tip springs are slack.
+  EndoscopeState outside = on_centre_line(model, 0.02);
+  outside.yaw = 0.2;
+  EXPECT_EQ(model.feedback(outside).torque_y, 0.0);
+}
+
+TEST(UrethraModel, spinning_the_scope_meets_coulomb_and_viscous_torque) {
+  const UrethraModel model;
+  const auto& p = model.parameters();
+  const UrethraFeedback spin = model.feedback(on_centre_line(model, 0.1, 0.0, 2.0));
+  // Pure rotation: T1 = −μ N r, T2 = −b_ω ω (eq. 12–13).
+  EXPECT_NEAR(spin.torque_z, -p.friction * spin.normal_force * p.endoscope_radius - p.viscous_torque_friction * 2.0, 1e-15);
+}
+
+TEST(UrethraModel, warns_near_and_beyond_the_tissue_break_limits) {
+  UrethraParameters p;
+  p.break_force = 1.0;
+  const UrethraModel model(p);
+  const UrethraFeedback gentle = model.feedback(on_centre_line(model, 0.03, 0.001));
+  EXPECT_LT(gentle.bar_force, p.warning_fraction);
+  EXPECT_TRUE(gentle.warnings.empty());
+  const UrethraFeedback hard = model.feedback(on_centre_line(model, 0.15, 0.5));
+  EXPECT_GE(hard.bar_force, 1.0);
+  ASSERT_FALSE(hard.warnings.empty());
+  EXPECT_NE(hard.warnings.front().find("axial force exceeds the tissue-break limit"), std::string::npos);
+  EXPECT_THROW(UrethraModel(UrethraParameters{.radius = -1.0}), core::UsageError);
+}
+
+}  // namespace
+}  // namespace viscera::sim

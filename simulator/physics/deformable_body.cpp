@@ -11,8 +11,9 @@
 
 namespace viscera::sim {
 
-DeformableBody::DeformableBody(std::string name, const core::TetMesh& mesh, const core::Material& material)
-    : name_(std::move(name)), rest_(mesh.nodes), positions_(mesh.nodes), previous_(mesh.nodes) {
+DeformableBody::DeformableBody(std::string name, const core::TetMesh& mesh, const core::Material& material,
+                               BodyModel model)
+    : name_(std::move(name)), model_(model), rest_(mesh.nodes), positions_(mesh.nodes), previous_(mesh.nodes) {
   core::check_tet_mesh(mesh, "body " + name_);
   const std::size_t n = mesh.nodes.size();
   mass_ = mesh.node_mass.empty() ? core::lumped_node_masses(mesh, material.density) : mesh.node_mass;
@@ -45,6 +46,7 @@ DeformableBody::DeformableBody(std::string name, const core::TetMesh& mesh, cons
     distance_.stiffness.push_back(material.distance_stiffness * share);
     distance_.damping.push_back(material.distance_damping * share);
   }
+  if (model_ == BodyModel::KismoMassSpring) build_springs(material, volume_share);
   surface_faces_ = mesh.surface_faces.empty() ? core::boundary_faces(mesh.tets) : mesh.surface_faces;
   if (material.area_stiffness > 0.0) {
     for (const auto& f : surface_faces_) {
@@ -57,8 +59,38 @@ DeformableBody::DeformableBody(std::string name, const core::TetMesh& mesh, cons
   }
 }
 
+void DeformableBody::build_springs(const core::Material& material, const std::map<std::array<int, 2>, double>& volume_share) {
+  const std::size_t n = positions_.size();
+  knots_.mass = mass_;
+  knots_.damping.assign(n, 0.0);
+  knots_.bound.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint8_t moves = inverse_mass_[i] == 0.0 ? 0 : 1;
+    knots_.bound[i] = {moves, moves, moves};
+  }
+  const bool has_cubic = material.stress_strain && material.stress_strain->cubic.size() == 4;
+  for (const auto& [edge, share] : volume_share) {
+    const double l0 = (rest_[edge[1]] - rest_[edge[0]]).norm();
+    const double cross_section = share / l0;
+    springs_.knots.push_back(edge);
+    springs_.rest_length.push_back(l0);
+    springs_.coefficients.push_back(
+        has_cubic ? spring_coefficients_from_cubic({material.stress_strain->cubic[1], material.stress_strain->cubic[2],
+                                                    material.stress_strain->cubic[3]},
+                                                   cross_section)
+                  : std::array<double, 3>{material.distance_stiffness * cross_section, 0.0, 0.0});
+    // The damping element of each spring; the knots' own damping d_i (eq. 1) stays zero, as
+    // damping absolute velocity would also brake slow, rigid motion such as sagging.
+    springs_.damping.push_back(material.distance_damping * share / (l0 * l0));
+  }
+}
+
 double DeformableBody::compute_forces(const core::Vec3& gravity, double h) {
   for (std::size_t i = 0; i < positions_.size(); ++i) forces_[i] = mass_[i] * gravity;
+  if (model_ == BodyModel::KismoMassSpring) {
+    add_spring_damping_forces(positions_, velocities_, springs_, forces_);
+    return add_cubic_spring_forces(positions_, springs_, forces_);
+  }
   verlet_velocities(positions_, previous_, h, velocities_);
   double energy = add_distance_forces(positions_, velocities_, distance_, forces_);
   energy += add_area_forces(positions_, area_, forces_);
@@ -67,7 +99,12 @@ double DeformableBody::compute_forces(const core::Vec3& gravity, double h) {
 }
 
 void DeformableBody::integrate(double h) {
-  verlet_step(positions_, previous_, forces_, inverse_mass_, h);
+  if (model_ == BodyModel::KismoMassSpring) {
+    previous_ = positions_;
+    kismo_step(positions_, velocities_, forces_, knots_, core::Vec3::Zero(), h);  // gravity is in the forces
+  } else {
+    verlet_step(positions_, previous_, forces_, inverse_mass_, h);
+  }
   for (std::size_t i = 0; i < positions_.size(); ++i) {
     if (!positions_[i].allFinite()) {
       throw core::Error("simulation became unstable (non-finite position)", {"body " + name_, "", "node " + std::to_string(i)});
@@ -78,9 +115,14 @@ void DeformableBody::integrate(double h) {
 BodyEnergies DeformableBody::energies(const core::Vec3& gravity, double h) const {
   BodyEnergies e;
   for (std::size_t i = 0; i < positions_.size(); ++i) {
-    const core::Vec3 v = (positions_[i] - previous_[i]) / h;
+    const core::Vec3 v = model_ == BodyModel::KismoMassSpring ? velocities_[i] : core::Vec3((positions_[i] - previous_[i]) / h);
     e.kinetic += 0.5 * mass_[i] * v.squaredNorm();
     e.gravitational -= mass_[i] * gravity.dot(positions_[i] - rest_[i]);
+  }
+  if (model_ == BodyModel::KismoMassSpring) {
+    std::vector<core::Vec3> scratch(positions_.size(), core::Vec3::Zero());
+    e.elastic = add_cubic_spring_forces(positions_, springs_, scratch);
+    return e;
   }
   e.elastic = distance_energy(positions_, distance_) + area_energy(positions_, area_) + volume_energy(positions_, volume_);
   return e;
@@ -119,6 +161,19 @@ double DeformableBody::stable_time_step(double contact_stiffness) const {
     for (int e = 0; e < 3; ++e) longest = std::max(longest, (rest_[tri[e]] - rest_[tri[(e + 1) % 3]]).norm());
     const double g = 0.5 * longest;
     for (const int i : tri) stiffness[i] += area_.stiffness[t] / (a0 * a0) * g * 3.0 * g;
+  }
+  if (model_ == BodyModel::KismoMassSpring) {
+    // Springs replace the energies: a linearised stiffness k1/l0 per spring, and knot damping.
+    std::fill(stiffness.begin(), stiffness.end(), 0.0);
+    std::fill(damping.begin(), damping.end(), 0.0);
+    for (std::size_t s = 0; s < springs_.knots.size(); ++s) {
+      const auto& k = springs_.coefficients[s];
+      const double linear = 2.0 * (std::abs(k[0]) + std::abs(k[1]) + std::abs(k[2])) / springs_.rest_length[s];
+      for (const int i : springs_.knots[s]) stiffness[i] += linear;
+    }
+    for (std::size_t s = 0; s < springs_.knots.size(); ++s) {
+      for (const int i : springs_.knots[s]) damping[i] += 2.0 * springs_.damping[s];
+    }
   }
   if (contact_stiffness > 0.0) {
     std::vector<char> on_surface(n, 0);

@@ -2,11 +2,13 @@
 /// A tetrahedral body simulated with the Teschner energies (seed 000 §3). The body gathers its
 /// arrays and rest data once per topology; the energies and the integrator are plain functions.
 
+#include <map>
 #include <string>
 #include <vector>
 
 #include "core/mesh/tet_mesh.h"
 #include "core/scenario/material.h"
+#include "simulator/physics/kismo_mass_spring.h"
 #include "simulator/physics/teschner_energies.h"
 
 namespace viscera::sim {
@@ -17,6 +19,12 @@ struct BodyEnergies {
   double elastic = 0.0;        ///< distance + area + volume terms
   double gravitational = 0.0;  ///< relative to the rest configuration
   double total() const { return kinetic + elastic + gravitational; }
+};
+
+/// How a body's internal forces and integration work.
+enum class BodyModel {
+  Teschner,        ///< distance, area and volume energies with Verlet (seed 000 §3)
+  KismoMassSpring  ///< cubic springs on the mesh edges with per-knot damping (seed 001 §3.2)
 };
 
 /// Rest data, state and parameters of one deformable tet body.
@@ -31,7 +39,16 @@ class DeformableBody {
   /// Builds rest data from `mesh` (masses from mesh.node_mass, or lumped from the density;
   /// fixed nodes from mesh.fixed). Throws core::InputError naming `name` for a mesh with
   /// degenerate tets or non-positive masses.
-  DeformableBody(std::string name, const core::TetMesh& mesh, const core::Material& material);
+  /// KisMo nets use the same mesh edges as springs: with a stress-strain cubic σ = c1 ε + c2 ε²
+  /// + c3 ε³ in the material, each spring gets k_n = c_n × its cross-section (volume share / rest
+  /// length); without one, k1 = distance_stiffness × the same cross-section, which matches the
+  /// Teschner distance term for small strains. Each spring has a damping element of
+  /// distance_damping × share / l0², like the Teschner distance damping.
+  DeformableBody(std::string name, const core::TetMesh& mesh, const core::Material& material,
+                 BodyModel model = BodyModel::Teschner);
+
+  BodyModel model() const { return model_; }
+  const CubicSprings& springs() const { return springs_; }
 
   const std::string& name() const { return name_; }
   std::size_t node_count() const { return positions_.size(); }
@@ -76,8 +93,13 @@ class DeformableBody {
   core::Vec3 rest_centre_of_mass() const;
 
  private:
+  void build_springs(const core::Material& material, const std::map<std::array<int, 2>, double>& volume_share);
+
   std::string name_;
+  BodyModel model_;
   std::vector<core::Vec3> rest_, positions_, previous_, velocities_, forces_;
+  CubicSprings springs_;
+  KnotParameters knots_;
   std::vector<double> mass_, inverse_mass_;
   std::vector<core::Triangle> surface_faces_;
   DistanceTerms distance_;

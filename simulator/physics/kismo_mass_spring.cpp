@@ -28,6 +28,20 @@ double add_cubic_spring_forces(std::span<const core::Vec3> x, const CubicSprings
   return energy;
 }
 
+void add_spring_damping_forces(std::span<const core::Vec3> x, std::span<const core::Vec3> v, const CubicSprings& springs,
+                               std::span<core::Vec3> f) {
+  for (std::size_t s = 0; s < springs.damping.size(); ++s) {
+    const auto [i, j] = springs.knots[s];
+    const core::Vec3 d = x[j] - x[i];
+    const double length = d.norm();
+    if (length <= 0.0) continue;
+    const core::Vec3 unit = d / length;
+    const core::Vec3 force = (springs.damping[s] * (v[j] - v[i]).dot(unit)) * unit;
+    f[i] += force;
+    f[j] -= force;
+  }
+}
+
 void kismo_step(std::span<core::Vec3> x, std::span<core::Vec3> v, std::span<const core::Vec3> f,
                 const KnotParameters& knots, const core::Vec3& g, double h) {
   for (std::size_t i = 0; i < x.size(); ++i) {

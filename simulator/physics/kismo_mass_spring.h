@@ -22,6 +22,7 @@ struct CubicSprings {
   std::vector<std::array<int, 2>> knots;
   std::vector<double> rest_length;               ///< l0 in m
   std::vector<std::array<double, 3>> coefficients;  ///< k1, k2, k3 in N
+  std::vector<double> damping;  ///< N·s/m of each spring's damping element, or empty for none
 };
 
 /// Spring coefficients from a stress-strain cubic σ(ε) = c1 ε + c2 ε² + c3 ε³ (Pa, seed 001
@@ -32,6 +33,11 @@ std::array<double, 3> spring_coefficients_from_cubic(const std::array<double, 3>
 /// E = l0 (k1 ε²/2 + k2 |ε|³/3 + k3 ε⁴/4) per spring.
 double add_cubic_spring_forces(std::span<const core::Vec3> positions, const CubicSprings& springs,
                                std::span<core::Vec3> forces);
+
+/// Adds the forces of the springs' damping elements (seed 001: "virtual springs and damping
+/// elements"): −c (v_j − v_i)·d̂ d̂ on j and the opposite on i, with velocities in m/s.
+void add_spring_damping_forces(std::span<const core::Vec3> positions, std::span<const core::Vec3> velocities,
+                               const CubicSprings& springs, std::span<core::Vec3> forces);
 
 /// Per-knot parameters of a net.
 struct KnotParameters {

@@ -12,7 +12,7 @@ World::World(const core::Scenario& scenario)
     : gravity_(scenario.session.gravity), time_step_(scenario.session.time_step) {
   if (!(time_step_ > 0.0)) throw core::InputError("session time step must be positive", {"", "/scenario/session/time_step", ""});
   for (const auto& object : scenario.objects) {
-    if (object.body_kind != core::BodyKind::TetMesh) continue;
+    if (object.body_kind != core::BodyKind::TetMesh && object.body_kind != core::BodyKind::MassSpring) continue;
     core::Material material;
     if (!object.material.empty()) {
       const auto it = scenario.materials.find(object.material);
@@ -21,7 +21,8 @@ World::World(const core::Scenario& scenario)
       }
       material = it->second;
     }
-    bodies_.emplace_back(object.id, object.body, material);
+    bodies_.emplace_back(object.id, object.body, material,
+                         object.body_kind == core::BodyKind::MassSpring ? BodyModel::KismoMassSpring : BodyModel::Teschner);
   }
   const double contact_stiffness = bodies_.size() > 1 ? scenario.session.contact_stiffness : 0.0;
   if (contact_stiffness > 0.0) contact_ = std::make_unique<ContactResponse>(bodies_, contact_stiffness);

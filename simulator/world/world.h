@@ -18,7 +18,8 @@ namespace viscera::sim {
 /// Bodies, gravity and the clock of one simulation.
 class World {
  public:
-  /// Builds a body for every object whose body kind is a tet mesh, with its material (or the
+  /// Builds a body for every object whose body kind is a tet mesh (Teschner energies) or a
+  /// mass-spring net (KisMo springs on the mesh edges), with its material (or the
   /// default Material when it names none). The physics step is scenario.session.time_step,
   /// split into equal sub-steps when a body needs a smaller step to stay stable. With two or
   /// more bodies, contacts between them get penalty forces of scenario.session.contact_stiffness.

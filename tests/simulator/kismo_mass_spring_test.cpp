@@ -10,7 +10,7 @@ namespace viscera::sim {
 namespace {
 
 TEST(KismoMassSpring, cubic_spring_forces_are_the_negative_energy_gradient) {
-  CubicSprings springs{{{0, 1}, {1, 2}, {0, 2}}, {0.01, 0.012, 0.015}, {{{2.0, 30.0, 400.0}}, {{1.0, 0.0, 50.0}}, {{3.0, -5.0, 0.0}}}};
+  CubicSprings springs{{{0, 1}, {1, 2}, {0, 2}}, {0.01, 0.012, 0.015}, {{{2.0, 30.0, 400.0}}, {{1.0, 0.0, 50.0}}, {{3.0, -5.0, 0.0}}}, {}};
   std::vector<core::Vec3> x = {{0, 0, 0}, {0.0125, 0.001, 0.0}, {0.003, 0.009, 0.002}};
   std::vector<core::Vec3> f(3, core::Vec3::Zero());
   add_cubic_spring_forces(x, springs, f);
@@ -30,7 +30,7 @@ TEST(KismoMassSpring, cubic_spring_forces_are_the_negative_energy_gradient) {
 TEST(KismoMassSpring, hanging_knot_comes_to_rest_at_the_linear_extension_mg_over_k) {
   // A 10 g knot hanging from a held knot on a linear 5 N spring of 2 cm rest length:
   // k = k1 / l0 = 250 N/m, so the static extension is m g / k = 0.392 mm.
-  CubicSprings spring{{{0, 1}}, {0.02}, {{{5.0, 0.0, 0.0}}}};
+  CubicSprings spring{{{0, 1}}, {0.02}, {{{5.0, 0.0, 0.0}}}, {}};
   std::vector<core::Vec3> x = {{0, 0, 0}, {0, 0, -0.02}}, v(2, core::Vec3::Zero());
   KnotParameters knots{{1.0, 0.01}, {0.0, 0.2}, {{{0, 0, 0}}, {{1, 1, 1}}}};
   const core::Vec3 g(0, 0, -9.81);
@@ -46,7 +46,7 @@ TEST(KismoMassSpring, hanging_knot_comes_to_rest_at_the_linear_extension_mg_over
 
 TEST(KismoMassSpring, undamped_linear_spring_oscillates_with_the_analytic_period) {
   // m = 0.01 kg on k = 250 N/m: ω = sqrt(k/m) = 158.1 rad/s, T = 39.74 ms.
-  CubicSprings spring{{{0, 1}}, {0.02}, {{{5.0, 0.0, 0.0}}}};
+  CubicSprings spring{{{0, 1}}, {0.02}, {{{5.0, 0.0, 0.0}}}, {}};
   std::vector<core::Vec3> x = {{0, 0, 0}, {0.021, 0, 0}}, v(2, core::Vec3::Zero());
   KnotParameters knots{{1.0, 0.01}, {0.0, 0.0}, {{{0, 0, 0}}, {{1, 1, 1}}}};
   const double h = 1e-5;

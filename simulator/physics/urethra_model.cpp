@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/curves/catmull_rom.h"
 #include "core/error.h"
 
 namespace viscera::sim {
@@ -55,6 +56,52 @@ std::vector<UrethraSection> UrethraModel::lattice(double tip_z) const {
     sections.push_back(std::move(s));
   }
   return sections;
+}
+
+core::SurfaceMesh UrethraModel::surface(double tip_z, int around, int along) const {
+  if (around < 1 || along < 1) throw core::UsageError("urethra surface needs at least one sample per segment");
+  const auto sections = lattice(tip_z);
+  // Rings: each section's points interpolated around the lumen.
+  std::vector<std::vector<core::Vec3>> rings;
+  for (const auto& section : sections) {
+    const core::CatmullRomSpline ring(section.points, core::KnotSpacing::ChordLength, true);
+    std::vector<core::Vec3> samples;
+    for (int s = 0; s < ring.segments(); ++s)
+      for (int k = 0; k < around; ++k) samples.push_back(ring.evaluate(s, static_cast<double>(k) / around));
+    rings.push_back(std::move(samples));
+  }
+  // Along the tube: one open curve per ring position through the successive rings.
+  const std::size_t columns = rings.front().size();
+  std::vector<std::vector<core::Vec3>> rows;  // rows[r][c]
+  for (std::size_t c = 0; c < columns; ++c) {
+    std::vector<core::Vec3> through;
+    for (const auto& r : rings) through.push_back(r[c]);
+    const core::CatmullRomSpline line(through, core::KnotSpacing::ChordLength, false);
+    std::size_t r = 0;
+    for (int s = 0; s < line.segments(); ++s) {
+      for (int k = 0; k < along || (s == line.segments() - 1 && k == along); ++k, ++r) {
+        if (rows.size() <= r) rows.emplace_back(columns);
+        rows[r][c] = line.evaluate(s, static_cast<double>(k) / along);
+      }
+    }
+  }
+  core::SurfaceMesh mesh;
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    for (std::size_t c = 0; c < columns; ++c) {
+      mesh.vertices.push_back(rows[r][c]);
+      mesh.uvs.emplace_back(static_cast<double>(c) / columns, static_cast<double>(r) / (rows.size() - 1));
+    }
+  }
+  const auto index = [columns](std::size_t r, std::size_t c) { return static_cast<int>(r * columns + c % columns); };
+  for (std::size_t r = 0; r + 1 < rows.size(); ++r) {
+    for (std::size_t c = 0; c < columns; ++c) {
+      // Ring points run counter-clockwise about +z, rows run along +z: this winding faces out.
+      mesh.triangles.push_back({index(r, c), index(r, c + 1), index(r + 1, c + 1)});
+      mesh.triangles.push_back({index(r, c), index(r + 1, c + 1), index(r + 1, c)});
+    }
+  }
+  core::compute_vertex_normals(mesh);
+  return mesh;
 }
 
 UrethraFeedback UrethraModel::feedback(const EndoscopeState& e) const {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/math_types.h"
+#include "core/mesh/surface_mesh.h"
 
 namespace viscera::sim {
 
@@ -82,6 +83,12 @@ class UrethraModel {
   /// with a sinusoidal radius profile from the endoscope's radius to the urethra's (seed 002
   /// §3.2). Sorted by z.
   std::vector<UrethraSection> lattice(double tip_z) const;
+
+  /// The urethra wall for a tip at `tip_z`: the lattice of lattice(tip_z) interpolated by
+  /// piecewise Bézier curves with chord-length Catmull-Rom control points, closed around each
+  /// section and open along the tube (seed 002 §3.1), sampled `around` and `along` times per
+  /// segment. An open tube with UVs (u around, v along) and outward normals.
+  core::SurfaceMesh surface(double tip_z, int around = 4, int along = 4) const;
 
   /// Forces and torques for the endoscope `state`.
   UrethraFeedback feedback(const EndoscopeState& state) const;

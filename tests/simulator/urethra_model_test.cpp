@@ -108,3 +108,30 @@ TEST(UrethraModel, warns_near_and_beyond_the_tissue_break_limits) {
 
 }  // namespace
 }  // namespace viscera::sim
+
+namespace viscera::sim {
+namespace {
+
+TEST(UrethraModel, bezier_surface_passes_through_the_lattice_and_faces_outward) {
+  const UrethraModel model;
+  const double tip = 0.06;
+  const auto sections = model.lattice(tip);
+  const core::SurfaceMesh wall = model.surface(tip, 3, 2);
+  const std::size_t columns = static_cast<std::size_t>(model.parameters().points_per_section) * 3;
+  // Row 2·s, column 3·i is lattice point i of section s.
+  for (std::size_t s = 0; s < sections.size(); ++s)
+    for (std::size_t i = 0; i < sections[s].points.size(); ++i) {
+      EXPECT_TRUE(wall.vertices[(2 * s) * columns + 3 * i].isApprox(sections[s].points[i], 1e-12)) << s << " " << i;
+    }
+  // Outward: normals point away from the centre line, and each vertex lies near its section's
+  // radius (the interpolation bulges only slightly between lattice points).
+  for (std::size_t v = 0; v < wall.vertices.size(); v += 7) {
+    const core::Vec3& p = wall.vertices[v];
+    const core::Vec3 radial = p - model.centre_line(p.z());
+    EXPECT_GT(wall.normals[v].dot(radial), 0.0) << v;
+  }
+  EXPECT_EQ(wall.triangles.size(), 2 * columns * (2 * (sections.size() - 1)));
+}
+
+}  // namespace
+}  // namespace viscera::sim

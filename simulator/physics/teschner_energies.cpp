@@ -12,10 +12,11 @@ double add_distance_forces(std::span<const Vec3> x, std::span<const Vec3> v, con
     const Vec3 d = x[j] - x[i];
     const double length = d.norm();
     if (length <= 0.0) continue;  // coincident points: the direction is undefined
+    // One division per term: ∂C/∂p_j = û / D0 = d / (|d| D0), ∂C/∂p_i = −∂C/∂p_j.
     const double rest = terms.rest_length[e];
-    const double c = (length - rest) / rest;
-    // ∂C/∂p_j = û / D0 and ∂C/∂p_i = −û / D0.
-    const Vec3 grad_j = d / (length * rest);
+    const double inverse = 1.0 / (length * rest);
+    const double c = (length - rest) * length * inverse;
+    const Vec3 grad_j = d * inverse;
     const double c_dot = grad_j.dot(v[j] - v[i]);
     const double magnitude = -terms.stiffness[e] * c - terms.damping[e] * c_dot;
     f[j] += magnitude * grad_j;
@@ -50,12 +51,13 @@ double add_volume_forces(std::span<const Vec3> x, const VolumeTerms& terms, std:
   for (std::size_t t = 0; t < terms.tets.size(); ++t) {
     const auto [i, j, k, l] = terms.tets[t];
     const Vec3 e1 = x[j] - x[i], e2 = x[k] - x[i], e3 = x[l] - x[i];
-    const double volume = e1.dot(e2.cross(e3)) / 6.0;
-    const double rest = terms.rest_volume[t];
-    const double c = (volume - rest) / rest;
-    // ∂V/∂p_j = (e2 × e3)/6, ∂V/∂p_k = (e3 × e1)/6, ∂V/∂p_l = (e1 × e2)/6, ∂V/∂p_i = −their sum.
-    const double scale = -terms.stiffness[t] * c / (6.0 * rest);
+    // ∂V/∂p_j = (e2 × e3)/6, ∂V/∂p_k = (e3 × e1)/6, ∂V/∂p_l = (e1 × e2)/6, ∂V/∂p_i = −their sum;
+    // the first also gives the volume, e1 · (e2 × e3) / 6.
     const Vec3 gj = e2.cross(e3), gk = e3.cross(e1), gl = e1.cross(e2);
+    const double volume = e1.dot(gj) / 6.0;
+    const double inverse_rest = 1.0 / terms.rest_volume[t];
+    const double c = (volume - terms.rest_volume[t]) * inverse_rest;
+    const double scale = -terms.stiffness[t] * c * inverse_rest / 6.0;
     f[j] += scale * gj;
     f[k] += scale * gk;
     f[l] += scale * gl;

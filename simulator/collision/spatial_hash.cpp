@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "core/error.h"
-#include "core/mesh/surface_embedding.h"
 
 namespace viscera::sim {
 
@@ -114,6 +113,13 @@ std::vector<VertexInTet> SpatialHash::detect(std::span<const CollisionBodyView> 
       const core::Vec3 lo = a.cwiseMin(b).cwiseMin(c.cwiseMin(d));
       const core::Vec3 hi = a.cwiseMax(b).cwiseMax(c.cwiseMax(d));
       if (!may_hold_others(tb, lo, hi)) continue;
+      // Barycentric coordinates as ratios of sub-volumes: the three cross products and the
+      // volume belong to the tet, so each candidate vertex then costs three dot products.
+      const core::Vec3 ab = b - a, ac = c - a, ad = d - a;
+      const core::Vec3 n_b = ac.cross(ad), n_c = ad.cross(ab), n_d = ab.cross(ac);
+      const double volume6 = ab.dot(n_b);
+      if (volume6 == 0.0) continue;  // a flat tet holds nothing
+      const double inverse_volume6 = 1.0 / volume6;
       const auto* cell = &cells_[first_cell_[tb]];
       std::array<std::int32_t, 3> c_lo = cell[tet[0]], c_hi = cell[tet[0]];
       for (int corner = 1; corner < 4; ++corner) {
@@ -138,9 +144,15 @@ std::vector<VertexInTet> SpatialHash::detect(std::span<const CollisionBodyView> 
               tested = global_tet;
               const core::Vec3& p = bodies[vb].positions[v];
               if ((p.array() < lo.array()).any() || (p.array() > hi.array()).any()) continue;
-              const auto w = core::barycentric(p, a, b, c, d);
-              if (w[0] < 0.0 || w[1] < 0.0 || w[2] < 0.0 || w[3] < 0.0) continue;
-              contacts.push_back({vb, v, static_cast<int>(tb), static_cast<int>(t), w});
+              const core::Vec3 ap = p - a;
+              const double wb = ap.dot(n_b) * inverse_volume6;
+              if (wb < 0.0) continue;
+              const double wc = ap.dot(n_c) * inverse_volume6;
+              if (wc < 0.0) continue;
+              const double wd = ap.dot(n_d) * inverse_volume6;
+              const double wa = 1.0 - wb - wc - wd;
+              if (wd < 0.0 || wa < 0.0) continue;
+              contacts.push_back({vb, v, static_cast<int>(tb), static_cast<int>(t), {wa, wb, wc, wd}});
             }
           }
     }

@@ -101,10 +101,14 @@ std::vector<VertexInTet> SpatialHash::detect(std::span<const CollisionBodyView> 
 
   // Pass 2: every tet against the vertices hashed to the cells its box covers.
   std::vector<VertexInTet> contacts;
-  std::int64_t global_tet = 0;
+  std::vector<std::array<int, 2>> candidates;
+  std::array<std::int32_t, 3> candidates_lo{1, 1, 1}, candidates_hi{0, 0, 0};  // an empty range
+  std::int64_t range_stamp = 0;
   for (std::size_t tb = 0; tb < bodies.size(); ++tb) {
     const auto& x = bodies[tb].positions;
-    for (std::size_t t = 0; t < bodies[tb].tets.size(); ++t, ++global_tet) {
+    candidates_lo = {1, 1, 1};  // a new body: its tets start a fresh range
+    candidates_hi = {0, 0, 0};
+    for (std::size_t t = 0; t < bodies[tb].tets.size(); ++t) {
       const auto& tet = bodies[tb].tets[t];
       const core::Vec3& a = x[tet[0]];
       const core::Vec3& b = x[tet[1]];
@@ -128,33 +132,43 @@ std::vector<VertexInTet> SpatialHash::detect(std::span<const CollisionBodyView> 
           c_hi[axis] = std::max(c_hi[axis], cell[tet[corner]][axis]);
         }
       }
-      for (std::int64_t k = c_lo[2]; k <= c_hi[2]; ++k)
-        for (std::int64_t j = c_lo[1]; j <= c_hi[1]; ++j)
-          for (std::int64_t i = c_lo[0]; i <= c_hi[0]; ++i) {
-            const std::size_t h = hash(i, j, k);
-            for (std::uint32_t e = bucket_start_[h]; e < bucket_start_[h + 1]; ++e) {
-              const auto [vb, v] = entries_[e];
-              if (vb == static_cast<int>(tb) &&
-                  (!self_collisions || v == tet[0] || v == tet[1] || v == tet[2] || v == tet[3])) {
-                continue;
+      // Tets of one mesh cell usually cover the same grid cells as the tet before them (the
+      // six tets of a cube share its box), so the candidate vertices of a cell range are
+      // gathered once — without duplicates from hash collisions — and reused.
+      if (c_lo != candidates_lo || c_hi != candidates_hi) {
+        candidates_lo = c_lo;
+        candidates_hi = c_hi;
+        ++range_stamp;
+        candidates.clear();
+        for (std::int64_t k = c_lo[2]; k <= c_hi[2]; ++k)
+          for (std::int64_t j = c_lo[1]; j <= c_hi[1]; ++j)
+            for (std::int64_t i = c_lo[0]; i <= c_hi[0]; ++i) {
+              const std::size_t h = hash(i, j, k);
+              for (std::uint32_t e = bucket_start_[h]; e < bucket_start_[h + 1]; ++e) {
+                const auto [vb, v] = entries_[e];
+                auto& seen = last_tested_[vb][v];
+                if (seen == range_stamp) continue;
+                seen = range_stamp;
+                candidates.push_back(entries_[e]);
               }
-              // Several cells (or hash collisions) can bring the same vertex twice.
-              auto& tested = last_tested_[vb][v];
-              if (tested == global_tet) continue;
-              tested = global_tet;
-              const core::Vec3& p = bodies[vb].positions[v];
-              if ((p.array() < lo.array()).any() || (p.array() > hi.array()).any()) continue;
-              const core::Vec3 ap = p - a;
-              const double wb = ap.dot(n_b) * inverse_volume6;
-              if (wb < 0.0) continue;
-              const double wc = ap.dot(n_c) * inverse_volume6;
-              if (wc < 0.0) continue;
-              const double wd = ap.dot(n_d) * inverse_volume6;
-              const double wa = 1.0 - wb - wc - wd;
-              if (wd < 0.0 || wa < 0.0) continue;
-              contacts.push_back({vb, v, static_cast<int>(tb), static_cast<int>(t), {wa, wb, wc, wd}});
             }
-          }
+      }
+      for (const auto& [vb, v] : candidates) {
+        if (vb == static_cast<int>(tb) && (!self_collisions || v == tet[0] || v == tet[1] || v == tet[2] || v == tet[3])) {
+          continue;
+        }
+        const core::Vec3& p = bodies[vb].positions[v];
+        if ((p.array() < lo.array()).any() || (p.array() > hi.array()).any()) continue;
+        const core::Vec3 ap = p - a;
+        const double wb = ap.dot(n_b) * inverse_volume6;
+        if (wb < 0.0) continue;
+        const double wc = ap.dot(n_c) * inverse_volume6;
+        if (wc < 0.0) continue;
+        const double wd = ap.dot(n_d) * inverse_volume6;
+        const double wa = 1.0 - wb - wc - wd;
+        if (wd < 0.0 || wa < 0.0) continue;
+        contacts.push_back({vb, v, static_cast<int>(tb), static_cast<int>(t), {wa, wb, wc, wd}});
+      }
     }
   }
   std::sort(contacts.begin(), contacts.end(), [](const VertexInTet& l, const VertexInTet& r) {

@@ -68,7 +68,7 @@ class SpatialHash {
   std::vector<std::uint32_t> bucket_start_;             ///< table_size_ + 1 offsets into entries_
   std::vector<std::array<int, 2>> entries_;             ///< (body, vertex), grouped by bucket
   std::vector<std::uint32_t> vertex_bucket_;            ///< scratch: bucket of each hashed vertex
-  std::vector<std::vector<std::int64_t>> last_tested_;  ///< per body and vertex: global tet id
+  std::vector<std::vector<std::int64_t>> last_tested_;  ///< per body and vertex: last cell range that listed it
 };
 
 /// Mean length in m of the tetrahedral edges of `bodies` (each edge counted once per tet that

@@ -7,10 +7,9 @@
 #include <fstream>
 #include <iostream>
 
+#include "core/command_line.h"
 #include "core/error.h"
-#include "core/log.h"
 #include "core/package/scenario_package.h"
-#include "core/version.h"
 #include "simulator/session/headless_session.h"
 
 namespace {
@@ -71,13 +70,9 @@ int run(const RunOptions& options) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  using viscera::core::ExitCode;
   CLI::App app{"Viscera simulator runtime", "viscera-sim"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", viscera::core::viscera_version());
-  std::string log_level = "warn";
-  app.add_option("--log-level", log_level, "trace, debug, info, warn, error or off")->capture_default_str();
-  app.parse_complete_callback([&log_level] { viscera::core::set_log_level(log_level); });
+  viscera::core::add_common_options(app);
 
   RunOptions options;
   int exit_code = 0;
@@ -90,20 +85,5 @@ int main(int argc, char** argv) {
   run_command->add_flag("--json", options.json, "Print the report as JSON");
   run_command->callback([&] { exit_code = run(options); });
 
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    app.exit(e);
-    return static_cast<int>(ExitCode::Usage);
-  } catch (const std::exception& e) {
-    std::cerr << "viscera-sim: " << e.what() << "\n";
-    return static_cast<int>(viscera::core::exit_code_for(e));
-  }
-  return exit_code;
+  return viscera::core::run_command_line(app, argc, argv, exit_code);
 }

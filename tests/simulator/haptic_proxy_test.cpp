@@ -4,32 +4,16 @@
 
 #include "core/primitives/icosphere.h"
 #include "simulator/haptics/device_limits.h"
+#include "tests/simulator/sim_fixtures.h"
 
 namespace viscera::sim {
 namespace {
 
-/// A flat 10 cm × 10 cm sheet at z = 0 facing +z, split into 20 × 20 squares.
-struct Sheet {
-  std::vector<core::Vec3> positions;
-  std::vector<core::Triangle> faces;
-};
-
-Sheet make_sheet() {
-  Sheet s;
-  const int n = 20;
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) s.positions.emplace_back(-0.05 + 0.1 * i / n, -0.05 + 0.1 * j / n, 0.0);
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      const int a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
-      s.faces.push_back({a, b, d});
-      s.faces.push_back({a, d, c});
-    }
-  return s;
-}
+/// A flat sheet at z = 0 facing +z, 10 cm wide, in 20 × 20 squares.
+viscera::testing::Sheet make_sheet() { return viscera::testing::make_sheet(20, 0.05); }
 
 TEST(HapticProxy, stays_on_the_surface_above_the_tip_with_a_spring_force) {
-  const Sheet sheet = make_sheet();
+  const viscera::testing::Sheet sheet = make_sheet();
   const ProxySurface surface(sheet.faces);
   HapticProxy proxy(200.0);
   proxy.reset({0.001, 0.002, 0.01});
@@ -44,7 +28,7 @@ TEST(HapticProxy, stays_on_the_surface_above_the_tip_with_a_spring_force) {
 }
 
 TEST(HapticProxy, slides_across_triangles_and_its_force_changes_continuously) {
-  const Sheet sheet = make_sheet();
+  const viscera::testing::Sheet sheet = make_sheet();
   const ProxySurface surface(sheet.faces);
   HapticProxy proxy(300.0);
   proxy.reset({-0.04, 0.0013, 0.01});
@@ -66,7 +50,7 @@ TEST(HapticProxy, slides_across_triangles_and_its_force_changes_continuously) {
 }
 
 TEST(HapticProxy, is_released_when_the_tip_comes_back_out) {
-  const Sheet sheet = make_sheet();
+  const viscera::testing::Sheet sheet = make_sheet();
   const ProxySurface surface(sheet.faces);
   HapticProxy proxy(100.0);
   proxy.reset({0.0, 0.0, 0.01});

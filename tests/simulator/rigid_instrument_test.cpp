@@ -6,29 +6,13 @@
 
 #include "core/error.h"
 #include "simulator/haptics/device_limits.h"
+#include "tests/simulator/sim_fixtures.h"
 
 namespace viscera::sim {
 namespace {
 
-/// A flat sheet at z = 0 facing +z, 20 cm wide.
-struct Sheet {
-  std::vector<core::Vec3> positions;
-  std::vector<core::Triangle> faces;
-};
-
-Sheet sheet() {
-  Sheet s;
-  const int n = 20;
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) s.positions.emplace_back(-0.1 + 0.2 * i / n, -0.1 + 0.2 * j / n, 0.0);
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      const int a = j * (n + 1) + i;
-      s.faces.push_back({a, a + 1, a + n + 2});
-      s.faces.push_back({a, a + n + 2, a + n + 1});
-    }
-  return s;
-}
+/// A flat sheet at z = 0 facing +z, 20 cm wide, in 20 × 20 squares.
+viscera::testing::Sheet sheet() { return viscera::testing::make_sheet(20, 0.1); }
 
 /// The shaft lying along +x at height z (the frame's +z turned onto +x).
 InstrumentPose lying(double x0, double z) {
@@ -39,7 +23,7 @@ InstrumentPose lying(double x0, double z) {
 }
 
 TEST(RigidInstrument, a_shaft_pressed_flat_feels_the_sum_of_its_points_and_no_torque_about_its_middle) {
-  const Sheet s = sheet();
+  const viscera::testing::Sheet s = sheet();
   const ProxySurface surface(s.faces);
   RigidInstrument tool = RigidInstrument::shaft(0.1, 11, 100.0);
   tool.reset(lying(-0.05, 0.01));
@@ -54,7 +38,7 @@ TEST(RigidInstrument, a_shaft_pressed_flat_feels_the_sum_of_its_points_and_no_to
 }
 
 TEST(RigidInstrument, pressing_with_the_tip_only_gives_the_lever_torque) {
-  const Sheet s = sheet();
+  const viscera::testing::Sheet s = sheet();
   const ProxySurface surface(s.faces);
   RigidInstrument tool = RigidInstrument::shaft(0.1, 11, 100.0);
   // Tilted 30° below the horizontal, so only the tip (x = 0.0866 + x0) reaches below z = 0.

@@ -59,6 +59,7 @@ std::vector<TurtleSegment> interpret_turtle(const LsystemString& modules,
           TurtleSegment s;
           s.start = state.position;
           state.position += piece_length * state.heading;
+          if (options.constrain) options.constrain(state.position, state.heading, state.left, state.up);
           s.end = state.position;
           s.start_width = state.width;
           state.width *= std::fmax(0.0, 1.0 - options.taper * piece_length);
@@ -73,6 +74,7 @@ std::vector<TurtleSegment> interpret_turtle(const LsystemString& modules,
       }
       case 'f':
         state.position += (m.parameters.empty() ? options.step : m.parameters[0]) * state.heading;
+        if (options.constrain) options.constrain(state.position, state.heading, state.left, state.up);
         break;
       case '+': rotate(state.heading, state.left, state.up, angle_of(m)); break;
       case '-': rotate(state.heading, state.left, state.up, -angle_of(m)); break;

@@ -18,6 +18,7 @@
 /// | other       | ignored (placeholders such as A, B)                                       |
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "core/lsystem/lsystem.h"
@@ -41,6 +42,9 @@ struct TurtleOptions {
   int subdivisions = 1;          ///< each F is drawn as this many collinear-ish pieces
   double wiggle = 0.0;           ///< degrees; before each piece the heading turns about up by ± this (tortuosity)
   std::uint64_t seed = 0;        ///< for angle_jitter, through the project's Rng
+  /// Called after every move with the turtle's position and frame (heading, left, up), which it
+  /// may change: e.g. to keep the turtle on an organ's surface with up along the surface normal.
+  std::function<void(Vec3& position, Vec3& heading, Vec3& left, Vec3& up)> constrain;
 };
 
 /// One drawn segment. Width tapers linearly from start_width to end_width.

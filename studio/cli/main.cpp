@@ -10,6 +10,7 @@
 #include "studio/cli/package_commands.h"
 #include "studio/cli/template_commands.h"
 #include "studio/cli/texture_commands.h"
+#include "studio/cli/vessel_commands.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"Viscera: virtual patients for surgical simulators", "viscera"};
@@ -20,6 +21,7 @@ int main(int argc, char** argv) {
   viscera::cli::add_template_commands(app);
   viscera::cli::add_package_commands(app, exit_code);
   viscera::cli::add_texture_commands(app);
+  viscera::cli::add_vessel_commands(app);
   viscera::cli::add_mesh_commands(app);
 
   return viscera::core::run_command_line(app, argc, argv, exit_code);

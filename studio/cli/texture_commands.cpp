@@ -2,13 +2,16 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <algorithm>
 #include <optional>
 
 #include "core/error.h"
+#include "core/package/scenario_package.h"
 #include "studio/cli/command_output.h"
 #include "studio/cli/terminal_progress.h"
 #include "textures/perlin_noise.h"
 #include "textures/png_io.h"
+#include "textures/scenario_baking.h"
 #include "textures/texture_preset.h"
 #include "textures/texture_synthesis.h"
 
@@ -108,6 +111,75 @@ void make_texture(const TextureCommandOptions& o) {
   }
 }
 
+struct BakeCommandOptions {
+  std::string input, output, preset, size = "1024x1024", sample;
+  std::vector<std::string> objects;
+  std::uint64_t seed = 1;
+  double scale = 0.05;
+  bool keep_topology = false, json = false;
+};
+
+const char* mapping_name(textures::TextureMapping mapping) {
+  switch (mapping) {
+    case textures::TextureMapping::OwnUvs: return "own-uvs";
+    case textures::TextureMapping::Atlas: return "lscm-atlas";
+    case textures::TextureMapping::VertexColors: return "vertex-colors";
+  }
+  return "?";
+}
+
+void bake(const BakeCommandOptions& o) {
+  const auto [width, height] = parse_size(o.size);
+  std::optional<textures::Image8> sample;
+  if (!o.sample.empty()) sample = textures::read_image_rgb(o.sample);
+  TerminalProgress bar;
+  core::Scenario scenario = core::read_package(o.input, bar.progress());
+  if (!o.preset.empty()) {
+    (void)textures::find_texture_preset(o.preset);  // a usage error before any work
+    int assigned = 0;
+    for (auto& object : scenario.objects) {
+      const bool chosen = o.objects.empty()
+                              ? object.role == core::ObjectRole::Organ
+                              : std::find(o.objects.begin(), o.objects.end(), object.id) != o.objects.end();
+      if (!chosen) continue;
+      core::TextureSpec spec;
+      spec.id = object.id + "-" + o.preset;
+      spec.preset = o.preset;
+      spec.seed = o.seed;
+      spec.width = width;
+      spec.height = height;
+      scenario.textures[spec.id] = spec;
+      object.texture = spec.id;
+      ++assigned;
+    }
+    if (assigned == 0) throw core::UsageError("no object of the package matches --object");
+  }
+  textures::ScenarioBakeOptions options;
+  options.texture_scale = o.scale;
+  options.sample = sample ? &*sample : nullptr;
+  options.keep_topology = o.keep_topology;
+  const textures::BakedTextures baked = textures::bake_textures_into(scenario, options, bar.progress());
+  if (baked.objects.empty()) throw core::UsageError("nothing to bake: no object has a texture (use --preset)");
+  core::write_package(scenario, baked.files, o.output, bar.progress());
+
+  nlohmann::json objects = nlohmann::json::array();
+  std::string text = "wrote " + std::filesystem::absolute(o.output).string() + "\n";
+  for (const auto& b : baked.objects) {
+    objects.push_back({{"object", b.object}, {"texture", b.texture}, {"mapping", mapping_name(b.mapping)},
+                       {"charts", b.charts}, {"l2_stretch", b.distortion.l2_stretch},
+                       {"mean_conformal", b.distortion.mean_conformal}, {"maps", scenario.textures.at(b.texture).maps}});
+    char line[256];
+    std::snprintf(line, sizeof line, "  %s: %s, %s, %d charts, L2 stretch %.3f\n", b.object.c_str(),
+                  b.texture.c_str(), mapping_name(b.mapping), b.charts, b.distortion.l2_stretch);
+    text += line;
+  }
+  if (o.json) {
+    print_json({{"package", std::filesystem::absolute(o.output).string()}, {"objects", objects}});
+  } else {
+    print_text(text);
+  }
+}
+
 }  // namespace
 
 void add_texture_commands(CLI::App& app) {
@@ -144,6 +216,22 @@ void add_texture_commands(CLI::App& app) {
   texture->add_flag("--list", options->list, "List the presets and their parameters");
   texture->add_flag("--json", options->json, "Print JSON");
   texture->callback([options] { make_texture(*options); });
+
+  auto* baking = app.add_subcommand(
+      "bake", "Bake procedural textures onto a package's organs (LSCM atlas, maps in textures/)");
+  auto b = std::make_shared<BakeCommandOptions>();
+  baking->add_option("input", b->input, "Input package (.vscene or .vscz)")->required();
+  baking->add_option("-o,--output", b->output, "Output package")->required();
+  baking->add_option("--preset,-p", b->preset, "Give the objects this preset (else bake their own textures)");
+  baking->add_option("--object", b->objects, "Objects to texture with --preset (default: every organ)");
+  baking->add_option("--seed", b->seed, "Texture seed with --preset")->capture_default_str();
+  baking->add_option("--size", b->size, "Map size in pixels, WxH, with --preset")->capture_default_str();
+  baking->add_option("--sample", b->sample, "Sample image for the colour field (KisMo)");
+  baking->add_option("--scale", b->scale, "Metres of surface per texture width")->capture_default_str();
+  baking->add_flag("--keep-topology", b->keep_topology,
+                   "Never split seam vertices: surfaces without UVs get vertex colours instead");
+  baking->add_flag("--json", b->json, "Print JSON");
+  baking->callback([b] { bake(*b); });
 }
 
 }  // namespace viscera::cli

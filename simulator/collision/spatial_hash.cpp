@@ -101,7 +101,11 @@ std::vector<VertexInTet> SpatialHash::detect(std::span<const CollisionBodyView> 
 
   // Pass 2: every tet against the vertices hashed to the cells its box covers.
   std::vector<VertexInTet> contacts;
-  std::vector<std::array<int, 2>> candidates;
+  struct Candidate {
+    core::Vec3 position;  // copied, so the hot loop reads one contiguous array
+    int body, vertex;
+  };
+  std::vector<Candidate> candidates;
   std::array<std::int32_t, 3> candidates_lo{1, 1, 1}, candidates_hi{0, 0, 0};  // an empty range
   std::int64_t range_stamp = 0;
   for (std::size_t tb = 0; tb < bodies.size(); ++tb) {
@@ -149,16 +153,17 @@ std::vector<VertexInTet> SpatialHash::detect(std::span<const CollisionBodyView> 
                 auto& seen = last_tested_[vb][v];
                 if (seen == range_stamp) continue;
                 seen = range_stamp;
-                candidates.push_back(entries_[e]);
+                candidates.push_back({bodies[vb].positions[v], vb, v});
               }
             }
       }
-      for (const auto& [vb, v] : candidates) {
+      for (const auto& [p, vb, v] : candidates) {
+        if (p.x() < lo.x() || p.x() > hi.x() || p.y() < lo.y() || p.y() > hi.y() || p.z() < lo.z() || p.z() > hi.z()) {
+          continue;
+        }
         if (vb == static_cast<int>(tb) && (!self_collisions || v == tet[0] || v == tet[1] || v == tet[2] || v == tet[3])) {
           continue;
         }
-        const core::Vec3& p = bodies[vb].positions[v];
-        if ((p.array() < lo.array()).any() || (p.array() > hi.array()).any()) continue;
         const core::Vec3 ap = p - a;
         const double wb = ap.dot(n_b) * inverse_volume6;
         if (wb < 0.0) continue;

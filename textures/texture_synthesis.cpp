@@ -40,6 +40,7 @@ class ColorGrid {
     nx_ = (width - 1) / spacing_ + 2;
     ny_ = (height - 1) / spacing_ + 2;
     nodes_.resize(3 * static_cast<std::size_t>(nx_) * ny_);
+    for (int s = 0; s < spacing_; ++s) weights_.push_back(static_cast<float>(s) / static_cast<float>(spacing_));
     parallel_rows(ny_, [&](int begin, int end) {
       for (int j = begin; j < end; ++j) {
         for (int i = 0; i < nx_; ++i) {
@@ -59,13 +60,14 @@ class ColorGrid {
     const float* top = nodes_.data() + 3 * static_cast<std::size_t>(j) * nx_;
     const float* bottom = top + 3 * static_cast<std::size_t>(nx_);
     for (int k = 0; k < 3 * nx_; ++k) row_buffer[k] = top[k] + ty * (bottom[k] - top[k]);
-    const float inverse = 1.0f / static_cast<float>(spacing_);
-    for (int x = 0; x < width; ++x) {
-      const int i = x / spacing_;
-      const float tx = static_cast<float>(x - i * spacing_) * inverse;
-      for (int k = 0; k < 3; ++k) {
-        const float a = row_buffer[3 * i + k], b = row_buffer[3 * i + 3 + k];
-        rgb[3 * x + k] = a + tx * (b - a);
+    // Each node interval spans `spacing_` pixels with the same weights: no division per pixel.
+    for (int i = 0, x = 0; x < width; ++i) {
+      const float* a = row_buffer.data() + 3 * i;
+      for (int s = 0; s < spacing_ && x < width; ++s, ++x) {
+        const float tx = weights_[s];
+        rgb[3 * x + 0] = a[0] + tx * (a[3] - a[0]);
+        rgb[3 * x + 1] = a[1] + tx * (a[4] - a[1]);
+        rgb[3 * x + 2] = a[2] + tx * (a[5] - a[2]);
       }
     }
   }
@@ -73,6 +75,7 @@ class ColorGrid {
  private:
   int spacing_ = 1, nx_ = 0, ny_ = 0;
   std::vector<float> nodes_;
+  std::vector<float> weights_;  ///< s / spacing for s < spacing
 };
 
 }  // namespace

@@ -43,8 +43,11 @@ inline void shade_tissue(const TexturePreset& preset, const TissueFields& f, flo
     const float gain = 1.0f + contrast * (kTurbulenceMean - t);
     for (int k = 0; k < 3; ++k) albedo_rgb[3 * i + k] = f.base_rgb[3 * i + k] * gain;
     height[i] = grain_height * t;
-    wetness[i] = f.wetness_noise ? wet_base + wet_variation * static_cast<float>(f.wetness_noise[i])
-                                 : wet_base;
+  }
+  if (f.wetness_noise) {
+    for (int i = 0; i < f.count; ++i) wetness[i] = wet_base + wet_variation * static_cast<float>(f.wetness_noise[i]);
+  } else {
+    for (int i = 0; i < f.count; ++i) wetness[i] = wet_base;
   }
   for (std::size_t l = 0; l < preset.vessels.size(); ++l) {
     if (!f.coverage || !f.coverage[l]) continue;

@@ -33,7 +33,32 @@ double UrethraModel::insertion_fraction(double tip_z) const {
   return std::clamp((tip_z - p_.free_length) / (p_.length - p_.free_length), 0.0, 1.0);
 }
 
+namespace {
+
+/// The endoscope's shaft direction for pitch θx (towards +y) and yaw θy (towards +x).
+core::Vec3 shaft_axis(double pitch, double yaw) {
+  return {std::sin(yaw) * std::cos(pitch), std::sin(pitch), std::cos(yaw) * std::cos(pitch)};
+}
+
+/// `v` turned about the x axis by `angle` rad.
+core::Vec3 turned_about_x(const core::Vec3& v, double angle) {
+  return {v.x(), std::cos(angle) * v.y() - std::sin(angle) * v.z(), std::sin(angle) * v.y() + std::cos(angle) * v.z()};
+}
+
+}  // namespace
+
 std::vector<UrethraSection> UrethraModel::lattice(double tip_z) const {
+  EndoscopeState on_line;
+  on_line.tip = centre_line(tip_z);
+  on_line.pitch = std::atan(2.0 * p_.curvature * tip_z);
+  return lattice(on_line);
+}
+
+std::vector<UrethraSection> UrethraModel::lattice(const EndoscopeState& e) const {
+  const double tip_z = e.tip.z();
+  const core::Vec3 axis = shaft_axis(e.pitch, e.yaw);
+  const double offset = e.tip.y() - centre_line(tip_z).y();              // dy
+  const double tilt = e.pitch - std::atan(2.0 * p_.curvature * tip_z);    // dθx
   std::vector<double> zs = section_z_;
   constexpr int kMovingSections = 10;  // seed 002: ten subsections
   for (int k = 1; k <= kMovingSections; ++k) {
@@ -41,17 +66,39 @@ std::vector<UrethraSection> UrethraModel::lattice(double tip_z) const {
     if (z > 0.0 && z < p_.length) zs.push_back(z);
   }
   std::sort(zs.begin(), zs.end());
+  // Basic sections beyond the moving deformation, counted to share out offset and tilt.
+  const double downstream_from = tip_z + p_.transition_length;
+  const auto downstream = static_cast<int>(std::count_if(section_z_.begin(), section_z_.end(),
+                                                         [&](double z) { return z >= downstream_from; }));
+  int downstream_index = 0;
   std::vector<UrethraSection> sections;
   for (const double z : zs) {
     UrethraSection s;
-    s.centre = centre_line(z);
-    s.normal = tangent(z);
     s.radius = widened_radius(z - tip_z);
+    if (z <= tip_z && axis.z() > 1e-9) {
+      // Behind the tip the urethra takes the rigid shaft's shape.
+      s.centre = e.tip - axis * ((tip_z - z) / axis.z());
+      s.normal = axis;
+    } else if (z < downstream_from) {
+      // The moving deformation blends from the shaft to the undeformed tube.
+      const double blend = 0.5 * (1.0 + std::cos(std::numbers::pi * (z - tip_z) / p_.transition_length));
+      s.centre = centre_line(z) + core::Vec3(0.0, offset, 0.0);
+      s.normal = (blend * axis + (1.0 - blend) * turned_about_x(tangent(z), tilt)).normalized();
+    } else {
+      // Ahead: dy falls to zero at the bladder entrance, dθx to dθx / K there.
+      const bool basic = std::find(section_z_.begin(), section_z_.end(), z) != section_z_.end();
+      const int k = basic ? ++downstream_index : std::max(1, downstream_index);
+      const double share = downstream > 0 ? static_cast<double>(downstream - k) / downstream : 0.0;
+      const double turn = downstream > 0 ? tilt * static_cast<double>(downstream - k + 1) / downstream : 0.0;
+      s.centre = centre_line(z) + core::Vec3(0.0, offset * share, 0.0);
+      s.normal = turned_about_x(tangent(z), turn);
+    }
     const core::Vec3 u = core::Vec3::UnitX();
-    const core::Vec3 v = s.normal.cross(u);
+    const core::Vec3 v = s.normal.cross(u).normalized();
+    const core::Vec3 w = v.cross(s.normal);  // x direction made normal to the section's axis
     for (int i = 0; i < p_.points_per_section; ++i) {
       const double angle = 2.0 * std::numbers::pi * i / p_.points_per_section;
-      s.points.push_back(s.centre + s.radius * (std::cos(angle) * u + std::sin(angle) * v));
+      s.points.push_back(s.centre + s.radius * (std::cos(angle) * w + std::sin(angle) * v));
     }
     sections.push_back(std::move(s));
   }
@@ -59,8 +106,15 @@ std::vector<UrethraSection> UrethraModel::lattice(double tip_z) const {
 }
 
 core::SurfaceMesh UrethraModel::surface(double tip_z, int around, int along) const {
+  EndoscopeState on_line;
+  on_line.tip = centre_line(tip_z);
+  on_line.pitch = std::atan(2.0 * p_.curvature * tip_z);
+  return surface(on_line, around, along);
+}
+
+core::SurfaceMesh UrethraModel::surface(const EndoscopeState& endoscope, int around, int along) const {
   if (around < 1 || along < 1) throw core::UsageError("urethra surface needs at least one sample per segment");
-  const auto sections = lattice(tip_z);
+  const auto sections = lattice(endoscope);
   // Rings: each section's points interpolated around the lumen.
   std::vector<std::vector<core::Vec3>> rings;
   for (const auto& section : sections) {
@@ -107,7 +161,7 @@ core::SurfaceMesh UrethraModel::surface(double tip_z, int around, int along) con
 UrethraFeedback UrethraModel::feedback(const EndoscopeState& e) const {
   UrethraFeedback out;
   const double tip_z = e.tip.z();
-  const core::Vec3 axis(std::sin(e.yaw) * std::cos(e.pitch), std::sin(e.pitch), std::cos(e.yaw) * std::cos(e.pitch));
+  const core::Vec3 axis = shaft_axis(e.pitch, e.yaw);
   const int springs = p_.points_per_section - 1;
 
   // Wall springs of the basic sections: stretched to the endoscope behind the tip, partly

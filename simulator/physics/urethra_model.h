@@ -84,11 +84,20 @@ class UrethraModel {
   /// §3.2). Sorted by z.
   std::vector<UrethraSection> lattice(double tip_z) const;
 
+  /// The lattice for an endoscope off the centre line (seed 002 §3.2 (b)–(c)): sections the
+  /// scope has passed sit on its straight shaft, normal to it; the moving deformation follows
+  /// the tip; the basic sections ahead share the tip's offset dy and tilt dθx, the offset
+  /// falling linearly to zero at the fixed bladder entrance and the tilt to dθx / K there (K
+  /// downstream sections).
+  std::vector<UrethraSection> lattice(const EndoscopeState& endoscope) const;
+
   /// The urethra wall for a tip at `tip_z`: the lattice of lattice(tip_z) interpolated by
   /// piecewise Bézier curves with chord-length Catmull-Rom control points, closed around each
   /// section and open along the tube (seed 002 §3.1), sampled `around` and `along` times per
   /// segment. An open tube with UVs (u around, v along) and outward normals.
   core::SurfaceMesh surface(double tip_z, int around = 4, int along = 4) const;
+  /// The same for an endoscope anywhere (see lattice(const EndoscopeState&)).
+  core::SurfaceMesh surface(const EndoscopeState& endoscope, int around = 4, int along = 4) const;
 
   /// Forces and torques for the endoscope `state`.
   UrethraFeedback feedback(const EndoscopeState& state) const;

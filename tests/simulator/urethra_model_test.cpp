@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/error.h"
@@ -25,8 +26,13 @@ TEST(UrethraModel, lattice_sits_on_the_parabola_and_widens_to_the_endoscope_behi
   const auto& p = model.parameters();
   const auto sections = model.lattice(0.06);
   EXPECT_EQ(sections.size(), static_cast<std::size_t>(p.basic_sections + 10));
+  const core::Vec3 shaft = model.tangent(0.06);
   for (const auto& s : sections) {
-    EXPECT_NEAR(s.centre.y(), p.curvature * s.centre.z() * s.centre.z(), 1e-15);
+    if (s.centre.z() > 0.06) {
+      EXPECT_NEAR(s.centre.y(), p.curvature * s.centre.z() * s.centre.z(), 1e-15);  // on the parabola
+    } else {
+      EXPECT_LT((s.centre - model.centre_line(0.06)).cross(shaft).norm(), 1e-12);  // on the straight shaft
+    }
     ASSERT_EQ(s.points.size(), static_cast<std::size_t>(p.points_per_section));
     for (const auto& q : s.points) {
       EXPECT_NEAR((q - s.centre).norm(), s.radius, 1e-15);
@@ -123,14 +129,53 @@ TEST(UrethraModel, bezier_surface_passes_through_the_lattice_and_faces_outward) 
     for (std::size_t i = 0; i < sections[s].points.size(); ++i) {
       EXPECT_TRUE(wall.vertices[(2 * s) * columns + 3 * i].isApprox(sections[s].points[i], 1e-12)) << s << " " << i;
     }
-  // Outward: normals point away from the centre line, and each vertex lies near its section's
-  // radius (the interpolation bulges only slightly between lattice points).
-  for (std::size_t v = 0; v < wall.vertices.size(); v += 7) {
-    const core::Vec3& p = wall.vertices[v];
-    const core::Vec3 radial = p - model.centre_line(p.z());
-    EXPECT_GT(wall.normals[v].dot(radial), 0.0) << v;
-  }
+  // Outward: at the lattice rows the normals point away from the section centre.
+  for (std::size_t s = 0; s < sections.size(); ++s)
+    for (std::size_t c = 0; c < columns; ++c) {
+      const std::size_t v = (2 * s) * columns + c;
+      EXPECT_GT(wall.normals[v].dot(wall.vertices[v] - sections[s].centre), 0.0) << v;
+    }
   EXPECT_EQ(wall.triangles.size(), 2 * columns * (2 * (sections.size() - 1)));
+}
+
+}  // namespace
+}  // namespace viscera::sim
+
+namespace viscera::sim {
+namespace {
+
+TEST(UrethraModel, an_endoscope_off_the_centre_line_drags_the_tube_but_not_the_bladder_entrance) {
+  const UrethraModel model;
+  const auto& p = model.parameters();
+  EndoscopeState scope;
+  scope.tip = model.centre_line(0.07) + core::Vec3(0.0, 0.004, 0.0);  // 4 mm above the centre line
+  scope.pitch = std::atan(2.0 * p.curvature * 0.07) + 0.15;             // and tilted up
+  const auto sections = model.lattice(scope);
+  const core::Vec3 axis(0.0, std::sin(scope.pitch), std::cos(scope.pitch));
+  for (const auto& s : sections) {
+    if (s.centre.z() <= 0.07) {
+      // Behind the tip: on the straight shaft, normal to it.
+      EXPECT_LT((s.centre - scope.tip).cross(axis).norm(), 1e-12);
+      EXPECT_TRUE(s.normal.isApprox(axis, 1e-12));
+    }
+    for (const auto& q : s.points) EXPECT_NEAR((q - s.centre).dot(s.normal), 0.0, 1e-12);
+  }
+  // The bladder entrance stays put; the first section beyond the moving deformation carries
+  // nearly the whole offset.
+  EXPECT_TRUE(sections.back().centre.isApprox(model.centre_line(p.length), 1e-12));
+  const auto first_ahead = std::find_if(sections.begin(), sections.end(), [&](const UrethraSection& s) {
+    return s.centre.z() >= 0.07 + p.transition_length;
+  });
+  ASSERT_NE(first_ahead, sections.end());
+  EXPECT_GT(first_ahead->centre.y() - model.centre_line(first_ahead->centre.z()).y(), 0.003);
+  // On the centre line the general lattice is the plain one.
+  EndoscopeState on_line;
+  on_line.tip = model.centre_line(0.07);
+  on_line.pitch = std::atan(2.0 * p.curvature * 0.07);
+  const auto plain = model.lattice(0.07);
+  const auto general = model.lattice(on_line);
+  ASSERT_EQ(plain.size(), general.size());
+  for (std::size_t i = 0; i < plain.size(); ++i) EXPECT_TRUE(plain[i].centre.isApprox(general[i].centre, 1e-12));
 }
 
 }  // namespace

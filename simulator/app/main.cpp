@@ -7,7 +7,7 @@
 #include <fstream>
 #include <iostream>
 
-#include "core/command_line.h"
+#include "studio/cli/command_line.h"
 #include "core/error.h"
 #include "core/package/scenario_package.h"
 #include "simulator/session/headless_session.h"
@@ -72,7 +72,7 @@ int run(const RunOptions& options) {
 int main(int argc, char** argv) {
   CLI::App app{"Viscera simulator runtime", "viscera-sim"};
   app.require_subcommand(1);
-  viscera::core::add_common_options(app);
+  viscera::cli::add_common_options(app);
 
   RunOptions options;
   int exit_code = 0;
@@ -85,5 +85,5 @@ int main(int argc, char** argv) {
   run_command->add_flag("--json", options.json, "Print the report as JSON");
   run_command->callback([&] { exit_code = run(options); });
 
-  return viscera::core::run_command_line(app, argc, argv, exit_code);
+  return viscera::cli::run_command_line(app, argc, argv, exit_code);
 }

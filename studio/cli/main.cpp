@@ -5,7 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <iostream>
 
-#include "core/command_line.h"
+#include "studio/cli/command_line.h"
 #include "studio/cli/mesh_commands.h"
 #include "studio/cli/package_commands.h"
 #include "studio/cli/template_commands.h"
@@ -15,7 +15,7 @@
 int main(int argc, char** argv) {
   CLI::App app{"Viscera: virtual patients for surgical simulators", "viscera"};
   app.require_subcommand(1);
-  viscera::core::add_common_options(app);
+  viscera::cli::add_common_options(app);
 
   int exit_code = 0;
   viscera::cli::add_template_commands(app);
@@ -24,5 +24,5 @@ int main(int argc, char** argv) {
   viscera::cli::add_vessel_commands(app);
   viscera::cli::add_mesh_commands(app);
 
-  return viscera::core::run_command_line(app, argc, argv, exit_code);
+  return viscera::cli::run_command_line(app, argc, argv, exit_code);
 }

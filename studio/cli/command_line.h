@@ -2,7 +2,7 @@
 /// main() plumbing shared by the Viscera programs (`viscera`, `viscera-sim`): CLI11 parsing
 /// with the exit codes of DESIGN.md §9 — 0 success (and --help, --version), 1 internal error,
 /// 2 usage, 3 unreadable or invalid input, 4 validation failed — and one line on error.
-/// Header-only so that only the programs, not the libraries, compile CLI11.
+/// Header-only, used by both programs' main(); libraries never include it.
 
 #include <CLI/CLI.hpp>
 #include <iostream>
@@ -13,14 +13,14 @@
 #include "core/log.h"
 #include "core/version.h"
 
-namespace viscera::core {
+namespace viscera::cli {
 
 /// Adds --version and --log-level to `app`; the level takes effect once parsing is complete.
 inline void add_common_options(CLI::App& app) {
-  app.set_version_flag("--version", viscera_version());
+  app.set_version_flag("--version", core::viscera_version());
   auto level = std::make_shared<std::string>("warn");
   app.add_option("--log-level", *level, "trace, debug, info, warn, error or off")->capture_default_str();
-  app.parse_complete_callback([level] { set_log_level(*level); });
+  app.parse_complete_callback([level] { core::set_log_level(*level); });
 }
 
 /// Parses `argv` and runs the chosen command's callback. Returns `exit_code` as the command
@@ -37,12 +37,12 @@ inline int run_command_line(CLI::App& app, int argc, char** argv, const int& exi
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     app.exit(e);
-    return static_cast<int>(ExitCode::Usage);
+    return static_cast<int>(core::ExitCode::Usage);
   } catch (const std::exception& e) {
     std::cerr << app.get_name() << ": " << e.what() << "\n";
-    return static_cast<int>(exit_code_for(e));
+    return static_cast<int>(core::exit_code_for(e));
   }
   return exit_code;
 }
 
-}  // namespace viscera::core
+}  // namespace viscera::cli

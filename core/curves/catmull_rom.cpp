@@ -61,4 +61,53 @@ Vec3 CatmullRomSpline::derivative(int s, double t) const {
   return 3.0 * (u * u * (b[1] - b[0]) + 2.0 * u * t * (b[2] - b[1]) + t * t * (b[3] - b[2]));
 }
 
+std::vector<double> catmull_rom_knot_gaps(const std::vector<Vec3>& points, KnotSpacing spacing,
+                                          bool closed) {
+  const std::size_t n = points.size();
+  if (n < (closed ? 3U : 2U)) throw UsageError("a Catmull-Rom spline needs more points");
+  std::vector<double> gaps(closed ? n : n - 1);
+  for (std::size_t i = 0; i < gaps.size(); ++i) {
+    const double chord = (points[(i + 1) % n] - points[i]).norm();
+    if (!(chord > 0.0)) {
+      throw UsageError("spline points " + std::to_string(i) + " and " + std::to_string((i + 1) % n) + " coincide");
+    }
+    switch (spacing) {
+      case KnotSpacing::Uniform: gaps[i] = 1.0; break;
+      case KnotSpacing::Centripetal: gaps[i] = std::sqrt(chord); break;
+      case KnotSpacing::ChordLength: gaps[i] = chord; break;
+    }
+  }
+  return gaps;
+}
+
+std::vector<Vec3> catmull_rom_bezier_net(const std::vector<Vec3>& points,
+                                         const std::vector<double>& gaps, bool closed) {
+  const std::size_t n = points.size();
+  const std::size_t segments = closed ? n : n - 1;
+  if (n < (closed ? 3U : 2U) || gaps.size() != segments) {
+    throw UsageError("Catmull-Rom net: " + std::to_string(gaps.size()) + " knot gaps for " + std::to_string(n) + " points");
+  }
+  // Tangent at point i with respect to the knot parameter (Barry-Goldman blend of the chords on
+  // either side); an open end sees a reflected phantom point, i.e. the first/last chord.
+  const auto tangent = [&](std::size_t i) -> Vec3 {
+    if (!closed && i == 0) return (points[1] - points[0]) / gaps[0];
+    if (!closed && i == n - 1) return (points[n - 1] - points[n - 2]) / gaps[n - 2];
+    const std::size_t before_index = (i + n - 1) % n;
+    const double before = gaps[closed ? before_index : i - 1], after = gaps[i % segments];
+    const Vec3 incoming = (points[i] - points[before_index]) / before;
+    const Vec3 outgoing = (points[(i + 1) % n] - points[i]) / after;
+    return (after * incoming + before * outgoing) / (before + after);
+  };
+  std::vector<Vec3> net;
+  net.reserve(3 * segments + 1);
+  for (std::size_t s = 0; s < segments; ++s) {
+    const std::size_t next = (s + 1) % n;
+    net.push_back(points[s]);
+    net.push_back(points[s] + tangent(s) * (gaps[s] / 3.0));
+    net.push_back(points[next] - tangent(next) * (gaps[s] / 3.0));
+  }
+  net.push_back(closed ? points[0] : points[n - 1]);
+  return net;
+}
+
 }  // namespace viscera::core

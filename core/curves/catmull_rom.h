@@ -43,4 +43,19 @@ class CatmullRomSpline {
 /// Bézier point at t of control points b (de Casteljau).
 Vec3 bezier_point(const std::array<Vec3, 4>& b, double t);
 
+/// Parameter length of each segment, |P_{i+1} − P_i|^α for the spacing's α: points − 1 gaps
+/// when open, points when closed (the last one closes the loop). Throws UsageError naming the
+/// pair when two neighbouring points coincide, or when there are too few points.
+std::vector<double> catmull_rom_knot_gaps(const std::vector<Vec3>& points, KnotSpacing spacing,
+                                          bool closed);
+
+/// The Bézier control net of the Catmull-Rom spline through `points` with the given knot gaps
+/// (as from catmull_rom_knot_gaps, or averaged over the rows of a surface grid): 3·segments + 1
+/// points, segment s using net[3s … 3s+3]; a closed net repeats the first point at its end.
+/// Open ends take the tangent of the first/last chord, as CatmullRomSpline does. The net is
+/// linear in the points for fixed gaps, which is what lets a bicubic surface apply it to rows
+/// and then to columns of control points. Throws UsageError when the gap count does not match.
+std::vector<Vec3> catmull_rom_bezier_net(const std::vector<Vec3>& points,
+                                         const std::vector<double>& gaps, bool closed);
+
 }  // namespace viscera::core

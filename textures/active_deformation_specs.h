@@ -26,11 +26,13 @@ struct SpecIssue {
 /// Checks a pulse spec; `pointer` is where it sits (e.g. "/scenario/active_deformations/0/pulse").
 /// With a scenario, the vessel tree must exist there, and the seed's warning case is reported:
 /// a wave that needs longer than one beat to cross the tree is cut off by the next beat.
-std::vector<SpecIssue> validate_pulse_spec(const core::PulseSpec& spec, const core::Scenario* scenario,
+std::vector<SpecIssue> validate_pulse_spec(const core::PulseSpec& spec,
+                                           const core::Scenario* scenario,
                                            const std::string& pointer);
 
 /// Checks a motility spec (units of core::MotilitySpec).
-std::vector<SpecIssue> validate_motility_spec(const core::MotilitySpec& spec, const std::string& pointer);
+std::vector<SpecIssue> validate_motility_spec(const core::MotilitySpec& spec,
+                                              const std::string& pointer);
 
 /// Checks every active deformation of a scenario: unique ids, a target object that exists, at
 /// most one pulse per vessel tree, and each spec as above.

@@ -19,7 +19,9 @@ struct Image8 {
       : width(w), height(h), channels(c), pixels(static_cast<std::size_t>(w) * h * c, 0) {}
 
   bool empty() const { return pixels.empty(); }
-  std::uint8_t* row(int y) { return pixels.data() + static_cast<std::size_t>(y) * width * channels; }
+  std::uint8_t* row(int y) {
+    return pixels.data() + static_cast<std::size_t>(y) * width * channels;
+  }
   const std::uint8_t* row(int y) const {
     return pixels.data() + static_cast<std::size_t>(y) * width * channels;
   }

@@ -33,7 +33,8 @@ void parallel_rows(int rows, const std::function<void(int begin, int end)>& work
       }
     });
   }
-  for (auto& thread : pool) thread.join();
+  for (auto& thread : pool)
+    thread.join();
   for (const auto& error : errors) {
     if (error) std::rethrow_exception(error);
   }

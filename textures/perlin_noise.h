@@ -55,8 +55,8 @@ class PerlinNoise {
   template <bool kPlanar>
   void row(const double* xs, int count, double y, double z, double* out) const;
   template <bool kPlanar, bool kAbsolute>
-  void octave_row(const double* xs, int count, double y, double z, int octaves,
-                  double persistence, double* out) const;
+  void octave_row(const double* xs, int count, double y, double z, int octaves, double persistence,
+                  double* out) const;
 
   std::array<std::uint8_t, 512> p_{};  ///< permutation repeated twice, so p_[i + 1] needs no wrap
 };

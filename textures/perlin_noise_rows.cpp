@@ -17,14 +17,20 @@ constexpr double kGx[16] = {1, -1, 1, -1, 1, -1, 1, -1, 0, 0, 0, 0, 1, 0, -1, 0}
 constexpr double kGy[16] = {1, 1, -1, -1, 0, 0, 0, 0, 1, -1, 1, -1, 1, -1, 1, -1};
 constexpr double kGz[16] = {0, 0, 0, 0, 1, 1, -1, -1, 1, 1, -1, -1, 0, 1, 0, -1};
 
-inline double fade(double t) { return t * t * t * (t * (t * 6.0 - 15.0) + 10.0); }
-inline double lerp(double t, double a, double b) { return a + t * (b - a); }
+inline double fade(double t) {
+  return t * t * t * (t * (t * 6.0 - 15.0) + 10.0);
+}
+inline double lerp(double t, double a, double b) {
+  return a + t * (b - a);
+}
 
 /// Samples of one lattice cell, 3D. gx[k], c[k]: x gradient and the y/z part of corner k's dot
 /// product, corners in the reference order AA, BA, AB, BB, AA+1, BA+1, AB+1, BB+1.
-[[gnu::target_clones("avx2", "default")]] void cell_run_3d(
-    const double* __restrict xs, int n, double x_floor, const double* __restrict gx,
-    const double* __restrict c, double v, double w, double* __restrict out) {
+[[gnu::target_clones("avx2", "default")]] void cell_run_3d(const double* __restrict xs, int n,
+                                                           double x_floor,
+                                                           const double* __restrict gx,
+                                                           const double* __restrict c, double v,
+                                                           double w, double* __restrict out) {
   for (int i = 0; i < n; ++i) {
     const double x0 = xs[i] - x_floor;
     const double x1 = x0 - 1.0;
@@ -39,9 +45,11 @@ inline double lerp(double t, double a, double b) { return a + t * (b - a); }
 
 /// Samples of one lattice cell in the plane z = 0: lerp(0, a, b) is exactly a, so only the four
 /// corners of the z = 0 face count.
-[[gnu::target_clones("avx2", "default")]] void cell_run_2d(
-    const double* __restrict xs, int n, double x_floor, const double* __restrict gx,
-    const double* __restrict c, double v, double* __restrict out) {
+[[gnu::target_clones("avx2", "default")]] void cell_run_2d(const double* __restrict xs, int n,
+                                                           double x_floor,
+                                                           const double* __restrict gx,
+                                                           const double* __restrict c, double v,
+                                                           double* __restrict out) {
   for (int i = 0; i < n; ++i) {
     const double x0 = xs[i] - x_floor;
     const double x1 = x0 - 1.0;
@@ -68,7 +76,8 @@ void PerlinNoise::row(const double* xs, int count, double y, double z, double* o
     const double x_floor = std::floor(xs[i]);
     const double x_next = x_floor + 1.0;
     int end = i + 1;
-    while (end < count && xs[end] >= x_floor && xs[end] < x_next) ++end;
+    while (end < count && xs[end] >= x_floor && xs[end] < x_next)
+      ++end;
     const int X = static_cast<int>(x_floor) & 255;
     const int A = p_[X] + Y, AA = p_[A] + Z, AB = p_[A + 1] + Z;
     const int B = p_[X + 1] + Y, BA = p_[B] + Z, BB = p_[B + 1] + Z;
@@ -97,12 +106,13 @@ template <bool kPlanar, bool kAbsolute>
 void PerlinNoise::octave_row(const double* xs, int count, double y, double z, int octaves,
                              double persistence, double* out) const {
   std::vector<double> scaled(static_cast<std::size_t>(count)), values(scaled.size());
-  for (int i = 0; i < count; ++i) out[i] = 0.0;
+  for (int i = 0; i < count; ++i)
+    out[i] = 0.0;
   double amplitude = 1.0, frequency = 1.0;
   for (int o = 0; o < octaves; ++o) {
-    for (int i = 0; i < count; ++i) scaled[i] = xs[i] * frequency;
-    row<kPlanar>(scaled.data(), count, y * frequency, kPlanar ? 0.0 : z * frequency,
-                 values.data());
+    for (int i = 0; i < count; ++i)
+      scaled[i] = xs[i] * frequency;
+    row<kPlanar>(scaled.data(), count, y * frequency, kPlanar ? 0.0 : z * frequency, values.data());
     for (int i = 0; i < count; ++i) {
       out[i] += amplitude * (kAbsolute ? std::abs(values[i]) : values[i]);
     }

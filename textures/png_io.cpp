@@ -23,7 +23,8 @@ Image8 from_mat(const cv::Mat& decoded) {
   Image8 image(converted.cols, converted.rows, converted.channels());
   for (int y = 0; y < image.height; ++y) {
     const auto* source = converted.ptr<std::uint8_t>(y);
-    std::copy(source, source + static_cast<std::size_t>(image.width) * image.channels, image.row(y));
+    std::copy(source, source + static_cast<std::size_t>(image.width) * image.channels,
+              image.row(y));
   }
   return image;
 }
@@ -44,8 +45,7 @@ Image8 read_image_rgb(const std::filesystem::path& path) {
 }
 
 Image8 decode_image(const std::string& bytes, const std::string& what) {
-  const cv::Mat buffer(1, static_cast<int>(bytes.size()), CV_8U,
-                       const_cast<char*>(bytes.data()));
+  const cv::Mat buffer(1, static_cast<int>(bytes.size()), CV_8U, const_cast<char*>(bytes.data()));
   const cv::Mat decoded = cv::imdecode(buffer, cv::IMREAD_UNCHANGED);
   if (decoded.empty()) throw core::InputError("not a decodable image", {what, "", ""});
   return from_mat(decoded);

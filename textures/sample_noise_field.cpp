@@ -11,7 +11,9 @@ namespace {
 
 constexpr int kMask = 4095;
 
-inline float fade(float t) { return t * t * t * (t * (t * 6.0f - 15.0f) + 10.0f); }
+inline float fade(float t) {
+  return t * t * t * (t * (t * 6.0f - 15.0f) + 10.0f);
+}
 
 inline Rgb mix(const Rgb& a, const Rgb& b, float t) {
   return {a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])};
@@ -24,10 +26,12 @@ SampleNoiseField::SampleNoiseField(const Image8& sample, std::uint64_t seed, int
   if (sample.empty() || sample.channels != 3) {
     throw core::InputError("the sample image has no RGB pixels");
   }
-  if (octaves < 1 || octaves > 12) throw core::UsageError("sample noise octaves must be in [1, 12]");
+  if (octaves < 1 || octaves > 12)
+    throw core::UsageError("sample noise octaves must be in [1, 12]");
   const auto pixel_count = static_cast<std::int64_t>(sample.width) * sample.height;
   double total = 0.0, amplitude = 1.0;
-  for (int o = 0; o < octaves; ++o, amplitude *= persistence) total += amplitude;
+  for (int o = 0; o < octaves; ++o, amplitude *= persistence)
+    total += amplitude;
   amplitude = 1.0;
   for (int o = 0; o < octaves; ++o, amplitude *= persistence) {
     // One independent stream per octave: adding octaves never changes the lower ones.
@@ -37,7 +41,8 @@ SampleNoiseField::SampleNoiseField(const Image8& sample, std::uint64_t seed, int
     lattice.colors.resize(kLatticeSize);
     for (auto& color : lattice.colors) {
       const auto index = static_cast<std::size_t>(rng.uniform_int(0, pixel_count - 1)) * 3;
-      color = {static_cast<float>(sample.pixels[index]), static_cast<float>(sample.pixels[index + 1]),
+      color = {static_cast<float>(sample.pixels[index]),
+               static_cast<float>(sample.pixels[index + 1]),
                static_cast<float>(sample.pixels[index + 2])};
     }
     std::vector<std::uint16_t> permutation(kLatticeSize);
@@ -46,7 +51,8 @@ SampleNoiseField::SampleNoiseField(const Image8& sample, std::uint64_t seed, int
       std::swap(permutation[i], permutation[rng.uniform_int(0, i)]);
     }
     lattice.permutation.resize(2 * kLatticeSize);
-    for (int i = 0; i < 2 * kLatticeSize; ++i) lattice.permutation[i] = permutation[i & kMask];
+    for (int i = 0; i < 2 * kLatticeSize; ++i)
+      lattice.permutation[i] = permutation[i & kMask];
     lattices_.push_back(std::move(lattice));
   }
 }
@@ -103,7 +109,8 @@ Rgb SampleNoiseField::color(double x, double y) const {
     const float u = fade(static_cast<float>(sx - fx)), v = fade(static_cast<float>(sy - fy));
     const Rgb c = mix(mix(at(lattice, X, Y), at(lattice, X + 1, Y), u),
                       mix(at(lattice, X, Y + 1), at(lattice, X + 1, Y + 1), u), v);
-    for (int k = 0; k < 3; ++k) sum[k] += lattice.weight * c[k];
+    for (int k = 0; k < 3; ++k)
+      sum[k] += lattice.weight * c[k];
     frequency *= 2.0;
   }
   return sum;
@@ -125,7 +132,8 @@ Rgb SampleNoiseField::color(double x, double y, double z) const {
     const Rgb far = mix(mix(at(lattice, X, Y, Z + 1), at(lattice, X + 1, Y, Z + 1), u),
                         mix(at(lattice, X, Y + 1, Z + 1), at(lattice, X + 1, Y + 1, Z + 1), u), v);
     const Rgb c = mix(near, far, w);
-    for (int k = 0; k < 3; ++k) sum[k] += lattice.weight * c[k];
+    for (int k = 0; k < 3; ++k)
+      sum[k] += lattice.weight * c[k];
     frequency *= 2.0;
   }
   return sum;
@@ -155,8 +163,8 @@ Image8 palette_sample(const std::vector<Rgb>& colors, const std::vector<double>&
     if (c + 1 == colors.size()) end = count;
     for (; pixel < end && pixel < count; ++pixel) {
       for (int k = 0; k < 3; ++k) {
-        image.pixels[3 * pixel + k] =
-            static_cast<std::uint8_t>(std::lround(std::fmin(255.0f, std::fmax(0.0f, colors[c][k]))));
+        image.pixels[3 * pixel + k] = static_cast<std::uint8_t>(
+            std::lround(std::fmin(255.0f, std::fmax(0.0f, colors[c][k]))));
       }
     }
   }

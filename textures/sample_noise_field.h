@@ -40,9 +40,9 @@ class SampleNoiseField {
  private:
   static constexpr int kLatticeSize = 4096;
   struct Lattice {
-    std::vector<Rgb> colors;              ///< kLatticeSize drawn sample pixels
+    std::vector<Rgb> colors;                 ///< kLatticeSize drawn sample pixels
     std::vector<std::uint16_t> permutation;  ///< kLatticeSize entries, twice, for hashing
-    float weight = 1.0f;                  ///< a_o / Σ a
+    float weight = 1.0f;                     ///< a_o / Σ a
   };
   const Rgb& at(const Lattice& lattice, int x, int y) const;
   const Rgb& at(const Lattice& lattice, int x, int y, int z) const;

@@ -34,7 +34,8 @@ BakedTextures bake_textures_into(core::Scenario& scenario, const ScenarioBakeOpt
   BakedTextures baked;
   std::set<std::string> used;
   int textured = 0;
-  for (const auto& object : scenario.objects) textured += !object.texture.empty();
+  for (const auto& object : scenario.objects)
+    textured += !object.texture.empty();
   progress.begin_stage("baking textures", textured);
   for (std::size_t o = 0; o < scenario.objects.size(); ++o) {
     core::SceneObject& object = scenario.objects[o];
@@ -42,7 +43,8 @@ BakedTextures bake_textures_into(core::Scenario& scenario, const ScenarioBakeOpt
     const std::string pointer = "/scenario/objects/" + std::to_string(o) + "/texture";
     const auto found = scenario.textures.find(object.texture);
     if (found == scenario.textures.end()) {
-      throw core::ValidationError("unknown texture id \"" + object.texture + "\"", {"", pointer, object.id});
+      throw core::ValidationError("unknown texture id \"" + object.texture + "\"",
+                                  {"", pointer, object.id});
     }
     core::TextureSpec spec = found->second;
     if (used.contains(spec.id)) {
@@ -55,10 +57,12 @@ BakedTextures bake_textures_into(core::Scenario& scenario, const ScenarioBakeOpt
     try {
       preset = &find_texture_preset(spec.preset);
     } catch (const core::UsageError& e) {
-      throw core::ValidationError(e.reason(), {"", "/scenario/textures/" + found->first + "/preset", object.id});
+      throw core::ValidationError(
+          e.reason(), {"", "/scenario/textures/" + found->first + "/preset", object.id});
     }
     if (object.surface.triangles.empty()) {
-      throw core::ValidationError("a textured object needs a visual surface", {"", pointer, object.id});
+      throw core::ValidationError("a textured object needs a visual surface",
+                                  {"", pointer, object.id});
     }
 
     ObjectBake record{object.id, spec.id, TextureMapping::OwnUvs, 0, {}};
@@ -72,11 +76,13 @@ BakedTextures bake_textures_into(core::Scenario& scenario, const ScenarioBakeOpt
         record.charts = atlas.chart_count;
       }
     }
-    if (object.surface.normals.size() != object.surface.vertices.size()) core::compute_vertex_normals(object.surface);
+    if (object.surface.normals.size() != object.surface.vertices.size())
+      core::compute_vertex_normals(object.surface);
 
     const SurfaceProjector projector(object.surface);
-    const SolidTissueTexture solid(*preset, spec.seed, options.texture_scale, options.sample,
-                                   grow_surface_vessels(*preset, projector, options.texture_scale, spec.seed));
+    const SolidTissueTexture solid(
+        *preset, spec.seed, options.texture_scale, options.sample,
+        grow_surface_vessels(*preset, projector, options.texture_scale, spec.seed));
     TextureMaps maps;
     if (record.mapping == TextureMapping::VertexColors) {
       bake_vertex_colors(object.surface, solid);
@@ -89,7 +95,8 @@ BakedTextures bake_textures_into(core::Scenario& scenario, const ScenarioBakeOpt
       maps = synthesize_texture(*preset, flat);
     } else {
       record.distortion = measure_uv_distortion(object.surface);
-      maps = bake_surface_texture(object.surface, solid, {spec.width, spec.height, options.gutter, options.threads});
+      maps = bake_surface_texture(object.surface, solid,
+                                  {spec.width, spec.height, options.gutter, options.threads});
     }
     spec.maps.clear();
     const std::pair<const char*, const Image8*> files[] = {

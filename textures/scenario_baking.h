@@ -16,10 +16,11 @@ namespace viscera::textures {
 
 /// How baking treats the scenario's surfaces.
 struct ScenarioBakeOptions {
-  double texture_scale = 0.05;    ///< m of surface per texture width of the preset
-  const Image8* sample = nullptr; ///< user sample image for every texture, or the presets' palettes
-  int gutter = 4;                 ///< texels around every chart
-  bool keep_topology = false;     ///< never split seam vertices (see bake_textures_into)
+  double texture_scale = 0.05;  ///< m of surface per texture width of the preset
+  const Image8* sample =
+      nullptr;                 ///< user sample image for every texture, or the presets' palettes
+  int gutter = 4;              ///< texels around every chart
+  bool keep_topology = false;  ///< never split seam vertices (see bake_textures_into)
   int threads = 0;
 };
 

@@ -20,7 +20,8 @@ constexpr std::uint64_t kColorStream = 0, kGrainStream = 1, kWetnessStream = 2, 
 
 double amplitude_sum(int octaves, double persistence) {
   double sum = 0.0, amplitude = 1.0;
-  for (int o = 0; o < octaves; ++o, amplitude *= persistence) sum += amplitude;
+  for (int o = 0; o < octaves; ++o, amplitude *= persistence)
+    sum += amplitude;
   return sum;
 }
 
@@ -37,7 +38,8 @@ std::vector<std::vector<core::TurtleSegment>> grow_surface_vessels(const Texture
     const core::Lsystem grammar = core::Lsystem::parse(spec.grammar, "vessel grammar");
     const std::uint64_t layer_seed = core::Rng::for_stream(seed, kVesselStream + l).next_u64();
     // As many trees per square texture width as the flat texture has.
-    const int trees = static_cast<int>(std::lround(spec.trees * surface.area() / (texture_scale * texture_scale)));
+    const int trees = static_cast<int>(
+        std::lround(spec.trees * surface.area() / (texture_scale * texture_scale)));
     const double step = spec.step * texture_scale, width = spec.width * texture_scale;
     std::vector<core::TurtleSegment> strokes;
     for (int tree = 0; tree < trees; ++tree) {
@@ -98,7 +100,8 @@ struct SolidTissueTexture::VesselIndex {
   std::unordered_map<std::uint64_t, std::vector<int>> cells;
 
   static std::uint64_t key(long long x, long long y, long long z) {
-    return (static_cast<std::uint64_t>(x + 1048576) << 42) | (static_cast<std::uint64_t>(y + 1048576) << 21) |
+    return (static_cast<std::uint64_t>(x + 1048576) << 42) |
+           (static_cast<std::uint64_t>(y + 1048576) << 21) |
            static_cast<std::uint64_t>(z + 1048576);
   }
   long long coordinate(double v) const { return static_cast<long long>(std::floor(v / cell)); }
@@ -109,15 +112,18 @@ struct SolidTissueTexture::VesselIndex {
       length += (st.end - st.start).norm();
       widest = std::max({widest, st.start_width, st.end_width});
     }
-    cell = std::max(strokes.empty() ? 1.0 : 2.0 * length / static_cast<double>(strokes.size()), 2.0 * widest);
+    cell = std::max(strokes.empty() ? 1.0 : 2.0 * length / static_cast<double>(strokes.size()),
+                    2.0 * widest);
     if (!(cell > 0.0)) cell = 1.0;
     for (std::size_t i = 0; i < strokes.size(); ++i) {
       const auto& st = strokes[i];
       const double pad = 0.5 * std::max(st.start_width, st.end_width) + 0.5 * cell;
-      const Vec3 lo = st.start.cwiseMin(st.end) - Vec3::Constant(pad), hi = st.start.cwiseMax(st.end) + Vec3::Constant(pad);
+      const Vec3 lo = st.start.cwiseMin(st.end) - Vec3::Constant(pad),
+                 hi = st.start.cwiseMax(st.end) + Vec3::Constant(pad);
       for (long long x = coordinate(lo.x()); x <= coordinate(hi.x()); ++x)
         for (long long y = coordinate(lo.y()); y <= coordinate(hi.y()); ++y)
-          for (long long z = coordinate(lo.z()); z <= coordinate(hi.z()); ++z) cells[key(x, y, z)].push_back(static_cast<int>(i));
+          for (long long z = coordinate(lo.z()); z <= coordinate(hi.z()); ++z)
+            cells[key(x, y, z)].push_back(static_cast<int>(i));
     }
   }
 };
@@ -136,7 +142,8 @@ SolidTissueTexture::SolidTissueTexture(const TexturePreset& preset, std::uint64_
   if (!vessel_layers.empty() && vessel_layers.size() != preset.vessels.size()) {
     throw core::UsageError("one stroke list per vessel layer of the preset is needed");
   }
-  for (auto& layer : vessel_layers) vessels_.push_back(std::make_unique<VesselIndex>(std::move(layer)));
+  for (auto& layer : vessel_layers)
+    vessels_.push_back(std::make_unique<VesselIndex>(std::move(layer)));
 }
 
 SolidTissueTexture::~SolidTissueTexture() = default;
@@ -147,7 +154,8 @@ void SolidTissueTexture::vessel_coverage(const Vec3& p, double texel_size, float
     coverage[l] = 0.0f;
     depth[l] = 0.0f;
     const VesselIndex& index = *vessels_[l];
-    const auto it = index.cells.find(VesselIndex::key(index.coordinate(p.x()), index.coordinate(p.y()), index.coordinate(p.z())));
+    const auto it = index.cells.find(VesselIndex::key(
+        index.coordinate(p.x()), index.coordinate(p.y()), index.coordinate(p.z())));
     if (it == index.cells.end()) continue;
     for (const int i : it->second) {
       const auto& s = index.strokes[i];
@@ -158,9 +166,11 @@ void SolidTissueTexture::vessel_coverage(const Vec3& p, double texel_size, float
       const double w = s.start_width + t * (s.end_width - s.start_width);
       // The flat painter's rule in texel units: a one-texel ramp, thin strokes fainter.
       const double footprint = std::max(w, texel_size);
-      const auto c = static_cast<float>(std::clamp((0.5 * footprint - distance) / texel_size + 0.5, 0.0, 1.0) *
-                                        std::min(w / texel_size, 1.0));
-      if (c > coverage[l] || (c == coverage[l] && c > 0.0f && static_cast<float>(s.depth) < depth[l])) {
+      const auto c =
+          static_cast<float>(std::clamp((0.5 * footprint - distance) / texel_size + 0.5, 0.0, 1.0) *
+                             std::min(w / texel_size, 1.0));
+      if (c > coverage[l] ||
+          (c == coverage[l] && c > 0.0f && static_cast<float>(s.depth) < depth[l])) {
         coverage[l] = c;
         depth[l] = static_cast<float>(s.depth);
       }
@@ -174,7 +184,8 @@ void SolidTissueTexture::texel(const Vec3& p, double texel_size, Rgb& albedo, fl
   const Rgb base = colors_.color(q.x() * preset_.color_frequency, q.y() * preset_.color_frequency,
                                  q.z() * preset_.color_frequency);
   const Vec3 g = q * preset_.grain_frequency;
-  const double turbulence = grain_.turbulence(g.x(), g.y(), g.z(), preset_.grain_octaves, preset_.grain_persistence);
+  const double turbulence =
+      grain_.turbulence(g.x(), g.y(), g.z(), preset_.grain_octaves, preset_.grain_persistence);
   const Vec3 w = q * preset_.specular_frequency;
   const double wet = wetness_.fractal_sum(w.x(), w.y(), w.z(), 3, 0.5);
   std::vector<float> coverage(vessels_.size()), depth(vessels_.size());
@@ -198,13 +209,15 @@ void SolidTissueTexture::texel(const Vec3& p, double texel_size, Rgb& albedo, fl
 
 float SolidTissueTexture::height(const Vec3& p, double texel_size) const {
   const Vec3 g = p / scale_ * preset_.grain_frequency;
-  const double turbulence = grain_.turbulence(g.x(), g.y(), g.z(), preset_.grain_octaves, preset_.grain_persistence) /
-                            amplitude_sum(preset_.grain_octaves, preset_.grain_persistence);
+  const double turbulence =
+      grain_.turbulence(g.x(), g.y(), g.z(), preset_.grain_octaves, preset_.grain_persistence) /
+      amplitude_sum(preset_.grain_octaves, preset_.grain_persistence);
   float h = static_cast<float>(preset_.grain_height * turbulence);
   std::vector<float> coverage(vessels_.size()), depth(vessels_.size());
   vessel_coverage(p, texel_size, coverage.data(), depth.data());
   for (std::size_t l = 0; l < vessels_.size(); ++l) {
-    h += static_cast<float>(preset_.vessels[l].height) * coverage[l] * (1.0f - std::clamp(depth[l], 0.0f, 1.0f));
+    h += static_cast<float>(preset_.vessels[l].height) * coverage[l] *
+         (1.0f - std::clamp(depth[l], 0.0f, 1.0f));
   }
   return h;
 }

@@ -20,7 +20,8 @@ class SurfaceShader {
   virtual ~SurfaceShader() = default;
   /// Shades the surface point p (m) with unit normal n; texel_size (m) is the footprint of the
   /// sample, for anti-aliasing and finite differences. Safe to call from several threads.
-  virtual SurfaceSample shade(const core::Vec3& p, const core::Vec3& n, double texel_size) const = 0;
+  virtual SurfaceSample shade(const core::Vec3& p, const core::Vec3& n,
+                              double texel_size) const = 0;
 };
 
 }  // namespace viscera::textures

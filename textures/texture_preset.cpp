@@ -29,7 +29,8 @@ double number(const json& j, const char* key, double fallback, double lo, double
   return value;
 }
 
-int integer(const json& j, const char* key, int fallback, int lo, int hi, const std::string& pointer) {
+int integer(const json& j, const char* key, int fallback, int lo, int hi,
+            const std::string& pointer) {
   const double value = number(j, key, fallback, lo, hi, pointer);
   if (value != std::floor(value)) invalid(pointer + "/" + key, "must be an integer");
   return static_cast<int>(value);
@@ -51,7 +52,9 @@ Rgb color(const json& j, const char* key, const Rgb& fallback, const std::string
   return c;
 }
 
-json rgb_json(const Rgb& c) { return json::array({c[0], c[1], c[2]}); }
+json rgb_json(const Rgb& c) {
+  return json::array({c[0], c[1], c[2]});
+}
 
 VesselLayerSpec vessel_layer(const json& j, const std::string& p) {
   if (!j.is_object()) invalid(p, "must be an object");
@@ -123,9 +126,11 @@ TexturePreset texture_preset_from_json(const json& j, const std::string& name,
   }
   const json none = json::object();
   const json& field = j.contains("color_field") ? j.at("color_field") : none;
-  t.color_frequency = number(field, "frequency", t.color_frequency, 0.01, 1024.0, p + "/color_field");
+  t.color_frequency =
+      number(field, "frequency", t.color_frequency, 0.01, 1024.0, p + "/color_field");
   t.color_octaves = integer(field, "octaves", t.color_octaves, 1, 12, p + "/color_field");
-  t.color_persistence = number(field, "persistence", t.color_persistence, 0.0, 1.0, p + "/color_field");
+  t.color_persistence =
+      number(field, "persistence", t.color_persistence, 0.0, 1.0, p + "/color_field");
   const json& grain = j.contains("grain") ? j.at("grain") : none;
   t.grain_frequency = number(grain, "frequency", t.grain_frequency, 0.01, 4096.0, p + "/grain");
   t.grain_octaves = integer(grain, "octaves", t.grain_octaves, 1, 12, p + "/grain");
@@ -136,8 +141,10 @@ TexturePreset texture_preset_from_json(const json& j, const std::string& name,
   t.normal_strength = number(j, "normal_strength", t.normal_strength, 0.0, 10.0, p);
   const json& specular = j.contains("specular") ? j.at("specular") : none;
   t.specular_base = number(specular, "base", t.specular_base, 0.0, 1.0, p + "/specular");
-  t.specular_variation = number(specular, "variation", t.specular_variation, 0.0, 1.0, p + "/specular");
-  t.specular_frequency = number(specular, "frequency", t.specular_frequency, 0.01, 1024.0, p + "/specular");
+  t.specular_variation =
+      number(specular, "variation", t.specular_variation, 0.0, 1.0, p + "/specular");
+  t.specular_frequency =
+      number(specular, "frequency", t.specular_frequency, 0.01, 1024.0, p + "/specular");
   if (const auto vessels = j.find("vessels"); vessels != j.end()) {
     if (!vessels->is_array()) invalid(p + "/vessels", "must be an array");
     for (std::size_t i = 0; i < vessels->size(); ++i) {
@@ -154,33 +161,53 @@ json texture_preset_to_json(const TexturePreset& t) {
   }
   json vessels = json::array();
   for (const auto& v : t.vessels) {
-    vessels.push_back({{"grammar", v.grammar}, {"generations", v.generations}, {"trees", v.trees},
-                       {"step", v.step}, {"width", v.width}, {"angle", v.angle},
-                       {"angle_jitter", v.angle_jitter}, {"subdivisions", v.subdivisions},
-                       {"wiggle", v.wiggle}, {"direction", v.direction},
-                       {"direction_jitter", v.direction_jitter}, {"taper", v.taper},
-                       {"width_factor", v.width_factor}, {"depth_step", v.depth_step},
-                       {"color", rgb_json(v.color)}, {"deep_color", rgb_json(v.deep_color)},
-                       {"opacity", v.opacity}, {"depth_fade", v.depth_fade}, {"height", v.height},
+    vessels.push_back({{"grammar", v.grammar},
+                       {"generations", v.generations},
+                       {"trees", v.trees},
+                       {"step", v.step},
+                       {"width", v.width},
+                       {"angle", v.angle},
+                       {"angle_jitter", v.angle_jitter},
+                       {"subdivisions", v.subdivisions},
+                       {"wiggle", v.wiggle},
+                       {"direction", v.direction},
+                       {"direction_jitter", v.direction_jitter},
+                       {"taper", v.taper},
+                       {"width_factor", v.width_factor},
+                       {"depth_step", v.depth_step},
+                       {"color", rgb_json(v.color)},
+                       {"deep_color", rgb_json(v.deep_color)},
+                       {"opacity", v.opacity},
+                       {"depth_fade", v.depth_fade},
+                       {"height", v.height},
                        {"wetness", v.wetness}});
   }
   return {{"name", t.name},
           {"description", t.description},
           {"palette", palette},
-          {"color_field", {{"frequency", t.color_frequency}, {"octaves", t.color_octaves},
-                           {"persistence", t.color_persistence}}},
-          {"grain", {{"frequency", t.grain_frequency}, {"octaves", t.grain_octaves},
-                     {"persistence", t.grain_persistence}, {"contrast", t.grain_contrast},
-                     {"height", t.grain_height}, {"aspect", t.grain_aspect}}},
+          {"color_field",
+           {{"frequency", t.color_frequency},
+            {"octaves", t.color_octaves},
+            {"persistence", t.color_persistence}}},
+          {"grain",
+           {{"frequency", t.grain_frequency},
+            {"octaves", t.grain_octaves},
+            {"persistence", t.grain_persistence},
+            {"contrast", t.grain_contrast},
+            {"height", t.grain_height},
+            {"aspect", t.grain_aspect}}},
           {"normal_strength", t.normal_strength},
-          {"specular", {{"base", t.specular_base}, {"variation", t.specular_variation},
-                        {"frequency", t.specular_frequency}}},
+          {"specular",
+           {{"base", t.specular_base},
+            {"variation", t.specular_variation},
+            {"frequency", t.specular_frequency}}},
           {"vessels", vessels}};
 }
 
 std::vector<std::string> texture_preset_names() {
   std::vector<std::string> names;
-  for (const auto& preset : builtins().presets) names.push_back(preset.name);
+  for (const auto& preset : builtins().presets)
+    names.push_back(preset.name);
   return names;
 }
 
@@ -189,7 +216,8 @@ const TexturePreset& find_texture_preset(const std::string& name) {
     if (preset.name == name) return preset;
   }
   std::string known;
-  for (const auto& n : texture_preset_names()) known += (known.empty() ? "" : ", ") + n;
+  for (const auto& n : texture_preset_names())
+    known += (known.empty() ? "" : ", ") + n;
   throw core::UsageError("unknown texture preset \"" + name + "\" (known: " + known + ")");
 }
 

@@ -15,12 +15,12 @@ namespace viscera::textures {
 /// What to synthesise.
 struct TextureOptions {
   std::uint64_t seed = 1;
-  int width = 1024;               ///< pixels
-  int height = 1024;              ///< pixels
-  const Image8* sample = nullptr; ///< user sample image (RGB); nullptr = the preset's palette
-  bool vessels = true;            ///< paint the preset's vessel layers
+  int width = 1024;                 ///< pixels
+  int height = 1024;                ///< pixels
+  const Image8* sample = nullptr;   ///< user sample image (RGB); nullptr = the preset's palette
+  bool vessels = true;              ///< paint the preset's vessel layers
   bool normal_and_specular = true;  ///< also make the normal and specular maps
-  int threads = 0;                ///< 0 = one per hardware thread; never changes the result
+  int threads = 0;                  ///< 0 = one per hardware thread; never changes the result
 };
 
 /// The maps of one texture. normal: RGB = (n + 1)/2 in tangent space, +u to the right, +v up

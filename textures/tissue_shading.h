@@ -41,13 +41,16 @@ inline void shade_tissue(const TexturePreset& preset, const TissueFields& f, flo
   for (int i = 0; i < f.count; ++i) {
     const float t = static_cast<float>(f.turbulence[i]) * turbulence_scale;
     const float gain = 1.0f + contrast * (kTurbulenceMean - t);
-    for (int k = 0; k < 3; ++k) albedo_rgb[3 * i + k] = f.base_rgb[3 * i + k] * gain;
+    for (int k = 0; k < 3; ++k)
+      albedo_rgb[3 * i + k] = f.base_rgb[3 * i + k] * gain;
     height[i] = grain_height * t;
   }
   if (f.wetness_noise) {
-    for (int i = 0; i < f.count; ++i) wetness[i] = wet_base + wet_variation * static_cast<float>(f.wetness_noise[i]);
+    for (int i = 0; i < f.count; ++i)
+      wetness[i] = wet_base + wet_variation * static_cast<float>(f.wetness_noise[i]);
   } else {
-    for (int i = 0; i < f.count; ++i) wetness[i] = wet_base;
+    for (int i = 0; i < f.count; ++i)
+      wetness[i] = wet_base;
   }
   for (std::size_t l = 0; l < preset.vessels.size(); ++l) {
     if (!f.coverage || !f.coverage[l]) continue;
@@ -72,7 +75,8 @@ inline void shade_tissue(const TexturePreset& preset, const TissueFields& f, flo
       wetness[i] += wet * c;
     }
   }
-  for (int i = 0; i < f.count; ++i) wetness[i] = std::clamp(wetness[i], 0.0f, 1.0f);
+  for (int i = 0; i < f.count; ++i)
+    wetness[i] = std::clamp(wetness[i], 0.0f, 1.0f);
 }
 
 }  // namespace viscera::textures

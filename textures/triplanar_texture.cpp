@@ -11,7 +11,8 @@ using core::Vec3;
 
 TriplanarTexture::TriplanarTexture(TextureMaps maps, double texture_scale, double sharpness)
     : maps_(std::move(maps)), scale_(texture_scale), sharpness_(sharpness) {
-  if (maps_.albedo.empty() || maps_.albedo.channels != 3) throw core::UsageError("triplanar projection needs an RGB albedo map");
+  if (maps_.albedo.empty() || maps_.albedo.channels != 3)
+    throw core::UsageError("triplanar projection needs an RGB albedo map");
   if (!(texture_scale > 0.0)) throw core::UsageError("texture scale must be positive");
 }
 
@@ -25,8 +26,11 @@ void TriplanarTexture::sample(const Image8& image, double u, double v, float* ou
   const int xs[2] = {wrap(x0, image.width), wrap(x0 + 1, image.width)};
   const int ys[2] = {wrap(y0, image.height), wrap(y0 + 1, image.height)};
   for (int c = 0; c < image.channels; ++c) {
-    const auto at = [&](int i, int j) { return static_cast<float>(image.row(ys[j])[xs[i] * image.channels + c]); };
-    out[c] = (at(0, 0) * (1 - fx) + at(1, 0) * fx) * (1 - fy) + (at(0, 1) * (1 - fx) + at(1, 1) * fx) * fy;
+    const auto at = [&](int i, int j) {
+      return static_cast<float>(image.row(ys[j])[xs[i] * image.channels + c]);
+    };
+    out[c] = (at(0, 0) * (1 - fx) + at(1, 0) * fx) * (1 - fy) +
+             (at(0, 1) * (1 - fx) + at(1, 1) * fx) * fy;
   }
 }
 
@@ -47,7 +51,8 @@ SurfaceSample TriplanarTexture::shade(const Vec3& p, const Vec3& n, double /*tex
     const double u = side * q[a], v = q[b];
     float rgb[3];
     sample(maps_.albedo, u, v, rgb);
-    for (int k = 0; k < 3; ++k) s.albedo[k] += static_cast<float>(weight[axis]) * rgb[k];
+    for (int k = 0; k < 3; ++k)
+      s.albedo[k] += static_cast<float>(weight[axis]) * rgb[k];
     float specular = 127.5f;
     if (!maps_.specular.empty()) sample(maps_.specular, u, v, &specular);
     wet += weight[axis] * static_cast<double>(specular) / 255.0;
@@ -71,7 +76,8 @@ void bake_vertex_colors(core::SurfaceMesh& mesh, const SurfaceShader& shader) {
   if (mesh.normals.size() != mesh.vertices.size()) core::compute_vertex_normals(mesh);
   // The mean edge length is the footprint of one vertex sample.
   double edge = 0.0;
-  for (const auto& t : mesh.triangles) edge += (mesh.vertices[t[1]] - mesh.vertices[t[0]]).norm();
+  for (const auto& t : mesh.triangles)
+    edge += (mesh.vertices[t[1]] - mesh.vertices[t[0]]).norm();
   edge = mesh.triangles.empty() ? 1e-3 : edge / static_cast<double>(mesh.triangles.size());
   auto& r = mesh.vertex_attributes["albedo_r"];
   auto& g = mesh.vertex_attributes["albedo_g"];

@@ -27,11 +27,11 @@ namespace SMP = CGAL::Surface_mesh_parameterization;
 /// One chart while the atlas is built: its mesh vertices and their flattened positions.
 struct Chart {
   std::vector<int> triangles;
-  std::vector<int> vertices;           ///< global vertex indices
-  std::map<int, int> local;            ///< global → local
-  std::vector<Vec2> uv;                ///< per local vertex; metres after scaling
-  Vec2 size = Vec2::Zero();            ///< bounding box after rotation
-  Vec2 offset = Vec2::Zero();          ///< placement in the atlas (metres)
+  std::vector<int> vertices;   ///< global vertex indices
+  std::map<int, int> local;    ///< global → local
+  std::vector<Vec2> uv;        ///< per local vertex; metres after scaling
+  Vec2 size = Vec2::Zero();    ///< bounding box after rotation
+  Vec2 offset = Vec2::Zero();  ///< placement in the atlas (metres)
 };
 
 double signed_area(const Vec2& a, const Vec2& b, const Vec2& c) {
@@ -82,12 +82,14 @@ std::vector<Vec2> project(const core::SurfaceMesh& mesh, const Chart& chart) {
   Vec3 normal = Vec3::Zero();
   for (const int t : chart.triangles) {
     const auto& tri = mesh.triangles[t];
-    normal += (mesh.vertices[tri[1]] - mesh.vertices[tri[0]]).cross(mesh.vertices[tri[2]] - mesh.vertices[tri[0]]);
+    normal += (mesh.vertices[tri[1]] - mesh.vertices[tri[0]])
+                  .cross(mesh.vertices[tri[2]] - mesh.vertices[tri[0]]);
   }
   normal = normal.norm() > 0.0 ? Vec3(normal.normalized()) : Vec3::UnitZ();
   const Vec3 e1 = normal.unitOrthogonal(), e2 = normal.cross(e1);
   std::vector<Vec2> uv;
-  for (const int v : chart.vertices) uv.emplace_back(mesh.vertices[v].dot(e1), mesh.vertices[v].dot(e2));
+  for (const int v : chart.vertices)
+    uv.emplace_back(mesh.vertices[v].dot(e1), mesh.vertices[v].dot(e2));
   return uv;
 }
 
@@ -97,29 +99,37 @@ void normalise_chart(const core::SurfaceMesh& mesh, Chart& chart) {
   double area_2d = 0.0, area_3d = 0.0;
   for (const int t : chart.triangles) {
     const auto& tri = mesh.triangles[t];
-    area_2d += signed_area(chart.uv[chart.local[tri[0]]], chart.uv[chart.local[tri[1]]], chart.uv[chart.local[tri[2]]]);
-    area_3d += 0.5 * (mesh.vertices[tri[1]] - mesh.vertices[tri[0]]).cross(mesh.vertices[tri[2]] - mesh.vertices[tri[0]]).norm();
+    area_2d += signed_area(chart.uv[chart.local[tri[0]]], chart.uv[chart.local[tri[1]]],
+                           chart.uv[chart.local[tri[2]]]);
+    area_3d += 0.5 * (mesh.vertices[tri[1]] - mesh.vertices[tri[0]])
+                         .cross(mesh.vertices[tri[2]] - mesh.vertices[tri[0]])
+                         .norm();
   }
   if (area_2d < 0.0) {
-    for (auto& p : chart.uv) p.x() = -p.x();
+    for (auto& p : chart.uv)
+      p.x() = -p.x();
     area_2d = -area_2d;
   }
   const double scale = area_2d > 0.0 ? std::sqrt(area_3d / area_2d) : 1.0;
   Vec2 mean = Vec2::Zero();
-  for (auto& p : chart.uv) mean += p / static_cast<double>(chart.uv.size());
+  for (auto& p : chart.uv)
+    mean += p / static_cast<double>(chart.uv.size());
   Eigen::Matrix2d covariance = Eigen::Matrix2d::Zero();
-  for (const auto& p : chart.uv) covariance += (p - mean) * (p - mean).transpose();
+  for (const auto& p : chart.uv)
+    covariance += (p - mean) * (p - mean).transpose();
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eigen(covariance);
   Vec2 axis = eigen.eigenvectors().col(1);
   if (!axis.allFinite() || axis.norm() == 0.0) axis = Vec2::UnitX();
-  const Eigen::Matrix2d rotation = (Eigen::Matrix2d() << axis.x(), axis.y(), -axis.y(), axis.x()).finished();
+  const Eigen::Matrix2d rotation =
+      (Eigen::Matrix2d() << axis.x(), axis.y(), -axis.y(), axis.x()).finished();
   Vec2 lo = Vec2::Constant(INFINITY), hi = Vec2::Constant(-INFINITY);
   for (auto& p : chart.uv) {
     p = scale * (rotation * (p - mean));
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
   }
-  for (auto& p : chart.uv) p -= lo;
+  for (auto& p : chart.uv)
+    p -= lo;
   chart.size = hi - lo;
 }
 
@@ -127,7 +137,8 @@ void normalise_chart(const core::SurfaceMesh& mesh, Chart& chart) {
 /// the side of the square it fits.
 double pack_rows(std::vector<Chart>& charts, double g, double row_limit) {
   std::vector<std::size_t> order(charts.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  for (std::size_t i = 0; i < order.size(); ++i)
+    order[i] = i;
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
     return charts[a].size.y() > charts[b].size.y();
   });
@@ -169,8 +180,10 @@ double pack(std::vector<Chart>& charts, double g) {
 }  // namespace
 
 UvAtlas build_uv_atlas(const core::SurfaceMesh& input, const UvAtlasOptions& options) {
-  if (input.triangles.empty()) throw core::InputError("cannot build a texture atlas for a mesh without triangles");
-  if (options.resolution < 16 || options.gutter < 0) throw core::UsageError("atlas resolution ≥ 16 and gutter ≥ 0 needed");
+  if (input.triangles.empty())
+    throw core::InputError("cannot build a texture atlas for a mesh without triangles");
+  if (options.resolution < 16 || options.gutter < 0)
+    throw core::UsageError("atlas resolution ≥ 16 and gutter ≥ 0 needed");
   core::SurfaceMesh mesh = input;
   if (mesh.normals.size() != mesh.vertices.size()) core::compute_vertex_normals(mesh);
 
@@ -180,7 +193,8 @@ UvAtlas build_uv_atlas(const core::SurfaceMesh& input, const UvAtlasOptions& opt
     Chart& chart = charts[segmentation.chart_of_triangle[t]];
     chart.triangles.push_back(static_cast<int>(t));
     for (const int v : mesh.triangles[t]) {
-      if (chart.local.emplace(v, static_cast<int>(chart.vertices.size())).second) chart.vertices.push_back(v);
+      if (chart.local.emplace(v, static_cast<int>(chart.vertices.size())).second)
+        chart.vertices.push_back(v);
     }
   }
   UvAtlas atlas;
@@ -192,10 +206,12 @@ UvAtlas build_uv_atlas(const core::SurfaceMesh& input, const UvAtlasOptions& opt
       double area = 0.0;
       for (const int t : chart.triangles) {
         const auto& tri = mesh.triangles[t];
-        area += signed_area(chart.uv[chart.local[tri[0]]], chart.uv[chart.local[tri[1]]], chart.uv[chart.local[tri[2]]]);
+        area += signed_area(chart.uv[chart.local[tri[0]]], chart.uv[chart.local[tri[1]]],
+                            chart.uv[chart.local[tri[2]]]);
       }
       if (area < 0.0) {
-        for (auto& p : chart.uv) p.x() = -p.x();
+        for (auto& p : chart.uv)
+          p.x() = -p.x();
       }
       const int lscm_flips = flipped_triangles(mesh, chart);
       Chart alternative = chart;
@@ -213,7 +229,8 @@ UvAtlas build_uv_atlas(const core::SurfaceMesh& input, const UvAtlasOptions& opt
 
   // The gutter is measured in texels of the final atlas, whose side depends on the packing.
   double area = 0.0;
-  for (const auto& c : charts) area += c.size.x() * c.size.y();
+  for (const auto& c : charts)
+    area += c.size.x() * c.size.y();
   double gutter = options.gutter * std::sqrt(area) / options.resolution;
   double side = pack(charts, gutter);
   for (int round = 0; round < 8 && gutter < options.gutter * side / options.resolution; ++round) {
@@ -223,18 +240,21 @@ UvAtlas build_uv_atlas(const core::SurfaceMesh& input, const UvAtlasOptions& opt
 
   std::map<std::pair<int, int>, int> atlas_vertex;  // (original vertex, chart) → atlas vertex
   atlas.mesh.triangles.resize(mesh.triangles.size());
-  for (auto& [name, values] : mesh.vertex_attributes) atlas.mesh.vertex_attributes[name];
+  for (auto& [name, values] : mesh.vertex_attributes)
+    atlas.mesh.vertex_attributes[name];
   for (std::size_t c = 0; c < charts.size(); ++c) {
     const Chart& chart = charts[c];
     for (const int t : chart.triangles) {
       for (int k = 0; k < 3; ++k) {
         const int v = mesh.triangles[t][k];
-        const auto [it, inserted] = atlas_vertex.emplace(std::pair{v, static_cast<int>(c)}, static_cast<int>(atlas.mesh.vertices.size()));
+        const auto [it, inserted] = atlas_vertex.emplace(
+            std::pair{v, static_cast<int>(c)}, static_cast<int>(atlas.mesh.vertices.size()));
         if (inserted) {
           atlas.mesh.vertices.push_back(mesh.vertices[v]);
           atlas.mesh.normals.push_back(mesh.normals[v]);
           atlas.mesh.uvs.push_back((chart.uv[chart.local.at(v)] + chart.offset) / side);
-          for (auto& [name, values] : mesh.vertex_attributes) atlas.mesh.vertex_attributes[name].push_back(values[v]);
+          for (auto& [name, values] : mesh.vertex_attributes)
+            atlas.mesh.vertex_attributes[name].push_back(values[v]);
           atlas.original_vertex.push_back(v);
         }
         atlas.mesh.triangles[t][k] = it->second;

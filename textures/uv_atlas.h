@@ -20,11 +20,11 @@ struct UvAtlasOptions {
 /// The surface cut along its seams: vertices on a seam appear once per chart. Triangles keep
 /// their order; positions, normals and vertex attributes are copied from the original vertex.
 struct UvAtlas {
-  core::SurfaceMesh mesh;             ///< with uvs in [0, 1]²
-  std::vector<int> original_vertex;   ///< per atlas vertex
+  core::SurfaceMesh mesh;            ///< with uvs in [0, 1]²
+  std::vector<int> original_vertex;  ///< per atlas vertex
   std::vector<int> chart_of_triangle;
   int chart_count = 0;
-  int lscm_fallbacks = 0;             ///< charts flattened by projection because LSCM failed or folded
+  int lscm_fallbacks = 0;  ///< charts flattened by projection because LSCM failed or folded
 };
 
 /// Builds the atlas. The input needs at least one triangle; normals are computed when absent so
@@ -34,13 +34,13 @@ UvAtlas build_uv_atlas(const core::SurfaceMesh& mesh, const UvAtlasOptions& opti
 /// How much a parameterisation distorts. Triangle measures are area-weighted over the surface
 /// after scaling the whole map to the surface's area, so a perfect map has 1 everywhere.
 struct UvDistortion {
-  double l2_stretch = 0.0;          ///< Sander's L² stretch: √(Σ A·(Γ²+γ²)/2 / Σ A), ≥ 1
-  double mean_conformal = 0.0;      ///< mean Γ/γ (angle distortion), ≥ 1
+  double l2_stretch = 0.0;      ///< Sander's L² stretch: √(Σ A·(Γ²+γ²)/2 / Σ A), ≥ 1
+  double mean_conformal = 0.0;  ///< mean Γ/γ (angle distortion), ≥ 1
   double max_conformal = 0.0;
-  double area_ratio_p05 = 0.0;      ///< 5th percentile of texel area per surface area (1 = even)
-  double area_ratio_p95 = 0.0;      ///< 95th percentile
-  int flipped = 0;                  ///< triangles with non-positive UV area
-  int degenerate = 0;               ///< triangles with zero 3D area (skipped)
+  double area_ratio_p05 = 0.0;  ///< 5th percentile of texel area per surface area (1 = even)
+  double area_ratio_p95 = 0.0;  ///< 95th percentile
+  int flipped = 0;              ///< triangles with non-positive UV area
+  int degenerate = 0;           ///< triangles with zero 3D area (skipped)
 };
 
 /// Measures the distortion of mesh.uvs. Throws core::UsageError when there are no UVs.

@@ -10,21 +10,26 @@ namespace {
 
 using Edge = std::pair<int, int>;
 
-Edge undirected(int a, int b) { return a < b ? Edge{a, b} : Edge{b, a}; }
+Edge undirected(int a, int b) {
+  return a < b ? Edge{a, b} : Edge{b, a};
+}
 
 /// Triangles across each edge of each triangle (−1 at borders and non-manifold edges).
 std::vector<std::array<int, 3>> triangle_neighbours(const core::SurfaceMesh& mesh) {
   std::map<Edge, std::vector<int>> edge_faces;
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     for (int e = 0; e < 3; ++e) {
-      edge_faces[undirected(mesh.triangles[t][e], mesh.triangles[t][(e + 1) % 3])].push_back(static_cast<int>(t));
+      edge_faces[undirected(mesh.triangles[t][e], mesh.triangles[t][(e + 1) % 3])].push_back(
+          static_cast<int>(t));
     }
   }
   std::vector<std::array<int, 3>> neighbours(mesh.triangles.size(), {-1, -1, -1});
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     for (int e = 0; e < 3; ++e) {
-      const auto& faces = edge_faces[undirected(mesh.triangles[t][e], mesh.triangles[t][(e + 1) % 3])];
-      if (faces.size() == 2) neighbours[t][e] = faces[0] == static_cast<int>(t) ? faces[1] : faces[0];
+      const auto& faces =
+          edge_faces[undirected(mesh.triangles[t][e], mesh.triangles[t][(e + 1) % 3])];
+      if (faces.size() == 2)
+        neighbours[t][e] = faces[0] == static_cast<int>(t) ? faces[1] : faces[0];
     }
   }
   return neighbours;
@@ -42,14 +47,17 @@ std::pair<std::vector<int>, std::vector<int>> split_in_two(
   for (std::size_t i = 0; i < triangles.size(); ++i) {
     const auto& t = mesh.triangles[triangles[i]];
     centroid[i] = (mesh.vertices[t[0]] + mesh.vertices[t[1]] + mesh.vertices[t[2]]) / 3.0;
-    area[i] = 0.5 * (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]).norm();
+    area[i] = 0.5 * (mesh.vertices[t[1]] - mesh.vertices[t[0]])
+                        .cross(mesh.vertices[t[2]] - mesh.vertices[t[0]])
+                        .norm();
     total += area[i];
     box.add(centroid[i]);
   }
   int axis = 0;
   box.size().maxCoeff(&axis);
   std::map<int, std::size_t> local;
-  for (std::size_t i = 0; i < triangles.size(); ++i) local[triangles[i]] = i;
+  for (std::size_t i = 0; i < triangles.size(); ++i)
+    local[triangles[i]] = i;
   std::size_t seed = 0;
   for (std::size_t i = 1; i < triangles.size(); ++i) {
     if (centroid[i][axis] < centroid[seed][axis]) seed = i;
@@ -66,11 +74,13 @@ std::pair<std::vector<int>, std::vector<int>> split_in_two(
     grown += area[i];
     for (const int n : neighbours[triangles[i]]) {
       const auto it = local.find(n);
-      if (n >= 0 && it != local.end() && !taken[it->second]) front.insert({centroid[it->second][axis], it->second});
+      if (n >= 0 && it != local.end() && !taken[it->second])
+        front.insert({centroid[it->second][axis], it->second});
     }
   }
   std::pair<std::vector<int>, std::vector<int>> halves;
-  for (std::size_t i = 0; i < triangles.size(); ++i) (taken[i] ? halves.first : halves.second).push_back(triangles[i]);
+  for (std::size_t i = 0; i < triangles.size(); ++i)
+    (taken[i] ? halves.first : halves.second).push_back(triangles[i]);
   return halves;
 }
 
@@ -145,13 +155,17 @@ ChartSegmentation segment_charts(const core::SurfaceMesh& mesh, int smoothing_pa
   std::vector<int> label(n);
   for (std::size_t t = 0; t < n; ++t) {
     const auto& tri = mesh.triangles[t];
-    normal[t] = (mesh.vertices[tri[1]] - mesh.vertices[tri[0]]).cross(mesh.vertices[tri[2]] - mesh.vertices[tri[0]]).normalized();
+    normal[t] = (mesh.vertices[tri[1]] - mesh.vertices[tri[0]])
+                    .cross(mesh.vertices[tri[2]] - mesh.vertices[tri[0]])
+                    .normalized();
     if (!normal[t].allFinite()) normal[t] = core::Vec3::UnitZ();
     int axis = 0;
     normal[t].cwiseAbs().maxCoeff(&axis);
     label[t] = 2 * axis + (normal[t][axis] < 0 ? 1 : 0);
   }
-  const auto axis_dot = [&](std::size_t t, int l) { return (l % 2 ? -1.0 : 1.0) * normal[t][l / 2]; };
+  const auto axis_dot = [&](std::size_t t, int l) {
+    return (l % 2 ? -1.0 : 1.0) * normal[t][l / 2];
+  };
   for (int pass = 0; pass < smoothing_passes; ++pass) {
     std::vector<int> next = label;
     for (std::size_t t = 0; t < n; ++t) {
@@ -161,7 +175,8 @@ ChartSegmentation segment_charts(const core::SurfaceMesh& mesh, int smoothing_pa
                                   neighbours[t][1] >= 0 ? label[neighbours[t][1]] : -1}) {
         if (candidate < 0 || candidate == label[t]) continue;
         int votes = 0;
-        for (const int nb : neighbours[t]) votes += nb >= 0 && label[nb] == candidate;
+        for (const int nb : neighbours[t])
+          votes += nb >= 0 && label[nb] == candidate;
         if (votes >= 2 && axis_dot(t, candidate) > 0.3) next[t] = candidate;
       }
     }
@@ -169,10 +184,12 @@ ChartSegmentation segment_charts(const core::SurfaceMesh& mesh, int smoothing_pa
   }
   // Connected components of each label, split until every chart is a disk.
   std::map<int, std::vector<int>> by_label;
-  for (std::size_t t = 0; t < n; ++t) by_label[label[t]].push_back(static_cast<int>(t));
+  for (std::size_t t = 0; t < n; ++t)
+    by_label[label[t]].push_back(static_cast<int>(t));
   std::vector<std::vector<int>> pending, charts;
   for (const auto& [l, triangles] : by_label) {
-    for (auto& part : components(triangles, neighbours)) pending.push_back(std::move(part));
+    for (auto& part : components(triangles, neighbours))
+      pending.push_back(std::move(part));
   }
   while (!pending.empty()) {
     std::vector<int> chart = std::move(pending.back());
@@ -183,16 +200,19 @@ ChartSegmentation segment_charts(const core::SurfaceMesh& mesh, int smoothing_pa
     }
     auto [a, b] = split_in_two(mesh, chart, neighbours);
     for (auto* half : {&a, &b}) {
-      for (auto& part : components(*half, neighbours)) pending.push_back(std::move(part));
+      for (auto& part : components(*half, neighbours))
+        pending.push_back(std::move(part));
     }
   }
   // A stable order: by smallest triangle index.
-  std::sort(charts.begin(), charts.end(), [](const auto& x, const auto& y) { return x.front() < y.front(); });
+  std::sort(charts.begin(), charts.end(),
+            [](const auto& x, const auto& y) { return x.front() < y.front(); });
   ChartSegmentation result;
   result.chart_of_triangle.assign(n, -1);
   result.chart_count = static_cast<int>(charts.size());
   for (std::size_t c = 0; c < charts.size(); ++c) {
-    for (const int t : charts[c]) result.chart_of_triangle[t] = static_cast<int>(c);
+    for (const int t : charts[c])
+      result.chart_of_triangle[t] = static_cast<int>(c);
   }
   return result;
 }

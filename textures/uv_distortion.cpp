@@ -21,10 +21,12 @@ UvDistortion measure_uv_distortion(const core::SurfaceMesh& mesh) {
   };
   std::vector<TriangleMeasure> measures;
   for (const auto& t : mesh.triangles) {
-    const core::Vec3 &q1 = mesh.vertices[t[0]], &q2 = mesh.vertices[t[1]], &q3 = mesh.vertices[t[2]];
+    const core::Vec3 &q1 = mesh.vertices[t[0]], &q2 = mesh.vertices[t[1]],
+                     &q3 = mesh.vertices[t[2]];
     const core::Vec2 &p1 = mesh.uvs[t[0]], &p2 = mesh.uvs[t[1]], &p3 = mesh.uvs[t[2]];
     const double a3 = 0.5 * (q2 - q1).cross(q3 - q1).norm();
-    const double a2 = 0.5 * ((p2.x() - p1.x()) * (p3.y() - p1.y()) - (p3.x() - p1.x()) * (p2.y() - p1.y()));
+    const double a2 =
+        0.5 * ((p2.x() - p1.x()) * (p3.y() - p1.y()) - (p3.x() - p1.x()) * (p2.y() - p1.y()));
     if (!(a3 > 0.0)) {
       ++d.degenerate;
       continue;
@@ -34,12 +36,16 @@ UvDistortion measure_uv_distortion(const core::SurfaceMesh& mesh) {
       continue;
     }
     // Partial derivatives of the surface point with respect to s and t (Sander et al. eq. 1).
-    const core::Vec3 ss = (q1 * (p2.y() - p3.y()) + q2 * (p3.y() - p1.y()) + q3 * (p1.y() - p2.y())) / (2.0 * a2);
-    const core::Vec3 st = (q1 * (p3.x() - p2.x()) + q2 * (p1.x() - p3.x()) + q3 * (p2.x() - p1.x())) / (2.0 * a2);
+    const core::Vec3 ss =
+        (q1 * (p2.y() - p3.y()) + q2 * (p3.y() - p1.y()) + q3 * (p1.y() - p2.y())) / (2.0 * a2);
+    const core::Vec3 st =
+        (q1 * (p3.x() - p2.x()) + q2 * (p1.x() - p3.x()) + q3 * (p2.x() - p1.x())) / (2.0 * a2);
     const double a = ss.dot(ss), b = ss.dot(st), c = st.dot(st);
     const double root = std::sqrt((a - c) * (a - c) + 4.0 * b * b);
-    const double big = std::sqrt(0.5 * (a + c + root)), small = std::sqrt(std::max(0.5 * (a + c - root), 0.0));
-    measures.push_back({a3, a2, 0.5 * (a + c), small > 0.0 ? big / small : std::numeric_limits<double>::infinity()});
+    const double big = std::sqrt(0.5 * (a + c + root)),
+                 small = std::sqrt(std::max(0.5 * (a + c - root), 0.0));
+    measures.push_back({a3, a2, 0.5 * (a + c),
+                        small > 0.0 ? big / small : std::numeric_limits<double>::infinity()});
     area_3d += a3;
     area_2d += a2;
   }
@@ -73,7 +79,8 @@ UvDistortion measure_uv_distortion(const core::SurfaceMesh& mesh) {
 bool has_usable_uvs(const core::SurfaceMesh& mesh) {
   if (mesh.uvs.size() != mesh.vertices.size() || mesh.triangles.empty()) return false;
   for (const auto& uv : mesh.uvs) {
-    if (!uv.allFinite() || uv.x() < -1e-6 || uv.y() < -1e-6 || uv.x() > 1.0 + 1e-6 || uv.y() > 1.0 + 1e-6) {
+    if (!uv.allFinite() || uv.x() < -1e-6 || uv.y() < -1e-6 || uv.x() > 1.0 + 1e-6 ||
+        uv.y() > 1.0 + 1e-6) {
       return false;
     }
   }
@@ -84,17 +91,22 @@ bool has_usable_uvs(const core::SurfaceMesh& mesh) {
   std::vector<int> owner(kRaster * kRaster, -1);
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     const auto& tri = mesh.triangles[t];
-    const core::Vec2 a = mesh.uvs[tri[0]] * kRaster, b = mesh.uvs[tri[1]] * kRaster, c = mesh.uvs[tri[2]] * kRaster;
+    const core::Vec2 a = mesh.uvs[tri[0]] * kRaster, b = mesh.uvs[tri[1]] * kRaster,
+                     c = mesh.uvs[tri[2]] * kRaster;
     const int x0 = std::max(0, static_cast<int>(std::floor(std::min({a.x(), b.x(), c.x()}))));
-    const int x1 = std::min(kRaster - 1, static_cast<int>(std::ceil(std::max({a.x(), b.x(), c.x()}))));
+    const int x1 =
+        std::min(kRaster - 1, static_cast<int>(std::ceil(std::max({a.x(), b.x(), c.x()}))));
     const int y0 = std::max(0, static_cast<int>(std::floor(std::min({a.y(), b.y(), c.y()}))));
-    const int y1 = std::min(kRaster - 1, static_cast<int>(std::ceil(std::max({a.y(), b.y(), c.y()}))));
+    const int y1 =
+        std::min(kRaster - 1, static_cast<int>(std::ceil(std::max({a.y(), b.y(), c.y()}))));
     const double area = (b.x() - a.x()) * (c.y() - a.y()) - (c.x() - a.x()) * (b.y() - a.y());
     for (int y = y0; y <= y1; ++y) {
       for (int x = x0; x <= x1; ++x) {
         const core::Vec2 p(x + 0.5, y + 0.5);
-        const double w0 = ((b.x() - p.x()) * (c.y() - p.y()) - (c.x() - p.x()) * (b.y() - p.y())) / area;
-        const double w1 = ((c.x() - p.x()) * (a.y() - p.y()) - (a.x() - p.x()) * (c.y() - p.y())) / area;
+        const double w0 =
+            ((b.x() - p.x()) * (c.y() - p.y()) - (c.x() - p.x()) * (b.y() - p.y())) / area;
+        const double w1 =
+            ((c.x() - p.x()) * (a.y() - p.y()) - (a.x() - p.x()) * (c.y() - p.y())) / area;
         const double w2 = 1.0 - w0 - w1;
         // Strictly inside only: texels on a shared edge belong to both neighbours legitimately.
         if (w0 <= 1e-6 || w1 <= 1e-6 || w2 <= 1e-6) continue;

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <utility>
 #include <numbers>
+#include <utility>
 
 #include "core/lsystem/lsystem.h"
 #include "core/random.h"
@@ -37,7 +37,8 @@ std::vector<core::TurtleSegment> grow_vessel_layer(const VesselLayerSpec& spec, 
     const std::uint64_t derivation_seed = rng.next_u64();
     turtle.seed = rng.next_u64();
     const int offset = static_cast<int>(strokes.size());
-    for (auto s : core::interpret_turtle(grammar.derive(spec.generations, derivation_seed), turtle)) {
+    for (auto s :
+         core::interpret_turtle(grammar.derive(spec.generations, derivation_seed), turtle)) {
       s.start = root + step_px * s.start;
       s.end = root + step_px * s.end;
       s.start_width *= width_px;
@@ -70,7 +71,8 @@ void capsule_row_span(double ax, double ay, double bx, double by, double r, doub
   const double length = std::sqrt(dx * dx + dy * dy);
   if (length == 0.0) return;
   const double nx = -dy / length * r, ny = dx / length * r;
-  const double corners[4][2] = {{ax + nx, ay + ny}, {bx + nx, by + ny}, {bx - nx, by - ny}, {ax - nx, ay - ny}};
+  const double corners[4][2] = {
+      {ax + nx, ay + ny}, {bx + nx, by + ny}, {bx - nx, by - ny}, {ax - nx, ay - ny}};
   for (int e = 0; e < 4; ++e) {
     const double* p = corners[e];
     const double* q = corners[(e + 1) % 4];
@@ -98,8 +100,10 @@ VesselRasterizer::VesselRasterizer(std::vector<core::TurtleSegment> strokes, int
   for (std::size_t i = 0; i < strokes_.size(); ++i) {
     const auto& s = strokes_[i];
     const double reach = stroke_reach(s);
-    const int y0 = std::max(0, static_cast<int>(std::floor(std::min(s.start.y(), s.end.y()) - reach)));
-    const int y1 = std::min(height - 1, static_cast<int>(std::ceil(std::max(s.start.y(), s.end.y()) + reach)));
+    const int y0 =
+        std::max(0, static_cast<int>(std::floor(std::min(s.start.y(), s.end.y()) - reach)));
+    const int y1 =
+        std::min(height - 1, static_cast<int>(std::ceil(std::max(s.start.y(), s.end.y()) + reach)));
     for (int band = y0 / kBandRows; y0 <= y1 && band <= y1 / kBandRows; ++band) {
       bands_[band].push_back(static_cast<int>(i));
     }
@@ -115,10 +119,12 @@ void VesselRasterizer::paint_rows(int row_begin, int row_end, float* coverage_ro
     for (const int index : bands_[band]) {
       const auto& s = strokes_[index];
       const double reach = stroke_reach(s);
-      const int y0 = std::max({row_begin, band * kBandRows,
-                               static_cast<int>(std::floor(std::min(s.start.y(), s.end.y()) - reach))});
-      const int y1 = std::min({row_end - 1, band * kBandRows + kBandRows - 1,
-                               static_cast<int>(std::ceil(std::max(s.start.y(), s.end.y()) + reach))});
+      const int y0 =
+          std::max({row_begin, band * kBandRows,
+                    static_cast<int>(std::floor(std::min(s.start.y(), s.end.y()) - reach))});
+      const int y1 =
+          std::min({row_end - 1, band * kBandRows + kBandRows - 1,
+                    static_cast<int>(std::ceil(std::max(s.start.y(), s.end.y()) + reach))});
       const double ax = s.start.x(), ay = s.start.y();
       const double dx = s.end.x() - ax, dy = s.end.y() - ay;
       const double length2 = dx * dx + dy * dy;
@@ -133,7 +139,8 @@ void VesselRasterizer::paint_rows(int row_begin, int row_end, float* coverage_ro
         float* depth = depth_rows + static_cast<std::size_t>(y - row_begin) * width_;
         for (int x = x0; x <= x1; ++x) {
           const double px = x + 0.5 - ax;
-          const double t = length2 > 0.0 ? std::clamp((px * dx + py * dy) / length2, 0.0, 1.0) : 0.0;
+          const double t =
+              length2 > 0.0 ? std::clamp((px * dx + py * dy) / length2, 0.0, 1.0) : 0.0;
           const double ex = px - t * dx, ey = py - t * dy;
           const double w = s.start_width + t * (s.end_width - s.start_width);
           // A stroke thinner than a pixel keeps a one-pixel footprint with proportionally less ink.
@@ -159,10 +166,14 @@ VesselLayerImage paint_vessels(const std::vector<core::TurtleSegment>& strokes, 
   layer.height = height;
   layer.coverage.assign(static_cast<std::size_t>(width) * height, 0.0f);
   layer.depth.assign(layer.coverage.size(), 0.0f);
-  parallel_rows(height, [&](int begin, int end) {
-    const std::size_t offset = static_cast<std::size_t>(begin) * width;
-    rasterizer.paint_rows(begin, end, layer.coverage.data() + offset, layer.depth.data() + offset);
-  }, threads);
+  parallel_rows(
+      height,
+      [&](int begin, int end) {
+        const std::size_t offset = static_cast<std::size_t>(begin) * width;
+        rasterizer.paint_rows(begin, end, layer.coverage.data() + offset,
+                              layer.depth.data() + offset);
+      },
+      threads);
   return layer;
 }
 

@@ -36,7 +36,8 @@ std::vector<std::string> split_top_level(const std::string& text, char separator
 
 bool is_symbol(char c) {
   return c != '(' && c != ')' && c != ',' && c != ':' &&
-         !std::isspace(static_cast<unsigned char>(c)) && std::isprint(static_cast<unsigned char>(c));
+         !std::isspace(static_cast<unsigned char>(c)) &&
+         std::isprint(static_cast<unsigned char>(c));
 }
 
 /// A module string whose arguments are expressions over `names`.
@@ -58,7 +59,8 @@ std::vector<LsystemSuccessorModule> parse_modules(const std::string& text,
     module.symbol = c;
     ++i;
     std::size_t j = i;
-    while (j < text.size() && std::isspace(static_cast<unsigned char>(text[j]))) ++j;
+    while (j < text.size() && std::isspace(static_cast<unsigned char>(text[j])))
+      ++j;
     if (j < text.size() && text[j] == '(') {
       int depth = 0;
       std::size_t k = j;
@@ -120,7 +122,8 @@ LsystemProduction parse_production(const std::string& line, const Constants& con
 Lsystem::Lsystem(LsystemString axiom, std::vector<LsystemProduction> productions)
     : axiom_(std::move(axiom)), productions_(std::move(productions)) {
   for (std::size_t p = 0; p < productions_.size(); ++p) {
-    if (!(productions_[p].weight > 0.0)) throw UsageError("L-system production weights must be positive");
+    if (!(productions_[p].weight > 0.0))
+      throw UsageError("L-system production weights must be positive");
     by_symbol_[static_cast<unsigned char>(productions_[p].predecessor)].push_back(
         static_cast<int>(p));
   }
@@ -145,9 +148,9 @@ Lsystem Lsystem::parse(const std::string& text, const std::string& what) {
         if (equals == std::string::npos) throw InputError("const needs '= value'");
         const std::string name = trim(line.substr(6, equals - 6));
         if (name.empty()) throw InputError("const needs a name");
-        constants.emplace_back(name,
-                               LsystemExpression::parse(trim(line.substr(equals + 1)), {}, constants)
-                                   .evaluate({}));
+        constants.emplace_back(
+            name,
+            LsystemExpression::parse(trim(line.substr(equals + 1)), {}, constants).evaluate({}));
       } else if (line.find("->") != std::string::npos) {
         productions.push_back(parse_production(line, constants));
       } else if (line.rfind("axiom", 0) == 0 && trim(line.substr(5)).rfind(':', 0) == 0) {
@@ -157,7 +160,8 @@ Lsystem Lsystem::parse(const std::string& text, const std::string& what) {
         throw InputError("expected 'axiom: …', 'const name = value' or a production with '->'");
       }
     } catch (const InputError& e) {
-      const std::string detail = e.location().element.empty() ? "" : " in \"" + e.location().element + "\"";
+      const std::string detail =
+          e.location().element.empty() ? "" : " in \"" + e.location().element + "\"";
       throw InputError(e.reason() + detail, {what, "", where});
     }
   }
@@ -217,7 +221,8 @@ LsystemString Lsystem::derive(int generations, std::uint64_t seed, std::size_t m
   if (generations < 0) throw UsageError("L-system generations must be non-negative");
   Rng rng(seed);
   LsystemString current = axiom_;
-  for (int g = 0; g < generations; ++g) current = rewrite(current, rng, max_modules);
+  for (int g = 0; g < generations; ++g)
+    current = rewrite(current, rng, max_modules);
   return current;
 }
 
@@ -226,7 +231,8 @@ LsystemString parse_lsystem_string(const std::string& text, const Constants& con
   for (const auto& m : parse_modules(text, {}, constants)) {
     LsystemModule module;
     module.symbol = m.symbol;
-    for (const auto& argument : m.arguments) module.parameters.push_back(argument.evaluate({}));
+    for (const auto& argument : m.arguments)
+      module.parameters.push_back(argument.evaluate({}));
     modules.push_back(std::move(module));
   }
   return modules;

@@ -47,9 +47,9 @@ struct LsystemProduction {
   char predecessor = 0;
   std::vector<std::string> parameter_names;  ///< the predecessor's formal parameters
   bool has_condition = false;
-  LsystemExpression condition;               ///< non-zero = applicable
+  LsystemExpression condition;  ///< non-zero = applicable
   std::vector<LsystemSuccessorModule> successor;
-  double weight = 1.0;                       ///< relative probability, > 0
+  double weight = 1.0;  ///< relative probability, > 0
 };
 
 /// A grammar: axiom plus productions, rewritten in parallel generation by generation.
@@ -79,8 +79,8 @@ class Lsystem {
 };
 
 /// Parses a module string with constant arguments, e.g. "F(1)[+F(0.5)]". Throws InputError.
-LsystemString parse_lsystem_string(const std::string& text,
-                                   const std::vector<std::pair<std::string, double>>& constants = {});
+LsystemString parse_lsystem_string(
+    const std::string& text, const std::vector<std::pair<std::string, double>>& constants = {});
 /// Writes a string back as text; parameters with up to 6 significant digits.
 std::string to_string(const LsystemString& modules);
 

@@ -12,8 +12,30 @@ namespace viscera::core {
 namespace {
 
 enum Code : int {
-  kPush, kLoad, kNeg, kNot, kAdd, kSub, kMul, kDiv, kPow, kLt, kLe, kGt, kGe, kEq, kNe, kAnd,
-  kOr, kMin, kMax, kSqrt, kAbs, kSin, kCos, kFloor
+  kPush,
+  kLoad,
+  kNeg,
+  kNot,
+  kAdd,
+  kSub,
+  kMul,
+  kDiv,
+  kPow,
+  kLt,
+  kLe,
+  kGt,
+  kGe,
+  kEq,
+  kNe,
+  kAnd,
+  kOr,
+  kMin,
+  kMax,
+  kSqrt,
+  kAbs,
+  kSin,
+  kCos,
+  kFloor
 };
 
 /// Stack depth of the evaluator; deeper expressions are refused when compiled.
@@ -39,7 +61,8 @@ class Compiler {
     throw InputError("bad L-system expression: " + why, {"", "", text_});
   }
   void skip_space() {
-    while (pos_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[pos_]))) ++pos_;
+    while (pos_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[pos_])))
+      ++pos_;
   }
   bool accept(const char* token) {
     skip_space();
@@ -66,11 +89,17 @@ class Compiler {
 
   void parse_or() {
     parse_and();
-    while (accept("||")) { parse_and(); emit(kOr); }
+    while (accept("||")) {
+      parse_and();
+      emit(kOr);
+    }
   }
   void parse_and() {
     parse_comparison();
-    while (accept("&&")) { parse_comparison(); emit(kAnd); }
+    while (accept("&&")) {
+      parse_comparison();
+      emit(kAnd);
+    }
   }
   void parse_comparison() {
     parse_sum();
@@ -87,27 +116,48 @@ class Compiler {
   void parse_sum() {
     parse_product();
     for (;;) {
-      if (accept("+")) { parse_product(); emit(kAdd); }
-      else if (accept("-")) { parse_product(); emit(kSub); }
-      else return;
+      if (accept("+")) {
+        parse_product();
+        emit(kAdd);
+      } else if (accept("-")) {
+        parse_product();
+        emit(kSub);
+      } else
+        return;
     }
   }
   void parse_product() {
     parse_unary();
     for (;;) {
-      if (accept("*")) { parse_unary(); emit(kMul); }
-      else if (accept("/")) { parse_unary(); emit(kDiv); }
-      else return;
+      if (accept("*")) {
+        parse_unary();
+        emit(kMul);
+      } else if (accept("/")) {
+        parse_unary();
+        emit(kDiv);
+      } else
+        return;
     }
   }
   void parse_unary() {
-    if (accept("-")) { parse_unary(); emit(kNeg); return; }
-    if (accept("!")) { parse_unary(); emit(kNot); return; }
+    if (accept("-")) {
+      parse_unary();
+      emit(kNeg);
+      return;
+    }
+    if (accept("!")) {
+      parse_unary();
+      emit(kNot);
+      return;
+    }
     parse_power();
   }
   void parse_power() {
     parse_primary();
-    if (accept("^")) { parse_unary(); emit(kPow); }
+    if (accept("^")) {
+      parse_unary();
+      emit(kPow);
+    }
   }
   void parse_primary() {
     skip_space();
@@ -174,7 +224,9 @@ class Compiler {
   int depth_ = 0;
 };
 
-double degrees_to_radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
+double degrees_to_radians(double degrees) {
+  return degrees * std::numbers::pi / 180.0;
+}
 
 }  // namespace
 
@@ -206,7 +258,9 @@ double LsystemExpression::evaluate(std::span<const double> parameters) const {
   int top = -1;
   for (const auto& op : program_) {
     switch (op.code) {
-      case kPush: stack[++top] = op.value; continue;
+      case kPush:
+        stack[++top] = op.value;
+        continue;
       case kLoad:
         if (static_cast<std::size_t>(op.index) >= parameters.size()) {
           throw UsageError("L-system expression needs " + std::to_string(op.index + 1) +
@@ -214,34 +268,80 @@ double LsystemExpression::evaluate(std::span<const double> parameters) const {
         }
         stack[++top] = parameters[op.index];
         continue;
-      case kNeg: stack[top] = -stack[top]; continue;
-      case kNot: stack[top] = stack[top] == 0.0 ? 1.0 : 0.0; continue;
-      case kSqrt: stack[top] = std::sqrt(stack[top]); continue;
-      case kAbs: stack[top] = std::abs(stack[top]); continue;
-      case kSin: stack[top] = std::sin(degrees_to_radians(stack[top])); continue;
-      case kCos: stack[top] = std::cos(degrees_to_radians(stack[top])); continue;
-      case kFloor: stack[top] = std::floor(stack[top]); continue;
-      default: break;
+      case kNeg:
+        stack[top] = -stack[top];
+        continue;
+      case kNot:
+        stack[top] = stack[top] == 0.0 ? 1.0 : 0.0;
+        continue;
+      case kSqrt:
+        stack[top] = std::sqrt(stack[top]);
+        continue;
+      case kAbs:
+        stack[top] = std::abs(stack[top]);
+        continue;
+      case kSin:
+        stack[top] = std::sin(degrees_to_radians(stack[top]));
+        continue;
+      case kCos:
+        stack[top] = std::cos(degrees_to_radians(stack[top]));
+        continue;
+      case kFloor:
+        stack[top] = std::floor(stack[top]);
+        continue;
+      default:
+        break;
     }
     const double b = stack[top--];
     double& a = stack[top];
     switch (op.code) {
-      case kAdd: a = a + b; break;
-      case kSub: a = a - b; break;
-      case kMul: a = a * b; break;
-      case kDiv: a = a / b; break;
-      case kPow: a = std::pow(a, b); break;
-      case kLt: a = a < b ? 1.0 : 0.0; break;
-      case kLe: a = a <= b ? 1.0 : 0.0; break;
-      case kGt: a = a > b ? 1.0 : 0.0; break;
-      case kGe: a = a >= b ? 1.0 : 0.0; break;
-      case kEq: a = a == b ? 1.0 : 0.0; break;
-      case kNe: a = a != b ? 1.0 : 0.0; break;
-      case kAnd: a = (a != 0.0 && b != 0.0) ? 1.0 : 0.0; break;
-      case kOr: a = (a != 0.0 || b != 0.0) ? 1.0 : 0.0; break;
-      case kMin: a = std::fmin(a, b); break;
-      case kMax: a = std::fmax(a, b); break;
-      default: throw UsageError("corrupt L-system expression program");
+      case kAdd:
+        a = a + b;
+        break;
+      case kSub:
+        a = a - b;
+        break;
+      case kMul:
+        a = a * b;
+        break;
+      case kDiv:
+        a = a / b;
+        break;
+      case kPow:
+        a = std::pow(a, b);
+        break;
+      case kLt:
+        a = a < b ? 1.0 : 0.0;
+        break;
+      case kLe:
+        a = a <= b ? 1.0 : 0.0;
+        break;
+      case kGt:
+        a = a > b ? 1.0 : 0.0;
+        break;
+      case kGe:
+        a = a >= b ? 1.0 : 0.0;
+        break;
+      case kEq:
+        a = a == b ? 1.0 : 0.0;
+        break;
+      case kNe:
+        a = a != b ? 1.0 : 0.0;
+        break;
+      case kAnd:
+        a = (a != 0.0 && b != 0.0) ? 1.0 : 0.0;
+        break;
+      case kOr:
+        a = (a != 0.0 || b != 0.0) ? 1.0 : 0.0;
+        break;
+      case kMin:
+        a = std::fmin(a, b);
+        break;
+      case kMax:
+        a = std::fmax(a, b);
+        break;
+      default:
+        throw UsageError("corrupt L-system expression program");
     }
   }
   return stack[0];

@@ -22,7 +22,8 @@ class LsystemExpression {
 
   /// Compiles `text`; `parameters` name the values passed to evaluate(), in order.
   /// Throws InputError (element = the text) on a syntax error or an unknown name.
-  static LsystemExpression parse(const std::string& text, const std::vector<std::string>& parameters,
+  static LsystemExpression parse(const std::string& text,
+                                 const std::vector<std::string>& parameters,
                                  const std::vector<std::pair<std::string, double>>& constants = {});
   /// An expression that always gives `value`.
   static LsystemExpression constant(double value);

@@ -41,7 +41,8 @@ std::vector<TurtleSegment> interpret_turtle(const LsystemString& modules,
 
   const auto angle_of = [&](const LsystemModule& m) {
     double angle = m.parameters.empty() ? options.angle : m.parameters[0];
-    if (options.angle_jitter > 0.0) angle += rng.uniform(-options.angle_jitter, options.angle_jitter);
+    if (options.angle_jitter > 0.0)
+      angle += rng.uniform(-options.angle_jitter, options.angle_jitter);
     return angle;
   };
 
@@ -53,13 +54,15 @@ std::vector<TurtleSegment> interpret_turtle(const LsystemString& modules,
         const int pieces = std::max(1, options.subdivisions);
         for (int piece = 0; piece < pieces; ++piece) {
           if (options.wiggle > 0.0) {
-            rotate(state.heading, state.left, state.up, rng.uniform(-options.wiggle, options.wiggle));
+            rotate(state.heading, state.left, state.up,
+                   rng.uniform(-options.wiggle, options.wiggle));
           }
           const double piece_length = length / pieces;
           TurtleSegment s;
           s.start = state.position;
           state.position += piece_length * state.heading;
-          if (options.constrain) options.constrain(state.position, state.heading, state.left, state.up);
+          if (options.constrain)
+            options.constrain(state.position, state.heading, state.left, state.up);
           s.end = state.position;
           s.start_width = state.width;
           state.width *= std::fmax(0.0, 1.0 - options.taper * piece_length);
@@ -74,15 +77,30 @@ std::vector<TurtleSegment> interpret_turtle(const LsystemString& modules,
       }
       case 'f':
         state.position += (m.parameters.empty() ? options.step : m.parameters[0]) * state.heading;
-        if (options.constrain) options.constrain(state.position, state.heading, state.left, state.up);
+        if (options.constrain)
+          options.constrain(state.position, state.heading, state.left, state.up);
         break;
-      case '+': rotate(state.heading, state.left, state.up, angle_of(m)); break;
-      case '-': rotate(state.heading, state.left, state.up, -angle_of(m)); break;
-      case '&': rotate(state.heading, state.up, state.left, angle_of(m)); break;
-      case '^': rotate(state.heading, state.up, state.left, -angle_of(m)); break;
-      case '\\': rotate(state.left, state.up, state.heading, angle_of(m)); break;
-      case '/': rotate(state.left, state.up, state.heading, -angle_of(m)); break;
-      case '|': rotate(state.heading, state.left, state.up, 180.0); break;
+      case '+':
+        rotate(state.heading, state.left, state.up, angle_of(m));
+        break;
+      case '-':
+        rotate(state.heading, state.left, state.up, -angle_of(m));
+        break;
+      case '&':
+        rotate(state.heading, state.up, state.left, angle_of(m));
+        break;
+      case '^':
+        rotate(state.heading, state.up, state.left, -angle_of(m));
+        break;
+      case '\\':
+        rotate(state.left, state.up, state.heading, angle_of(m));
+        break;
+      case '/':
+        rotate(state.left, state.up, state.heading, -angle_of(m));
+        break;
+      case '|':
+        rotate(state.heading, state.left, state.up, 180.0);
+        break;
       case '[':
         stack.push_back(state);
         ++state.order;
@@ -98,7 +116,8 @@ std::vector<TurtleSegment> interpret_turtle(const LsystemString& modules,
       case '\'':
         state.depth = m.parameters.empty() ? state.depth + options.depth_step : m.parameters[0];
         break;
-      default: break;
+      default:
+        break;
     }
   }
   if (!stack.empty()) throw InputError("L-system string leaves a branch open");

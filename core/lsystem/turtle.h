@@ -40,8 +40,9 @@ struct TurtleOptions {
   double depth_step = 0.1;       ///< ' without a parameter adds this to the depth
   double angle_jitter = 0.0;     ///< degrees; each turn varies uniformly by ± this
   int subdivisions = 1;          ///< each F is drawn as this many collinear-ish pieces
-  double wiggle = 0.0;           ///< degrees; before each piece the heading turns about up by ± this (tortuosity)
-  std::uint64_t seed = 0;        ///< for angle_jitter, through the project's Rng
+  double wiggle =
+      0.0;  ///< degrees; before each piece the heading turns about up by ± this (tortuosity)
+  std::uint64_t seed = 0;  ///< for angle_jitter, through the project's Rng
   /// Called after every move with the turtle's position and frame (heading, left, up), which it
   /// may change: e.g. to keep the turtle on an organ's surface with up along the surface normal.
   std::function<void(Vec3& position, Vec3& heading, Vec3& left, Vec3& up)> constrain;

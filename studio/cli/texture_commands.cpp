@@ -1,8 +1,8 @@
 #include "studio/cli/texture_commands.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
-#include <algorithm>
 #include <optional>
 
 #include "core/error.h"
@@ -51,7 +51,8 @@ std::pair<int, int> parse_size(const std::string& text) {
 
 /// OUT.png → OUT_<suffix>.png beside it.
 std::filesystem::path sibling_map(const std::filesystem::path& output, const std::string& suffix) {
-  return output.parent_path() / (output.stem().string() + "_" + suffix + output.extension().string());
+  return output.parent_path() /
+         (output.stem().string() + "_" + suffix + output.extension().string());
 }
 
 void list_presets(bool json) {
@@ -102,11 +103,16 @@ void make_texture(const TextureCommandOptions& o) {
     written.push_back(std::filesystem::absolute(path).string());
   }
   if (o.json) {
-    print_json({{"preset", o.preset}, {"seed", o.seed}, {"width", width}, {"height", height},
-                {"sample", o.sample}, {"files", written}});
+    print_json({{"preset", o.preset},
+                {"seed", o.seed},
+                {"width", width},
+                {"height", height},
+                {"sample", o.sample},
+                {"files", written}});
   } else {
     std::string text;
-    for (const auto& path : written) text += "wrote " + path.get<std::string>() + "\n";
+    for (const auto& path : written)
+      text += "wrote " + path.get<std::string>() + "\n";
     print_text(text);
   }
 }
@@ -121,9 +127,12 @@ struct BakeCommandOptions {
 
 const char* mapping_name(textures::TextureMapping mapping) {
   switch (mapping) {
-    case textures::TextureMapping::OwnUvs: return "own-uvs";
-    case textures::TextureMapping::Atlas: return "lscm-atlas";
-    case textures::TextureMapping::VertexColors: return "vertex-colors";
+    case textures::TextureMapping::OwnUvs:
+      return "own-uvs";
+    case textures::TextureMapping::Atlas:
+      return "lscm-atlas";
+    case textures::TextureMapping::VertexColors:
+      return "vertex-colors";
   }
   return "?";
 }
@@ -138,9 +147,9 @@ void bake(const BakeCommandOptions& o) {
     (void)textures::find_texture_preset(o.preset);  // a usage error before any work
     int assigned = 0;
     for (auto& object : scenario.objects) {
-      const bool chosen = o.objects.empty()
-                              ? object.role == core::ObjectRole::Organ
-                              : std::find(o.objects.begin(), o.objects.end(), object.id) != o.objects.end();
+      const bool chosen = o.objects.empty() ? object.role == core::ObjectRole::Organ
+                                            : std::find(o.objects.begin(), o.objects.end(),
+                                                        object.id) != o.objects.end();
       if (!chosen) continue;
       core::TextureSpec spec;
       spec.id = object.id + "-" + o.preset;
@@ -158,16 +167,22 @@ void bake(const BakeCommandOptions& o) {
   options.texture_scale = o.scale;
   options.sample = sample ? &*sample : nullptr;
   options.keep_topology = o.keep_topology;
-  const textures::BakedTextures baked = textures::bake_textures_into(scenario, options, bar.progress());
-  if (baked.objects.empty()) throw core::UsageError("nothing to bake: no object has a texture (use --preset)");
+  const textures::BakedTextures baked =
+      textures::bake_textures_into(scenario, options, bar.progress());
+  if (baked.objects.empty())
+    throw core::UsageError("nothing to bake: no object has a texture (use --preset)");
   core::write_package(scenario, baked.files, o.output, bar.progress());
 
   nlohmann::json objects = nlohmann::json::array();
   std::string text = "wrote " + std::filesystem::absolute(o.output).string() + "\n";
   for (const auto& b : baked.objects) {
-    objects.push_back({{"object", b.object}, {"texture", b.texture}, {"mapping", mapping_name(b.mapping)},
-                       {"charts", b.charts}, {"l2_stretch", b.distortion.l2_stretch},
-                       {"mean_conformal", b.distortion.mean_conformal}, {"maps", scenario.textures.at(b.texture).maps}});
+    objects.push_back({{"object", b.object},
+                       {"texture", b.texture},
+                       {"mapping", mapping_name(b.mapping)},
+                       {"charts", b.charts},
+                       {"l2_stretch", b.distortion.l2_stretch},
+                       {"mean_conformal", b.distortion.mean_conformal},
+                       {"maps", scenario.textures.at(b.texture).maps}});
     char line[256];
     std::snprintf(line, sizeof line, "  %s: %s, %s, %d charts, L2 stretch %.3f\n", b.object.c_str(),
                   b.texture.c_str(), mapping_name(b.mapping), b.charts, b.distortion.l2_stretch);
@@ -183,7 +198,8 @@ void bake(const BakeCommandOptions& o) {
 }  // namespace
 
 void add_texture_commands(CLI::App& app) {
-  auto* noise = app.add_subcommand("noise", "Perlin improved noise at a point (17 significant digits)");
+  auto* noise =
+      app.add_subcommand("noise", "Perlin improved noise at a point (17 significant digits)");
   auto point = std::make_shared<std::array<double, 3>>();
   auto json = std::make_shared<bool>(false);
   noise->add_option("x", (*point)[0], "x")->required();
@@ -208,8 +224,9 @@ void add_texture_commands(CLI::App& app) {
                       "Preset: endometrium, myoma-surface, peritoneum, liver, urethral-mucosa");
   texture->add_option("--seed", options->seed, "Random seed")->capture_default_str();
   texture->add_option("--size", options->size, "Size in pixels, WxH")->capture_default_str();
-  texture->add_option("--sample", options->sample,
-                      "Sample image whose pixels fill the noise lattice (KisMo), instead of the preset palette");
+  texture->add_option(
+      "--sample", options->sample,
+      "Sample image whose pixels fill the noise lattice (KisMo), instead of the preset palette");
   texture->add_option("-o,--output", options->output, "Output PNG (albedo)");
   texture->add_flag("--maps", options->all_maps, "Also write OUT_normal.png and OUT_specular.png");
   texture->add_flag("--no-vessels", options->no_vessels, "Leave out the vessel layers");
@@ -222,12 +239,16 @@ void add_texture_commands(CLI::App& app) {
   auto b = std::make_shared<BakeCommandOptions>();
   baking->add_option("input", b->input, "Input package (.vscene or .vscz)")->required();
   baking->add_option("-o,--output", b->output, "Output package")->required();
-  baking->add_option("--preset,-p", b->preset, "Give the objects this preset (else bake their own textures)");
-  baking->add_option("--object", b->objects, "Objects to texture with --preset (default: every organ)");
+  baking->add_option("--preset,-p", b->preset,
+                     "Give the objects this preset (else bake their own textures)");
+  baking->add_option("--object", b->objects,
+                     "Objects to texture with --preset (default: every organ)");
   baking->add_option("--seed", b->seed, "Texture seed with --preset")->capture_default_str();
-  baking->add_option("--size", b->size, "Map size in pixels, WxH, with --preset")->capture_default_str();
+  baking->add_option("--size", b->size, "Map size in pixels, WxH, with --preset")
+      ->capture_default_str();
   baking->add_option("--sample", b->sample, "Sample image for the colour field (KisMo)");
-  baking->add_option("--scale", b->scale, "Metres of surface per texture width")->capture_default_str();
+  baking->add_option("--scale", b->scale, "Metres of surface per texture width")
+      ->capture_default_str();
   baking->add_flag("--keep-topology", b->keep_topology,
                    "Never split seam vertices: surfaces without UVs get vertex colours instead");
   baking->add_flag("--json", b->json, "Print JSON");

@@ -41,9 +41,11 @@ std::string read_text_file(const std::string& path) {
   return text.str();
 }
 
-bool has_extension(const std::filesystem::path& path, std::initializer_list<const char*> extensions) {
+bool has_extension(const std::filesystem::path& path,
+                   std::initializer_list<const char*> extensions) {
   std::string ext = path.extension().string();
-  for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  for (auto& c : ext)
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   for (const char* e : extensions) {
     if (ext == e) return true;
   }
@@ -54,18 +56,21 @@ bool has_extension(const std::filesystem::path& path, std::initializer_list<cons
 std::unique_ptr<templates::PerfusionDomain> load_domain(const VesselOptions& o, std::string& host) {
   const std::filesystem::path path = o.domain;
   if (has_extension(path, {".vti"})) {
-    return std::make_unique<templates::LabelMapDomain>(core::read_label_map_vti(path), o.label, o.domain);
+    return std::make_unique<templates::LabelMapDomain>(core::read_label_map_vti(path), o.label,
+                                                       o.domain);
   }
   if (has_extension(path, {".vscene", ".vscz"})) {
     const core::Scenario scenario = core::read_package(path);
     for (const auto& object : scenario.objects) {
       if (o.object.empty() ? object.role == core::ObjectRole::Organ : object.id == o.object) {
         host = object.id;
-        return std::make_unique<templates::SurfaceMeshDomain>(object.surface, o.domain + ":" + object.id);
+        return std::make_unique<templates::SurfaceMeshDomain>(object.surface,
+                                                              o.domain + ":" + object.id);
       }
     }
-    throw core::InputError(o.object.empty() ? "the package has no organ" : "no object \"" + o.object + "\"",
-                           {o.domain, "", ""});
+    throw core::InputError(
+        o.object.empty() ? "the package has no organ" : "no object \"" + o.object + "\"",
+        {o.domain, "", ""});
   }
   core::SurfaceMesh surface;
   if (has_extension(path, {".vtp"})) {
@@ -90,7 +95,8 @@ core::VesselTree make_tree(const VesselOptions& o, const templates::PerfusionDom
   if (o.method == "lsystem") {
     const std::string grammar_text =
         o.grammar_file.empty() ? templates::kDefaultVesselGrammar : read_text_file(o.grammar_file);
-    const auto grammar = core::Lsystem::parse(grammar_text, o.grammar_file.empty() ? "built-in grammar" : o.grammar_file);
+    const auto grammar = core::Lsystem::parse(
+        grammar_text, o.grammar_file.empty() ? "built-in grammar" : o.grammar_file);
     templates::LsystemVesselOptions options;
     options.generations = o.generations;
     options.seed = o.seed;
@@ -115,7 +121,8 @@ core::VesselTree make_tree(const VesselOptions& o, const templates::PerfusionDom
     return templates::lsystem_vessel_tree(grammar, options);
   }
   if (o.method == "splines") {
-    if (o.splines_file.empty()) throw core::UsageError("--method splines needs --splines FILE.json");
+    if (o.splines_file.empty())
+      throw core::UsageError("--method splines needs --splines FILE.json");
     nlohmann::json json;
     try {
       json = nlohmann::json::parse(read_text_file(o.splines_file));
@@ -174,40 +181,55 @@ void run(const VesselOptions& o) {
   const auto issues = templates::validate_vessel_tree(tree);
   const auto json = templates::vessel_tree_to_json(tree)["summary"];
   if (o.json) {
-    nlohmann::json out = {{"tree", std::filesystem::absolute(json_path).string()}, {"summary", json}};
-    if (!o.mesh.empty()) out["mesh"] = {{"file", std::filesystem::absolute(o.mesh).string()}, {"triangles", triangles}};
+    nlohmann::json out = {{"tree", std::filesystem::absolute(json_path).string()},
+                          {"summary", json}};
+    if (!o.mesh.empty())
+      out["mesh"] = {{"file", std::filesystem::absolute(o.mesh).string()},
+                     {"triangles", triangles}};
     print_json(out);
   } else {
     std::ostringstream text;
-    text << "wrote " << std::filesystem::absolute(json_path).string() << " (" << json["segments"] << " segments, "
-         << json["terminals"] << " terminals)\n";
-    if (!o.mesh.empty()) text << "wrote " << std::filesystem::absolute(o.mesh).string() << " (" << triangles << " triangles)\n";
+    text << "wrote " << std::filesystem::absolute(json_path).string() << " (" << json["segments"]
+         << " segments, " << json["terminals"] << " terminals)\n";
+    if (!o.mesh.empty())
+      text << "wrote " << std::filesystem::absolute(o.mesh).string() << " (" << triangles
+           << " triangles)\n";
     print_text(text.str());
   }
   // A drawn tree may break the checks; the result is written and the exit code says so.
   if (!issues.empty()) {
-    throw core::ValidationError(issues.front().message + (issues.size() > 1 ? " (and " + std::to_string(issues.size() - 1) + " more)" : ""),
-                                {o.output, "/tree" + issues.front().json_pointer, ""});
+    throw core::ValidationError(
+        issues.front().message +
+            (issues.size() > 1 ? " (and " + std::to_string(issues.size() - 1) + " more)" : ""),
+        {o.output, "/tree" + issues.front().json_pointer, ""});
   }
 }
 
 }  // namespace
 
 void add_vessel_commands(CLI::App& app) {
-  auto* vessels = app.add_subcommand("vessels", "Grow or draw a vessel tree (Murray radii, no touching walls)");
+  auto* vessels =
+      app.add_subcommand("vessels", "Grow or draw a vessel tree (Murray radii, no touching walls)");
   auto o = std::make_shared<VesselOptions>();
-  vessels->add_option("--domain,-d", o->domain,
-                      "Organ: label map (.vti), package (.vscene/.vscz, see --object) or surface mesh");
-  vessels->add_option("--terminals,-n", o->terminals, "Terminal segments (cco)")->capture_default_str();
+  vessels->add_option(
+      "--domain,-d", o->domain,
+      "Organ: label map (.vti), package (.vscene/.vscz, see --object) or surface mesh");
+  vessels->add_option("--terminals,-n", o->terminals, "Terminal segments (cco)")
+      ->capture_default_str();
   vessels->add_option("--seed", o->seed, "Random seed")->capture_default_str();
   vessels->add_option("-o,--output", o->output, "Output tree JSON");
   vessels->add_option("--mesh", o->mesh, "Also write the pipe surface (.vtp)");
   vessels->add_option("--method", o->method, "cco, lsystem or splines")->capture_default_str();
-  vessels->add_option("--label", o->label, "Label of the organ in a label map (0 = any)")->capture_default_str();
-  vessels->add_option("--object", o->object, "Object of a package to grow in (default: first organ)");
-  vessels->add_option("--units", o->units, "Unit of a mesh file: m, cm or mm")->capture_default_str();
-  vessels->add_option("--grammar", o->grammar_file, "L-system grammar file (lsystem; default built in)");
-  vessels->add_option("--generations", o->generations, "L-system generations")->capture_default_str();
+  vessels->add_option("--label", o->label, "Label of the organ in a label map (0 = any)")
+      ->capture_default_str();
+  vessels->add_option("--object", o->object,
+                      "Object of a package to grow in (default: first organ)");
+  vessels->add_option("--units", o->units, "Unit of a mesh file: m, cm or mm")
+      ->capture_default_str();
+  vessels->add_option("--grammar", o->grammar_file,
+                      "L-system grammar file (lsystem; default built in)");
+  vessels->add_option("--generations", o->generations, "L-system generations")
+      ->capture_default_str();
   vessels->add_option("--splines", o->splines_file, "Branches as JSON (splines)");
   vessels->add_option("--flow", o->flow, "Root flow in m^3/s")->capture_default_str();
   vessels->add_option("--root-radius", o->root_radius, "Root radius in m (lsystem, splines)");

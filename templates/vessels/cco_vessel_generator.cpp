@@ -5,179 +5,15 @@
 #include <numbers>
 
 #include "core/error.h"
+#include "templates/vessels/cco_growing_tree.h"
 #include "templates/vessels/vessel_tree_analysis.h"
 
 namespace viscera::templates {
 namespace {
 
+using cco::GrowingTree;
+using cco::Node;
 using core::Vec3;
-
-/// Hydraulic summary of a subtree: reduced resistance R* = R·r⁴ of the subtree with its root
-/// segment's radius factored out (Pa·s·m), volume factor S with V = π r² S (m), terminal count.
-struct Summary {
-  double resistance = 0.0;
-  double volume_factor = 0.0;
-  int terminals = 1;
-};
-
-struct Node {
-  Vec3 proximal = Vec3::Zero(), distal = Vec3::Zero();
-  int parent = -1, left = -1, right = -1;
-  Summary summary;
-  double beta_left = 0.0, beta_right = 0.0;  ///< child radius / own radius
-  bool alive = true;
-  int birth = 0;  ///< insertion order of the terminal that created it
-};
-
-/// The tree while it grows, with Poiseuille hydraulics kept up to date along changed paths.
-class GrowingTree {
- public:
-  GrowingTree(const CcoOptions& o, double terminal_flow)
-      : viscous_factor_(8.0 * o.viscosity / std::numbers::pi),
-        gamma_(o.murray_exponent),
-        terminal_flow_(terminal_flow),
-        pressure_drop_(o.perfusion_pressure - o.terminal_pressure) {}
-
-  std::vector<Node> nodes;
-  int root = -1;
-
-  Summary leaf(double length, int terminals = 1) const {
-    return {viscous_factor_ * length, length, terminals};
-  }
-
-  /// Summary of a segment of `length` whose children are `l` and `r`; sets the radius ratios.
-  Summary combine(double length, const Summary& l, const Summary& r, double& beta_l, double& beta_r) const {
-    // Equal terminal pressures: (r_l/r_r)⁴ = (Q_l R*_l)/(Q_r R*_r), flows ∝ terminal counts.
-    const double rho = std::pow((l.terminals * l.resistance) / (r.terminals * r.resistance), 0.25);
-    beta_l = std::pow(1.0 + std::pow(rho, -gamma_), -1.0 / gamma_);
-    beta_r = std::pow(1.0 + std::pow(rho, gamma_), -1.0 / gamma_);
-    Summary s;
-    s.resistance = viscous_factor_ * length +
-                   1.0 / (std::pow(beta_l, 4) / l.resistance + std::pow(beta_r, 4) / r.resistance);
-    s.volume_factor = length + beta_l * beta_l * l.volume_factor + beta_r * beta_r * r.volume_factor;
-    s.terminals = l.terminals + r.terminals;
-    return s;
-  }
-
-  double root_radius(const Summary& s) const {
-    return std::pow(s.resistance * terminal_flow_ * s.terminals / pressure_drop_, 0.25);
-  }
-
-  void refresh(int i) {
-    Node& n = nodes[i];
-    const double length = (n.distal - n.proximal).norm();
-    if (n.left < 0) {
-      n.summary = leaf(length);
-    } else {
-      n.summary = combine(length, nodes[n.left].summary, nodes[n.right].summary, n.beta_left, n.beta_right);
-    }
-  }
-
-  void refresh_upwards(int i) {
-    for (; i >= 0; i = nodes[i].parent) refresh(i);
-  }
-
-  struct Trial {
-    double volume = 0.0;
-    double terminal_radius = 0.0;
-  };
-
-  /// Tree volume and new terminal radius if x were joined to segment j at bifurcation b;
-  /// nothing changes.
-  Trial try_insertion(int j, const Vec3& b, const Vec3& x) const {
-    const Node& J = nodes[j];
-    const double old_length = (J.distal - J.proximal).norm();
-    const double continuation = (J.distal - b).norm();
-    Summary c = J.summary;
-    c.resistance += viscous_factor_ * (continuation - old_length);
-    c.volume_factor += continuation - old_length;
-    double beta_c = 0.0, beta_t = 0.0;
-    Summary s = combine((b - J.proximal).norm(), c, leaf((x - b).norm()), beta_c, beta_t);
-    double product = beta_t;
-    int child = j;
-    for (int p = J.parent; p >= 0; child = p, p = nodes[p].parent) {
-      const Node& P = nodes[p];
-      const double length = (P.distal - P.proximal).norm();
-      double bl = 0.0, br = 0.0;
-      if (P.left == child) {
-        s = combine(length, s, nodes[P.right].summary, bl, br);
-        product *= bl;
-      } else {
-        s = combine(length, nodes[P.left].summary, s, bl, br);
-        product *= br;
-      }
-    }
-    const double r0 = root_radius(s);
-    return {std::numbers::pi * r0 * r0 * s.volume_factor, r0 * product};
-  }
-
-  /// Joins x to segment j at b; returns the new terminal's index.
-  int insert(int j, const Vec3& b, const Vec3& x, int birth) {
-    const int c = static_cast<int>(nodes.size());
-    const int t = c + 1;
-    Node continuation = nodes[j];
-    continuation.proximal = b;
-    continuation.parent = j;
-    Node terminal;
-    terminal.proximal = b;
-    terminal.distal = x;
-    terminal.parent = j;
-    terminal.birth = birth;
-    nodes.push_back(continuation);
-    nodes.push_back(terminal);
-    if (nodes[c].left >= 0) {
-      nodes[nodes[c].left].parent = c;
-      nodes[nodes[c].right].parent = c;
-    }
-    nodes[j].distal = b;
-    nodes[j].left = c;
-    nodes[j].right = t;
-    refresh(c);
-    refresh(t);
-    refresh_upwards(j);
-    return t;
-  }
-
-  /// Removes terminal t and merges its parent with the sibling.
-  void remove_terminal(int t) {
-    const int j = nodes[t].parent;
-    const int c = nodes[j].left == t ? nodes[j].right : nodes[j].left;
-    Node& J = nodes[j];
-    J.distal = nodes[c].distal;
-    J.left = nodes[c].left;
-    J.right = nodes[c].right;
-    if (J.left >= 0) {
-      nodes[J.left].parent = j;
-      nodes[J.right].parent = j;
-    }
-    nodes[c].alive = false;
-    nodes[t].alive = false;
-    refresh_upwards(j);
-  }
-
-  /// Radius of every alive node, top-down from the root.
-  std::vector<double> radii() const {
-    std::vector<double> r(nodes.size(), 0.0);
-    std::vector<int> stack = {root};
-    r[root] = root_radius(nodes[root].summary);
-    while (!stack.empty()) {
-      const int i = stack.back();
-      stack.pop_back();
-      const Node& n = nodes[i];
-      if (n.left < 0) continue;
-      r[n.left] = r[i] * n.beta_left;
-      r[n.right] = r[i] * n.beta_right;
-      stack.push_back(n.left);
-      stack.push_back(n.right);
-    }
-    return r;
-  }
-
-  double terminal_flow() const { return terminal_flow_; }
-
- private:
-  double viscous_factor_, gamma_, terminal_flow_, pressure_drop_;
-};
 
 /// Bifurcation positions tried for a candidate segment P–D and new terminal x: points of the
 /// triangle P, D, x near the segment, as fractions t along P–D and s towards x.
@@ -211,7 +47,8 @@ class CcoGrower {
       const double wanted = 0.25 * domain_.bounds().size().norm();
       for (int attempt = 0;; ++attempt) {
         x = domain_.random_point(rng_);
-        if (((x - inlet).norm() > wanted * std::pow(0.9, attempt / 50) && domain_.contains_segment(inlet, x)) ||
+        if (((x - inlet).norm() > wanted * std::pow(0.9, attempt / 50) &&
+             domain_.contains_segment(inlet, x)) ||
             attempt > 5000) {
           break;
         }
@@ -366,9 +203,11 @@ class CcoGrower {
     const double r = radii_[j], grow = projection();
     const auto apart = [&](int k, const Vec3& p, const Vec3& q) {
       const Node& n = tree_.nodes[k];
-      return segment_distance(p, q, n.proximal, n.distal) >= options_.clearance * grow * (r + radii_[k]);
+      return segment_distance(p, q, n.proximal, n.distal) >=
+             options_.clearance * grow * (r + radii_[k]);
     };
-    if (J.left >= 0 && (!apart(J.left, J.proximal, b) || !apart(J.right, J.proximal, b))) return true;
+    if (J.left >= 0 && (!apart(J.left, J.proximal, b) || !apart(J.right, J.proximal, b)))
+      return true;
     if (J.parent >= 0) {
       const Node& P = tree_.nodes[J.parent];
       const int sibling = P.left == j ? P.right : P.left;
@@ -382,10 +221,13 @@ class CcoGrower {
     std::vector<std::pair<double, int>> nearest;
     for (std::size_t k = 0; k < tree_.nodes.size(); ++k) {
       const Node& n = tree_.nodes[k];
-      if (n.alive) nearest.emplace_back(segment_distance(x, x, n.proximal, n.distal), static_cast<int>(k));
+      if (n.alive)
+        nearest.emplace_back(segment_distance(x, x, n.proximal, n.distal), static_cast<int>(k));
     }
-    const std::size_t keep = std::min<std::size_t>(nearest.size(), static_cast<std::size_t>(options_.candidate_segments));
-    std::partial_sort(nearest.begin(), nearest.begin() + static_cast<std::ptrdiff_t>(keep), nearest.end());
+    const std::size_t keep = std::min<std::size_t>(
+        nearest.size(), static_cast<std::size_t>(options_.candidate_segments));
+    std::partial_sort(nearest.begin(), nearest.begin() + static_cast<std::ptrdiff_t>(keep),
+                      nearest.end());
     nearest.resize(keep);
     std::vector<Candidate> candidates;
     for (const auto& [distance, j] : nearest) {
@@ -440,13 +282,16 @@ core::VesselTree grow_cco_tree(const PerfusionDomain& domain, const CcoOptions& 
                                core::Progress& progress) {
   const bool fixed = !options.perfusion_points.empty();
   const int wanted = fixed ? static_cast<int>(options.perfusion_points.size()) : options.terminals;
-  if (wanted < 1 || wanted > 100000) throw core::UsageError("terminals must be between 1 and 100000");
+  if (wanted < 1 || wanted > 100000)
+    throw core::UsageError("terminals must be between 1 and 100000");
   if (!(options.perfusion_flow > 0.0) || !(options.viscosity > 0.0) ||
-      !(options.perfusion_pressure > options.terminal_pressure) || !(options.murray_exponent >= 2.0) ||
-      !(options.murray_exponent <= 3.5) || options.candidate_segments < 1 || !(options.clearance >= 0.0)) {
+      !(options.perfusion_pressure > options.terminal_pressure) ||
+      !(options.murray_exponent >= 2.0) || !(options.murray_exponent <= 3.5) ||
+      options.candidate_segments < 1 || !(options.clearance >= 0.0)) {
     throw core::UsageError(
         "CCO needs positive flow and viscosity, perfusion pressure above terminal pressure, "
-        "a Murray exponent in [2, 3.5], at least one candidate segment and a non-negative clearance");
+        "a Murray exponent in [2, 3.5], at least one candidate segment and a non-negative "
+        "clearance");
   }
   const Vec3 inlet = options.inlet ? *options.inlet : domain.default_inlet();
   if (!domain.contains(inlet)) throw core::UsageError("the inlet lies outside the domain");
@@ -476,7 +321,8 @@ core::VesselTree grow_cco_tree(const PerfusionDomain& domain, const CcoOptions& 
     // Radii settle only when the tree is complete; touching walls are removed and regrown.
     if (grower.remove_intersections() == 0) break;
     if (fixed || repair > 50) {
-      throw core::InputError("vessel walls keep touching; try fewer terminals or a smaller clearance");
+      throw core::InputError(
+          "vessel walls keep touching; try fewer terminals or a smaller clearance");
     }
   }
   return grower.export_tree();

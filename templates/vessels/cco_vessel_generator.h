@@ -25,16 +25,16 @@ namespace viscera::templates {
 /// Parameters of CCO growth. Defaults: a uterine artery branch (150 ml/min, 100 → 63 mmHg,
 /// blood viscosity 3.6 mPa·s as in Karch et al. 1999).
 struct CcoOptions {
-  int terminals = 250;                    ///< terminal segments of the final tree
+  int terminals = 250;  ///< terminal segments of the final tree
   std::uint64_t seed = 1;
-  double perfusion_flow = 2.5e-6;         ///< m³/s through the root
-  double perfusion_pressure = 1.33e4;     ///< Pa at the root inlet
-  double terminal_pressure = 8.38e3;      ///< Pa at every terminal
-  double viscosity = 3.6e-3;              ///< Pa·s
-  double murray_exponent = 3.0;           ///< γ of the bifurcation law
-  int candidate_segments = 20;            ///< nearest segments tried per terminal (Karch: 20)
-  double clearance = 1.0;                 ///< walls must stay clearance·(r_a + r_b) apart
-  std::optional<core::Vec3> inlet;        ///< root inlet; default PerfusionDomain::default_inlet
+  double perfusion_flow = 2.5e-6;            ///< m³/s through the root
+  double perfusion_pressure = 1.33e4;        ///< Pa at the root inlet
+  double terminal_pressure = 8.38e3;         ///< Pa at every terminal
+  double viscosity = 3.6e-3;                 ///< Pa·s
+  double murray_exponent = 3.0;              ///< γ of the bifurcation law
+  int candidate_segments = 20;               ///< nearest segments tried per terminal (Karch: 20)
+  double clearance = 1.0;                    ///< walls must stay clearance·(r_a + r_b) apart
+  std::optional<core::Vec3> inlet;           ///< root inlet; default PerfusionDomain::default_inlet
   std::vector<core::Vec3> perfusion_points;  ///< fixed terminal positions; overrides `terminals`
   std::string tree_id = "arterial-tree";
   std::string host_object;

@@ -9,7 +9,8 @@ namespace viscera::templates {
 
 using core::Vec3;
 
-core::VesselTree lsystem_vessel_tree(const core::Lsystem& grammar, const LsystemVesselOptions& options) {
+core::VesselTree lsystem_vessel_tree(const core::Lsystem& grammar,
+                                     const LsystemVesselOptions& options) {
   // Grammar lengths are in units of the turtle step: draw at unit scale, then scale to metres.
   core::TurtleOptions unit = options.turtle;
   unit.origin = Vec3::Zero();
@@ -30,10 +31,12 @@ core::VesselTree lsystem_vessel_tree(const core::Lsystem& grammar, const Lsystem
     int parent = s.parent >= 0 ? segment_of[s.parent] : -1;
     // A stroke after an `f` move, or below a cut-off parent, does not continue its parent.
     if (s.parent >= 0 && parent < 0) continue;
-    if (parent >= 0 && (tree.segments[parent].distal - s.start).norm() > 1e-12 * (1.0 + s.start.norm())) {
+    if (parent >= 0 &&
+        (tree.segments[parent].distal - s.start).norm() > 1e-12 * (1.0 + s.start.norm())) {
       parent = -1;
     }
-    if (options.domain && !(options.domain->contains(s.start) && options.domain->contains(s.end))) continue;
+    if (options.domain && !(options.domain->contains(s.start) && options.domain->contains(s.end)))
+      continue;
     core::VesselSegment segment;
     segment.id = static_cast<int>(tree.segments.size());
     segment.parent = parent;
@@ -43,7 +46,8 @@ core::VesselTree lsystem_vessel_tree(const core::Lsystem& grammar, const Lsystem
     tree.segments.push_back(segment);
     end_width.push_back(std::max(s.end_width, 1e-12));
   }
-  if (tree.segments.empty()) throw core::InputError("the L-system draws no vessel inside the domain");
+  if (tree.segments.empty())
+    throw core::InputError("the L-system draws no vessel inside the domain");
   for (int round = 0;; ++round) {
     const auto children = segment_children(tree);
     std::vector<double> weights;
@@ -58,7 +62,8 @@ core::VesselTree lsystem_vessel_tree(const core::Lsystem& grammar, const Lsystem
     // Cut the later branch of each touching pair, with its subtree (children come later, so
     // one forward sweep marks whole subtrees).
     std::vector<bool> cut(tree.segments.size(), false);
-    for (const auto& hit : hits) cut[static_cast<std::size_t>(hit.second)] = true;
+    for (const auto& hit : hits)
+      cut[static_cast<std::size_t>(hit.second)] = true;
     for (std::size_t i = 0; i < tree.segments.size(); ++i) {
       if (tree.segments[i].parent >= 0 && cut[tree.segments[i].parent]) cut[i] = true;
     }

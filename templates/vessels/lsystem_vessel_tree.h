@@ -24,10 +24,10 @@ inline constexpr const char* kDefaultVesselGrammar =
 /// turtle.step, which is in m; turtle.origin is in m.
 struct LsystemVesselOptions {
   int generations = 6;
-  std::uint64_t seed = 1;           ///< stochastic productions
-  core::TurtleOptions turtle;       ///< origin, heading, step (m), angle, jitter, …
-  double root_radius = 1.5e-3;      ///< m
-  double total_flow = 2.5e-6;       ///< m³/s
+  std::uint64_t seed = 1;                   ///< stochastic productions
+  core::TurtleOptions turtle;               ///< origin, heading, step (m), angle, jitter, …
+  double root_radius = 1.5e-3;              ///< m
+  double total_flow = 2.5e-6;               ///< m³/s
   const PerfusionDomain* domain = nullptr;  ///< when set, branches leaving it are cut off
   bool prune_intersections = true;  ///< cut off later branches whose walls touch earlier ones
   std::string tree_id = "lsystem-tree";
@@ -42,6 +42,7 @@ struct LsystemVesselOptions {
 /// wall touches an earlier segment it shares no node with is cut off with everything below it,
 /// and flows and radii are recomputed, until no walls touch. Throws core::InputError when
 /// nothing is drawn inside the domain.
-core::VesselTree lsystem_vessel_tree(const core::Lsystem& grammar, const LsystemVesselOptions& options);
+core::VesselTree lsystem_vessel_tree(const core::Lsystem& grammar,
+                                     const LsystemVesselOptions& options);
 
 }  // namespace viscera::templates

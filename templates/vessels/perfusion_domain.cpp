@@ -49,7 +49,8 @@ struct SurfaceMeshDomain::AxisGrid {
 
 SurfaceMeshDomain::SurfaceMeshDomain(core::SurfaceMesh mesh, const std::string& what)
     : mesh_(std::move(mesh)) {
-  if (mesh_.triangles.empty()) throw core::InputError("the domain mesh has no triangles", {what, "", ""});
+  if (mesh_.triangles.empty())
+    throw core::InputError("the domain mesh has no triangles", {what, "", ""});
   core::check_surface_mesh(mesh_, what);
   box_ = core::bounds(mesh_);
   volume_ = std::abs(core::enclosed_volume(mesh_));
@@ -58,10 +59,12 @@ SurfaceMeshDomain::SurfaceMeshDomain(core::SurfaceMesh mesh, const std::string& 
     throw core::InputError("the domain mesh encloses no volume", {what, "", ""});
   }
   double edge = 0.0;
-  for (const auto& t : mesh_.triangles) edge += (mesh_.vertices[t[1]] - mesh_.vertices[t[0]]).norm();
+  for (const auto& t : mesh_.triangles)
+    edge += (mesh_.vertices[t[1]] - mesh_.vertices[t[0]]).norm();
   edge /= static_cast<double>(mesh_.triangles.size());
   resolution_ = std::max(edge, 1e-3 * extent);
-  const int per_side = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(mesh_.triangles.size()) / 2.0)), 1, 512);
+  const int per_side = std::clamp(
+      static_cast<int>(std::sqrt(static_cast<double>(mesh_.triangles.size()) / 2.0)), 1, 512);
   for (int axis = 0; axis < 3; ++axis) {
     auto grid = std::make_unique<AxisGrid>();
     grid->axis = axis;
@@ -86,7 +89,8 @@ SurfaceMeshDomain::SurfaceMeshDomain(core::SurfaceMesh mesh, const std::string& 
       const int iv0 = std::clamp(static_cast<int>((lo_v - grid->v0) / grid->cell), 0, grid->nv - 1);
       const int iv1 = std::clamp(static_cast<int>((hi_v - grid->v0) / grid->cell), 0, grid->nv - 1);
       for (int iu = iu0; iu <= iu1; ++iu)
-        for (int iv = iv0; iv <= iv1; ++iv) grid->bins[static_cast<std::size_t>(iu) * grid->nv + iv].push_back(static_cast<int>(t));
+        for (int iv = iv0; iv <= iv1; ++iv)
+          grid->bins[static_cast<std::size_t>(iu) * grid->nv + iv].push_back(static_cast<int>(t));
     }
     grids_.push_back(std::move(grid));
   }
@@ -121,21 +125,26 @@ int SurfaceMeshDomain::crossings(const core::Vec3& p, int axis) const {
 }
 
 bool SurfaceMeshDomain::contains(const core::Vec3& point) const {
-  if ((point.array() < box_.min.array()).any() || (point.array() > box_.max.array()).any()) return false;
+  if ((point.array() < box_.min.array()).any() || (point.array() > box_.max.array()).any())
+    return false;
   // A tiny shift by incommensurate fractions of the extent: symmetric meshes (an icosphere has
   // vertices and edges on the axes) would otherwise put axis rays exactly through shared edges,
   // where parity counting fails. Points within 10⁻⁷ of the wall may go either way.
-  const core::Vec3 p = point + box_.size().maxCoeff() * core::Vec3(1.2345679e-7, 2.7182818e-7, 1.4142136e-7);
+  const core::Vec3 p =
+      point + box_.size().maxCoeff() * core::Vec3(1.2345679e-7, 2.7182818e-7, 1.4142136e-7);
   int votes = 0;
-  for (int axis = 0; axis < 3; ++axis) votes += crossings(p, axis) % 2;
+  for (int axis = 0; axis < 3; ++axis)
+    votes += crossings(p, axis) % 2;
   return votes >= 2;
 }
 
 LabelMapDomain::LabelMapDomain(core::LabelMap labels, int label, const std::string& what)
     : labels_(std::move(labels)), label_(label) {
   const auto& image = labels_.image;
-  if (image.scalar_type != core::ScalarType::UInt16 || image.voxels.size() != image.voxel_count() * 2) {
-    throw core::InputError("the label map must hold one unsigned 16-bit label per voxel", {what, "", ""});
+  if (image.scalar_type != core::ScalarType::UInt16 ||
+      image.voxels.size() != image.voxel_count() * 2) {
+    throw core::InputError("the label map must hold one unsigned 16-bit label per voxel",
+                           {what, "", ""});
   }
   for (std::size_t i = 0; i < image.voxel_count(); ++i) {
     if (inside_voxel(i)) inside_.push_back(i);
@@ -151,9 +160,11 @@ LabelMapDomain::LabelMapDomain(core::LabelMap labels, int label, const std::stri
   for (const std::size_t linear : inside_) {
     const int i = static_cast<int>(linear % image.dims[0]);
     const int j = static_cast<int>((linear / image.dims[0]) % image.dims[1]);
-    const int k = static_cast<int>(linear / (static_cast<std::size_t>(image.dims[0]) * image.dims[1]));
+    const int k =
+        static_cast<int>(linear / (static_cast<std::size_t>(image.dims[0]) * image.dims[1]));
     for (int corner = 0; corner < 8; ++corner) {
-      box_.add(image.index_to_world(core::Vec3(i + ((corner & 1) ? 0.5 : -0.5), j + ((corner & 2) ? 0.5 : -0.5),
+      box_.add(image.index_to_world(core::Vec3(i + ((corner & 1) ? 0.5 : -0.5),
+                                               j + ((corner & 2) ? 0.5 : -0.5),
                                                k + ((corner & 4) ? 0.5 : -0.5))));
     }
   }
@@ -177,13 +188,14 @@ bool LabelMapDomain::contains(const core::Vec3& p) const {
 
 core::Vec3 LabelMapDomain::random_point(core::Rng& rng) const {
   // A random domain voxel, then a uniform point in it: exact and fast for thin organs.
-  const std::size_t linear = inside_[static_cast<std::size_t>(rng.uniform_int(0, static_cast<std::int64_t>(inside_.size()) - 1))];
+  const std::size_t linear = inside_[static_cast<std::size_t>(
+      rng.uniform_int(0, static_cast<std::int64_t>(inside_.size()) - 1))];
   const auto& dims = labels_.image.dims;
   const double i = static_cast<double>(linear % dims[0]);
   const double j = static_cast<double>((linear / dims[0]) % dims[1]);
   const double k = static_cast<double>(linear / (static_cast<std::size_t>(dims[0]) * dims[1]));
-  return labels_.image.index_to_world(core::Vec3(i + rng.uniform(-0.5, 0.5), j + rng.uniform(-0.5, 0.5),
-                                                 k + rng.uniform(-0.5, 0.5)));
+  return labels_.image.index_to_world(core::Vec3(
+      i + rng.uniform(-0.5, 0.5), j + rng.uniform(-0.5, 0.5), k + rng.uniform(-0.5, 0.5)));
 }
 
 }  // namespace viscera::templates

@@ -15,7 +15,8 @@ using core::Vec3;
 /// is already within `tolerance`, and returns that vertex's index.
 std::size_t insert_at_fraction(std::vector<Vec3>& line, double fraction, double tolerance) {
   double total = 0.0;
-  for (std::size_t i = 1; i < line.size(); ++i) total += (line[i] - line[i - 1]).norm();
+  for (std::size_t i = 1; i < line.size(); ++i)
+    total += (line[i] - line[i - 1]).norm();
   const double target = fraction * total;
   double walked = 0.0;
   for (std::size_t i = 1; i < line.size(); ++i) {
@@ -35,40 +36,17 @@ std::size_t insert_at_fraction(std::vector<Vec3>& line, double fraction, double 
 
 }  // namespace
 
-std::vector<Vec3> sample_catmull_rom(const std::vector<Vec3>& points, double spacing, double alpha) {
-  if (points.size() < 2) throw core::UsageError("a spline needs at least two points");
-  if (points.size() == 2 || !(spacing > 0.0)) {
-    std::vector<Vec3> line = {points.front()};
-    const int pieces = spacing > 0.0 ? std::max(1, static_cast<int>(std::ceil((points[1] - points[0]).norm() / spacing))) : 1;
-    for (int k = 1; k <= pieces; ++k) line.push_back(points[0] + (points[1] - points[0]) * (static_cast<double>(k) / pieces));
-    return line;
-  }
-  std::vector<Vec3> p;
-  p.push_back(2.0 * points[0] - points[1]);  // phantom ends keep the end tangents natural
-  p.insert(p.end(), points.begin(), points.end());
-  p.push_back(2.0 * points[points.size() - 1] - points[points.size() - 2]);
-  const auto knot = [alpha](const Vec3& a, const Vec3& b, double t) {
-    return t + std::max(std::pow((b - a).norm(), alpha), 1e-12);
-  };
+std::vector<Vec3> sample_catmull_rom(const std::vector<Vec3>& points, double spacing,
+                                     core::KnotSpacing knots) {
+  const core::CatmullRomSpline spline(points, knots, false);
   std::vector<Vec3> line = {points.front()};
-  for (std::size_t i = 1; i + 2 < p.size(); ++i) {
-    const Vec3 &p0 = p[i - 1], &p1 = p[i], &p2 = p[i + 1], &p3 = p[i + 2];
-    const double t0 = 0.0, t1 = knot(p0, p1, t0), t2 = knot(p1, p2, t1), t3 = knot(p2, p3, t2);
-    const int pieces = std::max(1, static_cast<int>(std::ceil((p2 - p1).norm() / spacing)));
-    for (int k = 1; k <= pieces; ++k) {
-      if (k == pieces) {
-        line.push_back(p2);
-        continue;
-      }
-      // Barry–Goldman pyramid: exact for any knot spacing.
-      const double t = t1 + (t2 - t1) * k / pieces;
-      const Vec3 a1 = (t1 - t) / (t1 - t0) * p0 + (t - t0) / (t1 - t0) * p1;
-      const Vec3 a2 = (t2 - t) / (t2 - t1) * p1 + (t - t1) / (t2 - t1) * p2;
-      const Vec3 a3 = (t3 - t) / (t3 - t2) * p2 + (t - t2) / (t3 - t2) * p3;
-      const Vec3 b1 = (t2 - t) / (t2 - t0) * a1 + (t - t0) / (t2 - t0) * a2;
-      const Vec3 b2 = (t3 - t) / (t3 - t1) * a2 + (t - t1) / (t3 - t1) * a3;
-      line.push_back((t2 - t) / (t2 - t1) * b1 + (t - t1) / (t2 - t1) * b2);
-    }
+  for (int s = 0; s < spline.segments(); ++s) {
+    const double chord = (points[s + 1] - points[s]).norm();
+    const int pieces =
+        spacing > 0.0 ? std::max(1, static_cast<int>(std::ceil(chord / spacing))) : 1;
+    for (int k = 1; k < pieces; ++k)
+      line.push_back(spline.evaluate(s, static_cast<double>(k) / pieces));
+    line.push_back(points[s + 1]);  // exactly through the control point
   }
   return line;
 }
@@ -81,20 +59,24 @@ core::VesselTree spline_vessel_tree(const std::vector<SplineVesselBranch>& branc
   for (std::size_t b = 0; b < branches.size(); ++b) {
     const auto& branch = branches[b];
     const std::string name = "branch " + std::to_string(b);
-    if (branch.control_points.size() < 2) throw core::UsageError(name + " needs at least two points");
+    if (branch.control_points.size() < 2)
+      throw core::UsageError(name + " needs at least two points");
     if (branch.parent_branch < -1 || branch.parent_branch >= static_cast<int>(b)) {
       throw core::UsageError(name + ": parent must be -1 or an earlier branch");
     }
-    if (!(branch.attach >= 0.0 && branch.attach <= 1.0)) throw core::UsageError(name + ": attach must lie in [0, 1]");
-    if (!(branch.flow_weight > 0.0)) throw core::UsageError(name + ": flow_weight must be positive");
+    if (!(branch.attach >= 0.0 && branch.attach <= 1.0))
+      throw core::UsageError(name + ": attach must lie in [0, 1]");
+    if (!(branch.flow_weight > 0.0))
+      throw core::UsageError(name + ": flow_weight must be positive");
     std::vector<Vec3> points = branch.control_points;
     if (branch.parent_branch >= 0) {
       auto& parent = lines[branch.parent_branch];
-      const std::size_t node = insert_at_fraction(parent, branch.attach, 1e-9 * options.sample_spacing);
+      const std::size_t node =
+          insert_at_fraction(parent, branch.attach, 1e-9 * options.sample_spacing);
       attach_point[b] = parent[node];
       points[0] = parent[node];
     }
-    lines[b] = sample_catmull_rom(points, options.sample_spacing, options.alpha);
+    lines[b] = sample_catmull_rom(points, options.sample_spacing, options.knots);
   }
 
   core::VesselTree tree;
@@ -109,7 +91,8 @@ core::VesselTree spline_vessel_tree(const std::vector<SplineVesselBranch>& branc
     if (branches[b].parent_branch >= 0) {
       const auto& parent_line = lines[branches[b].parent_branch];
       const auto it = std::find(parent_line.begin(), parent_line.end(), attach_point[b]);
-      parent = ending_at[branches[b].parent_branch][static_cast<std::size_t>(it - parent_line.begin())];
+      parent =
+          ending_at[branches[b].parent_branch][static_cast<std::size_t>(it - parent_line.begin())];
     }
     ending_at[b][0] = parent;  // a child attached at 0 continues what feeds this branch
     for (std::size_t k = 1; k < line.size(); ++k) {
@@ -154,17 +137,23 @@ std::vector<SplineVesselBranch> spline_branches_from_json(const nlohmann::json& 
     const auto& j = json["branches"][b];
     const std::string pointer = "/branches/" + std::to_string(b);
     SplineVesselBranch branch;
-    if (!j.contains("points") || !j["points"].is_array()) fail(pointer + "/points", "expected [[x, y, z], …]");
+    if (!j.contains("points") || !j["points"].is_array())
+      fail(pointer + "/points", "expected [[x, y, z], …]");
     for (std::size_t k = 0; k < j["points"].size(); ++k) {
       const auto& p = j["points"][k];
-      if (!p.is_array() || p.size() != 3 || !p[0].is_number() || !p[1].is_number() || !p[2].is_number()) {
+      if (!p.is_array() || p.size() != 3 || !p[0].is_number() || !p[1].is_number() ||
+          !p[2].is_number()) {
         fail(pointer + "/points/" + std::to_string(k), "expected [x, y, z] in m");
       }
-      branch.control_points.emplace_back(p[0].get<double>(), p[1].get<double>(), p[2].get<double>());
+      branch.control_points.emplace_back(p[0].get<double>(), p[1].get<double>(),
+                                         p[2].get<double>());
     }
-    if (j.contains("parent") && !j["parent"].is_number_integer()) fail(pointer + "/parent", "expected an integer");
-    if (j.contains("attach") && !j["attach"].is_number()) fail(pointer + "/attach", "expected a number");
-    if (j.contains("flow_weight") && !j["flow_weight"].is_number()) fail(pointer + "/flow_weight", "expected a number");
+    if (j.contains("parent") && !j["parent"].is_number_integer())
+      fail(pointer + "/parent", "expected an integer");
+    if (j.contains("attach") && !j["attach"].is_number())
+      fail(pointer + "/attach", "expected a number");
+    if (j.contains("flow_weight") && !j["flow_weight"].is_number())
+      fail(pointer + "/flow_weight", "expected a number");
     branch.parent_branch = j.value("parent", -1);
     branch.attach = j.value("attach", 1.0);
     branch.flow_weight = j.value("flow_weight", 1.0);

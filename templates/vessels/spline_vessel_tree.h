@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/curves/catmull_rom.h"
 #include "core/scenario/scenario_parts.h"
 
 namespace viscera::templates {
@@ -22,10 +23,10 @@ struct SplineVesselBranch {
 
 /// How the branches become segments.
 struct SplineVesselOptions {
-  double sample_spacing = 2e-3;   ///< m between samples along each curve
-  double alpha = 0.5;             ///< Catmull-Rom parameterisation: 0 uniform, 0.5 centripetal, 1 chordal
-  double root_radius = 1.5e-3;    ///< m
-  double total_flow = 2.5e-6;     ///< m³/s
+  double sample_spacing = 2e-3;                              ///< m between samples along each curve
+  core::KnotSpacing knots = core::KnotSpacing::Centripetal;  ///< no cusps or self-loops
+  double root_radius = 1.5e-3;                               ///< m
+  double total_flow = 2.5e-6;                                ///< m³/s
   std::string tree_id = "spline-tree";
   std::string host_object;
 };
@@ -42,9 +43,10 @@ core::VesselTree spline_vessel_tree(const std::vector<SplineVesselBranch>& branc
 /// "flow_weight": 1}, …]} in m. Throws core::ValidationError with the JSON pointer.
 std::vector<SplineVesselBranch> spline_branches_from_json(const nlohmann::json& json);
 
-/// Points on the Catmull-Rom curve through `points` (end points repeated as phantoms), about
-/// `spacing` apart, first and last control points included.
+/// Points on the Catmull-Rom curve through `points` (core::CatmullRomSpline, open), about
+/// `spacing` m apart, every control point included. Throws core::UsageError for fewer than two
+/// points or two equal neighbours.
 std::vector<core::Vec3> sample_catmull_rom(const std::vector<core::Vec3>& points, double spacing,
-                                           double alpha);
+                                           core::KnotSpacing knots);
 
 }  // namespace viscera::templates

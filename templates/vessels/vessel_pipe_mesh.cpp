@@ -52,7 +52,8 @@ class PipeField {
       j.parent = static_cast<int>(i);
       j.children = kept;
       double thinnest = tree.segments[i].radius;
-      for (const int c : kept) thinnest = std::min(thinnest, tree.segments[c].radius);
+      for (const int c : kept)
+        thinnest = std::min(thinnest, tree.segments[c].radius);
       j.blend = blend_fraction * thinnest;
       junctions_.push_back(j);
     }
@@ -62,7 +63,8 @@ class PipeField {
     for (std::size_t j = 0; j < junctions_.size(); ++j) {
       const Vec3& node = tree.segments[junctions_[j].parent].distal;
       const double reach = 2.0 * tree.segments[junctions_[j].parent].radius + junctions_[j].blend;
-      insert(static_cast<int>(j), {node - Vec3::Constant(reach), node + Vec3::Constant(reach)}, junction_cells_);
+      insert(static_cast<int>(j), {node - Vec3::Constant(reach), node + Vec3::Constant(reach)},
+             junction_cells_);
     }
   }
 
@@ -70,13 +72,15 @@ class PipeField {
     double f = 1e300;
     const auto key = cell_key(p);
     if (const auto it = segments_.find(key); it != segments_.end()) {
-      for (const int i : it->second) f = std::min(f, distance(i, p));
+      for (const int i : it->second)
+        f = std::min(f, distance(i, p));
     }
     if (const auto it = junction_cells_.find(key); it != junction_cells_.end()) {
       for (const int j : it->second) {
         const Junction& junction = junctions_[j];
         double blended = distance(junction.parent, p);
-        for (const int c : junction.children) blended = smooth_min(blended, distance(c, p), junction.blend);
+        for (const int c : junction.children)
+          blended = smooth_min(blended, distance(c, p), junction.blend);
         f = std::min(f, blended);
       }
     }
@@ -99,7 +103,8 @@ class PipeField {
   std::uint64_t cell_key(const Vec3& p) const {
     std::uint64_t key = 0;
     for (int a = 0; a < 3; ++a) {
-      key = key * 2097152ULL + static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(p[a] / cell_)) + 1048576);
+      key = key * 2097152ULL + static_cast<std::uint64_t>(
+                                   static_cast<std::int64_t>(std::floor(p[a] / cell_)) + 1048576);
     }
     return key;
   }
@@ -109,7 +114,8 @@ class PipeField {
     for (double x = std::floor(lo.x() / cell_); x <= std::floor(hi.x() / cell_); ++x)
       for (double y = std::floor(lo.y() / cell_); y <= std::floor(hi.y() / cell_); ++y)
         for (double z = std::floor(lo.z() / cell_); z <= std::floor(hi.z() / cell_); ++z) {
-          cells[cell_key(Vec3((x + 0.5) * cell_, (y + 0.5) * cell_, (z + 0.5) * cell_))].push_back(id);
+          cells[cell_key(Vec3((x + 0.5) * cell_, (y + 0.5) * cell_, (z + 0.5) * cell_))].push_back(
+              id);
         }
   }
 
@@ -121,8 +127,8 @@ class PipeField {
 
 /// Freudenthal split of a cube into six tetrahedra sharing the diagonal from corner 0 to 7;
 /// corners are numbered by bits x=1, y=2, z=4. Neighbouring cubes split shared faces alike.
-constexpr std::array<std::array<int, 4>, 6> kTets = {{{0, 1, 3, 7}, {0, 1, 5, 7}, {0, 2, 3, 7},
-                                                      {0, 2, 6, 7}, {0, 4, 5, 7}, {0, 4, 6, 7}}};
+constexpr std::array<std::array<int, 4>, 6> kTets = {
+    {{0, 1, 3, 7}, {0, 1, 5, 7}, {0, 2, 3, 7}, {0, 2, 6, 7}, {0, 4, 5, 7}, {0, 4, 6, 7}}};
 
 }  // namespace
 
@@ -154,7 +160,8 @@ core::SurfaceMesh vessel_pipe_mesh(const core::VesselTree& tree, const PipeMeshO
   // Grid coordinates packed 19 bits per axis (±262144 cells), leaving 5 bits for edge keys.
   constexpr std::int64_t kOffset = 262144;
   const auto pack = [](std::int64_t x, std::int64_t y, std::int64_t z) {
-    return (static_cast<std::uint64_t>(x + kOffset) << 38) | (static_cast<std::uint64_t>(y + kOffset) << 19) |
+    return (static_cast<std::uint64_t>(x + kOffset) << 38) |
+           (static_cast<std::uint64_t>(y + kOffset) << 19) |
            static_cast<std::uint64_t>(z + kOffset);
   };
   std::vector<std::uint64_t> cells;
@@ -177,7 +184,8 @@ core::SurfaceMesh vessel_pipe_mesh(const core::VesselTree& tree, const PipeMeshO
       std::sort(cells.begin(), cells.end());
       cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
       if (cells.size() > options.max_cells) {
-        throw core::UsageError("the pipe mesh needs more than " + std::to_string(options.max_cells) +
+        throw core::UsageError("the pipe mesh needs more than " +
+                               std::to_string(options.max_cells) +
                                " grid cells; raise the voxel size or the minimum radius");
       }
     }
@@ -220,7 +228,8 @@ core::SurfaceMesh vessel_pipe_mesh(const core::VesselTree& tree, const PipeMeshO
     }
     for (const auto& tet : kTets) {
       int inside[4], outside[4], n_in = 0, n_out = 0;
-      for (const int c : tet) (value[c] < 0.0 ? inside[n_in++] : outside[n_out++]) = c;
+      for (const int c : tet)
+        (value[c] < 0.0 ? inside[n_in++] : outside[n_out++]) = c;
       if (n_in == 0 || n_out == 0) continue;
       const auto edge = [&](int a, int b) {
         int first = a, second = b;
@@ -229,8 +238,9 @@ core::SurfaceMesh vessel_pipe_mesh(const core::VesselTree& tree, const PipeMeshO
         const int direction = ((second & 1) - (first & 1) + 1) * 9 +
                               (((second >> 1) & 1) - ((first >> 1) & 1) + 1) * 3 +
                               (((second >> 2) & 1) - ((first >> 2) & 1) + 1);
-        const auto [it, inserted] = edge_vertex.try_emplace(
-            (key[first] << 5) | static_cast<std::uint64_t>(direction), static_cast<int>(mesh.vertices.size()));
+        const auto [it, inserted] =
+            edge_vertex.try_emplace((key[first] << 5) | static_cast<std::uint64_t>(direction),
+                                    static_cast<int>(mesh.vertices.size()));
         if (inserted) {
           // Interpolated from the lower key's end, so both cubes sharing the edge agree.
           const double t = value[first] / (value[first] - value[second]);
@@ -242,7 +252,8 @@ core::SurfaceMesh vessel_pipe_mesh(const core::VesselTree& tree, const PipeMeshO
       // a triangle squeezed to zero area still gets the orientation its neighbours expect.
       const auto offset = [](int c) { return Eigen::Vector3i(c & 1, (c >> 1) & 1, (c >> 2) & 1); };
       const auto orientation = [&](int p, int q, int r, int t) {
-        const Eigen::Vector3i u = offset(q) - offset(p), v = offset(r) - offset(p), w = offset(t) - offset(p);
+        const Eigen::Vector3i u = offset(q) - offset(p), v = offset(r) - offset(p),
+                              w = offset(t) - offset(p);
         return u.dot(v.cross(w));
       };
       const auto emit = [&](int a, int b, int c, bool flip) {
@@ -254,7 +265,8 @@ core::SurfaceMesh vessel_pipe_mesh(const core::VesselTree& tree, const PipeMeshO
         const int lone = n_in == 1 ? inside[0] : outside[0];
         const int* others = n_in == 1 ? outside : inside;
         const bool away = orientation(lone, others[0], others[1], others[2]) > 0;
-        emit(edge(lone, others[0]), edge(lone, others[1]), edge(lone, others[2]), away != (n_in == 1));
+        emit(edge(lone, others[0]), edge(lone, others[1]), edge(lone, others[2]),
+             away != (n_in == 1));
       } else {
         // Inside a, b and outside c, d: the cycle ac, ad, bd, bc faces c, d when det > 0.
         const int a = inside[0], b = inside[1], c = outside[0], d = outside[1];

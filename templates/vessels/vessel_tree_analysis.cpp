@@ -26,26 +26,29 @@ std::vector<std::vector<int>> segment_children(const core::VesselTree& tree) {
   for (std::size_t i = 0; i < tree.segments.size(); ++i) {
     const int parent = tree.segments[i].parent;
     if (parent < -1 || parent >= static_cast<int>(i)) {
-      throw core::ValidationError("parent " + std::to_string(parent) +
-                                      " must be -1 or an earlier segment",
-                                  {"", segment_pointer(i, "parent"), tree.id});
+      throw core::ValidationError(
+          "parent " + std::to_string(parent) + " must be -1 or an earlier segment",
+          {"", segment_pointer(i, "parent"), tree.id});
     }
     if (parent >= 0) children[parent].push_back(static_cast<int>(i));
   }
   return children;
 }
 
-double segment_length(const core::VesselSegment& s) { return (s.distal - s.proximal).norm(); }
+double segment_length(const core::VesselSegment& s) {
+  return (s.distal - s.proximal).norm();
+}
 
 int terminal_count(const core::VesselTree& tree) {
   const auto children = segment_children(tree);
-  return static_cast<int>(std::count_if(children.begin(), children.end(),
-                                        [](const auto& c) { return c.empty(); }));
+  return static_cast<int>(
+      std::count_if(children.begin(), children.end(), [](const auto& c) { return c.empty(); }));
 }
 
 double tree_volume(const core::VesselTree& tree) {
   double volume = 0.0;
-  for (const auto& s : tree.segments) volume += std::numbers::pi * s.radius * s.radius * segment_length(s);
+  for (const auto& s : tree.segments)
+    volume += std::numbers::pi * s.radius * s.radius * segment_length(s);
   return volume;
 }
 
@@ -56,7 +59,8 @@ double murray_deviation(const core::VesselTree& tree, double exponent) {
     if (children[i].empty()) continue;
     const double parent = std::pow(tree.segments[i].radius, exponent);
     double sum = 0.0;
-    for (const int c : children[i]) sum += std::pow(tree.segments[c].radius, exponent);
+    for (const int c : children[i])
+      sum += std::pow(tree.segments[c].radius, exponent);
     worst = std::max(worst, std::abs(parent - sum) / parent);
   }
   return worst;
@@ -104,9 +108,9 @@ double tree_gap(const core::VesselTree& tree, int a, int b) {
   for (int k = b; k >= 0; k = segs[k].parent) {
     for (std::size_t i = 0; i < up_a.size(); ++i) {
       if (up_a[i].first != k) continue;
-      if (i == 0) return walked;      // a is b or an ancestor of b
+      if (i == 0) return walked;          // a is b or an ancestor of b
       if (k == b) return up_a[i].second;  // b is an ancestor of a
-      return up_a[i].second + walked;  // different subtrees of k: they meet at k's far end
+      return up_a[i].second + walked;     // different subtrees of k: they meet at k's far end
     }
     if (k != b) walked += segment_length(segs[k]);
   }
@@ -131,9 +135,13 @@ std::vector<std::pair<int, int>> find_intersections(const core::VesselTree& tree
   // inflated box touches, so candidate pairs share a cell.
   const double cell = std::max(mean_extent / static_cast<double>(n), 1e-9);
   const core::Vec3 origin = box.min - core::Vec3::Constant(clearance * max_radius + cell);
-  const auto cell_of = [&](double v, int axis) { return static_cast<long long>(std::floor((v - origin[axis]) / cell)); };
+  const auto cell_of = [&](double v, int axis) {
+    return static_cast<long long>(std::floor((v - origin[axis]) / cell));
+  };
   std::unordered_map<long long, std::vector<int>> grid;
-  const auto key = [](long long x, long long y, long long z) { return (x * 73856093LL) ^ (y * 19349663LL) ^ (z * 83492791LL); };
+  const auto key = [](long long x, long long y, long long z) {
+    return (x * 73856093LL) ^ (y * 19349663LL) ^ (z * 83492791LL);
+  };
   std::vector<std::array<long long, 6>> ranges(n);
   for (std::size_t i = 0; i < n; ++i) {
     const double pad = clearance * segs[i].radius;
@@ -143,7 +151,8 @@ std::vector<std::pair<int, int>> find_intersections(const core::VesselTree& tree
     }
     for (long long x = ranges[i][0]; x <= ranges[i][3]; ++x)
       for (long long y = ranges[i][1]; y <= ranges[i][4]; ++y)
-        for (long long z = ranges[i][2]; z <= ranges[i][5]; ++z) grid[key(x, y, z)].push_back(static_cast<int>(i));
+        for (long long z = ranges[i][2]; z <= ranges[i][5]; ++z)
+          grid[key(x, y, z)].push_back(static_cast<int>(i));
   }
   const auto adjacent = [&](int a, int b) {
     return tree_gap(tree, a, b) < kJunctionZone * (segs[a].radius + segs[b].radius);
@@ -159,8 +168,10 @@ std::vector<std::pair<int, int>> find_intersections(const core::VesselTree& tree
             if (j <= static_cast<int>(i) || checked[j] == static_cast<int>(i)) continue;
             checked[j] = static_cast<int>(i);
             if (adjacent(static_cast<int>(i), j)) continue;
-            const double d = segment_distance(segs[i].proximal, segs[i].distal, segs[j].proximal, segs[j].distal);
-            if (d < clearance * (segs[i].radius + segs[j].radius)) hits.emplace_back(static_cast<int>(i), j);
+            const double d = segment_distance(segs[i].proximal, segs[i].distal, segs[j].proximal,
+                                              segs[j].distal);
+            if (d < clearance * (segs[i].radius + segs[j].radius))
+              hits.emplace_back(static_cast<int>(i), j);
           }
         }
   }
@@ -184,33 +195,43 @@ std::vector<VesselTreeIssue> validate_vessel_tree(const core::VesselTree& tree,
   }
   for (std::size_t i = 0; i < tree.segments.size(); ++i) {
     const auto& s = tree.segments[i];
-    if (s.id != static_cast<int>(i)) issues.push_back({segment_pointer(i, "id"), "ids must equal the segment index"});
+    if (s.id != static_cast<int>(i))
+      issues.push_back({segment_pointer(i, "id"), "ids must equal the segment index"});
     if (!s.proximal.allFinite() || !s.distal.allFinite() || !(segment_length(s) > 0.0)) {
-      issues.push_back({segment_pointer(i, "distal"), "a segment needs finite, distinct end points"});
+      issues.push_back(
+          {segment_pointer(i, "distal"), "a segment needs finite, distinct end points"});
     }
-    if (!(s.radius > 0.0) || !std::isfinite(s.radius)) issues.push_back({segment_pointer(i, "radius"), "radius must be positive"});
-    if (!(s.flow > 0.0) || !std::isfinite(s.flow)) issues.push_back({segment_pointer(i, "flow"), "flow must be positive"});
+    if (!(s.radius > 0.0) || !std::isfinite(s.radius))
+      issues.push_back({segment_pointer(i, "radius"), "radius must be positive"});
+    if (!(s.flow > 0.0) || !std::isfinite(s.flow))
+      issues.push_back({segment_pointer(i, "flow"), "flow must be positive"});
     if (s.parent >= 0 && (tree.segments[s.parent].distal - s.proximal).norm() >
                              1e-9 * std::max(1.0, s.proximal.norm())) {
-      issues.push_back({segment_pointer(i, "proximal"), "a child must start where its parent ends"});
+      issues.push_back(
+          {segment_pointer(i, "proximal"), "a child must start where its parent ends"});
     }
     if (!children[i].empty()) {
       double sum = 0.0;
-      for (const int c : children[i]) sum += tree.segments[c].flow;
+      for (const int c : children[i])
+        sum += tree.segments[c].flow;
       if (std::abs(sum - s.flow) > 0.01 * s.flow) {
-        issues.push_back({segment_pointer(i, "flow"), "flow differs from the sum of its children's by more than 1 %"});
+        issues.push_back({segment_pointer(i, "flow"),
+                          "flow differs from the sum of its children's by more than 1 %"});
       }
       double cubes = 0.0;
-      for (const int c : children[i]) cubes += std::pow(tree.segments[c].radius, 3.0);
+      for (const int c : children[i])
+        cubes += std::pow(tree.segments[c].radius, 3.0);
       const double parent = std::pow(s.radius, 3.0);
       if (std::abs(parent - cubes) > murray_tolerance * parent) {
-        issues.push_back({segment_pointer(i, "radius"), "Murray's law r³ = Σ children r³ is off by " +
-                                                            std::to_string(100.0 * std::abs(parent - cubes) / parent) + " %"});
+        issues.push_back({segment_pointer(i, "radius"),
+                          "Murray's law r³ = Σ children r³ is off by " +
+                              std::to_string(100.0 * std::abs(parent - cubes) / parent) + " %"});
       }
     }
   }
   for (const auto& [a, b] : find_intersections(tree)) {
-    issues.push_back({segment_pointer(a, "radius"), "segment intersects segment " + std::to_string(b)});
+    issues.push_back(
+        {segment_pointer(a, "radius"), "segment intersects segment " + std::to_string(b)});
   }
   return issues;
 }
@@ -234,20 +255,23 @@ void assign_murray_flows_and_radii(core::VesselTree& tree, double root_radius, d
     if (!(w > 0.0)) throw core::UsageError("terminal weights must be positive");
     weight_sum += w;
   }
-  for (auto& s : tree.segments) s.flow = 0.0;
+  for (auto& s : tree.segments)
+    s.flow = 0.0;
   for (std::size_t t = 0; t < terminals.size(); ++t) {
     tree.segments[terminals[t]].flow =
         total_flow * (terminal_weights.empty() ? 1.0 : terminal_weights[t]) / weight_sum;
   }
   // Children come after parents, so a reverse sweep adds every subtree before its parent.
   for (std::size_t i = tree.segments.size(); i-- > 0;) {
-    for (const int c : children[i]) tree.segments[i].flow += tree.segments[c].flow;
+    for (const int c : children[i])
+      tree.segments[i].flow += tree.segments[c].flow;
   }
   double root_flow = 0.0;
   for (const auto& s : tree.segments) {
     if (s.parent < 0) root_flow += s.flow;
   }
-  for (auto& s : tree.segments) s.radius = root_radius * std::cbrt(s.flow / root_flow);
+  for (auto& s : tree.segments)
+    s.radius = root_radius * std::cbrt(s.flow / root_flow);
 }
 
 }  // namespace viscera::templates

@@ -6,7 +6,9 @@
 namespace viscera::templates {
 namespace {
 
-nlohmann::json vec(const core::Vec3& v) { return nlohmann::json::array({v.x(), v.y(), v.z()}); }
+nlohmann::json vec(const core::Vec3& v) {
+  return nlohmann::json::array({v.x(), v.y(), v.z()});
+}
 
 }  // namespace
 
@@ -15,20 +17,29 @@ nlohmann::json vessel_tree_to_json(const core::VesselTree& tree) {
   nlohmann::json segments = nlohmann::json::array();
   for (std::size_t i = 0; i < tree.segments.size(); ++i) {
     const auto& s = tree.segments[i];
-    segments.push_back({{"id", s.id}, {"parent", s.parent}, {"children", children[i]},
-                        {"proximal", vec(s.proximal)}, {"distal", vec(s.distal)},
-                        {"radius", s.radius}, {"length", segment_length(s)}, {"flow", s.flow}});
+    segments.push_back({{"id", s.id},
+                        {"parent", s.parent},
+                        {"children", children[i]},
+                        {"proximal", vec(s.proximal)},
+                        {"distal", vec(s.distal)},
+                        {"radius", s.radius},
+                        {"length", segment_length(s)},
+                        {"flow", s.flow}});
   }
   return {{"format", "viscera-vessel-tree"},
           {"version", 1},
           {"units", {{"length", "m"}, {"radius", "m"}, {"flow", "m^3/s"}, {"volume", "m^3"}}},
-          {"tree", {{"id", tree.id}, {"host_object", tree.host_object}, {"kind", tree.kind},
-                    {"segments", segments}}},
-          {"summary", {{"segments", tree.segments.size()},
-                       {"terminals", terminal_count(tree)},
-                       {"volume", tree_volume(tree)},
-                       {"murray_max_deviation", murray_deviation(tree)},
-                       {"intersections", find_intersections(tree).size()}}}};
+          {"tree",
+           {{"id", tree.id},
+            {"host_object", tree.host_object},
+            {"kind", tree.kind},
+            {"segments", segments}}},
+          {"summary",
+           {{"segments", tree.segments.size()},
+            {"terminals", terminal_count(tree)},
+            {"volume", tree_volume(tree)},
+            {"murray_max_deviation", murray_deviation(tree)},
+            {"intersections", find_intersections(tree).size()}}}};
 }
 
 core::VesselTree vessel_tree_from_json(const nlohmann::json& json, const std::string& file) {
@@ -44,7 +55,8 @@ core::VesselTree vessel_tree_from_json(const nlohmann::json& json, const std::st
   tree.id = t.value("id", std::string());
   tree.host_object = t.value("host_object", std::string());
   tree.kind = t.value("kind", std::string("arterial"));
-  if (!t.contains("segments") || !t["segments"].is_array()) fail("/tree/segments", "missing segments");
+  if (!t.contains("segments") || !t["segments"].is_array())
+    fail("/tree/segments", "missing segments");
   for (std::size_t i = 0; i < t["segments"].size(); ++i) {
     const auto& j = t["segments"][i];
     const std::string pointer = "/tree/segments/" + std::to_string(i);

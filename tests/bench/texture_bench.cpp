@@ -23,7 +23,8 @@ const std::vector<double>& points() {
   static const std::vector<double> xyz = [] {
     viscera::core::Rng rng(1);
     std::vector<double> v(3 * kPoints);
-    for (auto& c : v) c = rng.uniform(-100.0, 100.0);
+    for (auto& c : v)
+      c = rng.uniform(-100.0, 100.0);
     return v;
   }();
   return xyz;
@@ -44,8 +45,8 @@ void BM_ViscerasNoise3D_Points(benchmark::State& state) {
   }
   state.SetItemsProcessed(state.iterations() * kPoints);
   state.counters["ns_per_sample"] = benchmark::Counter(
-      static_cast<double>(kPoints) * 1e-9, benchmark::Counter::kIsIterationInvariantRate |
-                                               benchmark::Counter::kInvert);
+      static_cast<double>(kPoints) * 1e-9,
+      benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 BENCHMARK(BM_ViscerasNoise3D_Points)->Arg(1)->Arg(4);
 
@@ -57,13 +58,14 @@ void BM_Libnoise3D_Points(benchmark::State& state) {
   const auto& p = points();
   for (auto _ : state) {
     double sum = 0.0;
-    for (int i = 0; i < kPoints; ++i) sum += perlin.GetValue(p[3 * i], p[3 * i + 1], p[3 * i + 2]);
+    for (int i = 0; i < kPoints; ++i)
+      sum += perlin.GetValue(p[3 * i], p[3 * i + 1], p[3 * i + 2]);
     benchmark::DoNotOptimize(sum);
   }
   state.SetItemsProcessed(state.iterations() * kPoints);
   state.counters["ns_per_sample"] = benchmark::Counter(
-      static_cast<double>(kPoints) * 1e-9, benchmark::Counter::kIsIterationInvariantRate |
-                                               benchmark::Counter::kInvert);
+      static_cast<double>(kPoints) * 1e-9,
+      benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 BENCHMARK(BM_Libnoise3D_Points)->Arg(1)->Arg(4);
 
@@ -73,7 +75,8 @@ void BM_ViscerasNoise3D_Rows(benchmark::State& state) {
   const int octaves = static_cast<int>(state.range(0));
   constexpr int kWidth = 2048, kRows = 64;
   std::vector<double> xs(kWidth), out(kWidth);
-  for (int x = 0; x < kWidth; ++x) xs[x] = (x + 0.5) / kWidth * 32.0;
+  for (int x = 0; x < kWidth; ++x)
+    xs[x] = (x + 0.5) / kWidth * 32.0;
   for (auto _ : state) {
     for (int y = 0; y < kRows; ++y) {
       const double v = (y + 0.5) / kWidth * 32.0;
@@ -100,7 +103,8 @@ void BM_Libnoise3D_Rows(benchmark::State& state) {
   for (auto _ : state) {
     for (int y = 0; y < kRows; ++y) {
       const double v = (y + 0.5) / kWidth * 32.0;
-      for (int x = 0; x < kWidth; ++x) out[x] = perlin.GetValue((x + 0.5) / kWidth * 32.0, v, 0.37);
+      for (int x = 0; x < kWidth; ++x)
+        out[x] = perlin.GetValue((x + 0.5) / kWidth * 32.0, v, 0.37);
       benchmark::DoNotOptimize(out.data());
     }
   }

@@ -66,8 +66,8 @@ void BM_BakeBall1024(benchmark::State& state) {
   const auto atlas = textures::build_uv_atlas(core::make_icosphere(0.04, 4), {1024, 4});
   const auto& preset = textures::find_texture_preset("myoma-surface");
   const textures::SurfaceProjector surface(atlas.mesh);
-  const textures::SolidTissueTexture solid(preset, 1, 0.04, nullptr,
-                                           textures::grow_surface_vessels(preset, surface, 0.04, 1));
+  const textures::SolidTissueTexture solid(
+      preset, 1, 0.04, nullptr, textures::grow_surface_vessels(preset, surface, 0.04, 1));
   for (auto _ : state) {
     const auto maps = textures::bake_surface_texture(atlas.mesh, solid, {1024, 1024, 4, 0});
     benchmark::DoNotOptimize(maps.albedo.pixels.data());

@@ -9,10 +9,10 @@
 
 #include "core/error.h"
 #include "core/package/scenario_package.h"
-#include "tests/support/test_paths.h"
 #include "templates/template_catalog.h"
 #include "templates/vessels/cco_vessel_generator.h"
 #include "templates/vessels/vessel_tree_analysis.h"
+#include "tests/support/test_paths.h"
 #include "textures/active_deformation_specs.h"
 #include "textures/png_io.h"
 #include "textures/scenario_baking.h"
@@ -69,10 +69,14 @@ TEST(TexturePackage, maps_baked_onto_a_ball_are_stored_and_read_back) {
     EXPECT_FALSE(core::is_closed_and_consistently_oriented(ball.surface));  // seams split it
   }
   const auto folder = dir / "ball.vscene";
-  const auto albedo = textures::decode_image(read_bytes(folder / "textures/ball-skin_albedo.png"), "albedo");
+  const auto albedo =
+      textures::decode_image(read_bytes(folder / "textures/ball-skin_albedo.png"), "albedo");
   EXPECT_EQ(albedo.width, 256);
   EXPECT_EQ(albedo.channels, 3);
-  EXPECT_EQ(textures::decode_image(read_bytes(folder / "textures/ball-skin_specular.png"), "specular").channels, 1);
+  EXPECT_EQ(
+      textures::decode_image(read_bytes(folder / "textures/ball-skin_specular.png"), "specular")
+          .channels,
+      1);
 }
 
 TEST(TexturePackage, same_seed_gives_the_same_png_bytes) {
@@ -81,7 +85,8 @@ TEST(TexturePackage, same_seed_gives_the_same_png_bytes) {
   textured_ball(5, b);
   textured_ball(6, c);
   EXPECT_EQ(a.files, b.files);
-  EXPECT_NE(a.files.at("textures/ball-skin_albedo.png"), c.files.at("textures/ball-skin_albedo.png"));
+  EXPECT_NE(a.files.at("textures/ball-skin_albedo.png"),
+            c.files.at("textures/ball-skin_albedo.png"));
 }
 
 TEST(TexturePackage, keep_topology_bakes_vertex_colours_and_flat_maps) {

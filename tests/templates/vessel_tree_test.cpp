@@ -66,7 +66,8 @@ TEST(CcoVesselTree, grows_a_physiological_tree_inside_a_ball) {
   std::vector<double> drop(tree.segments.size(), 0.0);
   for (std::size_t i = 0; i < tree.segments.size(); ++i) {
     const auto& s = tree.segments[i];
-    const double resistance = 8.0 * options.viscosity * segment_length(s) / (std::numbers::pi * std::pow(s.radius, 4));
+    const double resistance =
+        8.0 * options.viscosity * segment_length(s) / (std::numbers::pi * std::pow(s.radius, 4));
     drop[i] = (s.parent >= 0 ? drop[s.parent] : 0.0) + resistance * s.flow;
     if (children[i].empty()) {
       EXPECT_NEAR(drop[i], options.perfusion_pressure - options.terminal_pressure, 1.0) << i;
@@ -92,14 +93,16 @@ TEST(CcoVesselTree, grows_inside_a_label_map) {
   const auto tree = grow_cco_tree(organ, options);
   EXPECT_EQ(terminal_count(tree), 150);
   expect_physiological(tree);
-  for (const auto& s : tree.segments) ASSERT_TRUE(organ.contains(s.distal)) << s.id;
+  for (const auto& s : tree.segments)
+    ASSERT_TRUE(organ.contains(s.distal)) << s.id;
 }
 
 TEST(CcoVesselTree, reaches_given_perfusion_points) {
   const SurfaceMeshDomain ball(core::make_icosphere(0.04, 3));
   CcoOptions options;
   core::Rng rng(8);
-  for (int i = 0; i < 40; ++i) options.perfusion_points.push_back(ball.random_point(rng));
+  for (int i = 0; i < 40; ++i)
+    options.perfusion_points.push_back(ball.random_point(rng));
   const auto tree = grow_cco_tree(ball, options);
   expect_physiological(tree);
   const auto children = segment_children(tree);
@@ -144,7 +147,8 @@ TEST(LsystemVesselTree, grammar_widths_split_the_flow) {
   LsystemVesselOptions options;
   options.turtle.angle = 40.0;
   // One bifurcation with daughter widths 0.9 and 0.5: flows split 0.729 : 0.125.
-  const auto tree = lsystem_vessel_tree(core::Lsystem::parse("axiom: F(1,1)[+F(1,0.9)][-F(1,0.5)]\n"), options);
+  const auto tree =
+      lsystem_vessel_tree(core::Lsystem::parse("axiom: F(1,1)[+F(1,0.9)][-F(1,0.5)]\n"), options);
   ASSERT_EQ(tree.segments.size(), 3u);
   EXPECT_NEAR(tree.segments[1].flow / tree.segments[2].flow, 0.729 / 0.125, 1e-9);
   expect_physiological(tree);
@@ -157,7 +161,8 @@ TEST(LsystemVesselTree, clips_to_the_domain) {
   options.turtle.origin = Vec3(0, -0.015, 0);
   options.turtle.step = 0.02;  // long enough to leave the ball
   const auto tree = lsystem_vessel_tree(core::Lsystem::parse(kDefaultVesselGrammar), options);
-  for (const auto& s : tree.segments) EXPECT_TRUE(ball.contains(s.distal));
+  for (const auto& s : tree.segments)
+    EXPECT_TRUE(ball.contains(s.distal));
   expect_physiological(tree);
 }
 
@@ -179,10 +184,12 @@ TEST(SplineVesselTree, branches_attach_to_their_parent_and_obey_murray) {
   // The curve passes through its control points.
   for (const auto& p : branches[0].control_points) {
     bool on_curve = false;
-    for (const auto& s : tree.segments) on_curve |= (s.proximal - p).norm() < 1e-12 || (s.distal - p).norm() < 1e-12;
+    for (const auto& s : tree.segments)
+      on_curve |= (s.proximal - p).norm() < 1e-12 || (s.distal - p).norm() < 1e-12;
     EXPECT_TRUE(on_curve) << p.transpose();
   }
-  EXPECT_THROW(spline_vessel_tree({SplineVesselBranch{{{0, 0, 0}}, -1, 1.0, 1.0}}, options), core::UsageError);
+  EXPECT_THROW(spline_vessel_tree({SplineVesselBranch{{{0, 0, 0}}, -1, 1.0, 1.0}}, options),
+               core::UsageError);
 }
 
 TEST(SplineVesselTree, reads_branches_from_json_with_pointers) {
@@ -231,14 +238,16 @@ TEST(VesselPipeMesh, a_bifurcation_gives_a_closed_outward_surface_of_the_right_v
   tree.segments = {{0, -1, {0, 0, 0}, {0, 0, 0.02}, 0.002, 3e-6},
                    {1, 0, {0, 0, 0.02}, {0.012, 0, 0.035}, 0.0016, 1.5e-6},
                    {2, 0, {0, 0, 0.02}, {-0.012, 0, 0.035}, 0.0016, 1.5e-6}};
-  const auto mesh = vessel_pipe_mesh(tree, {.voxel_size = 2e-4, .min_radius = 0.0, .blend = 0.6, .max_cells = 6'000'000});
+  const auto mesh = vessel_pipe_mesh(
+      tree, {.voxel_size = 2e-4, .min_radius = 0.0, .blend = 0.6, .max_cells = 6'000'000});
   ASSERT_FALSE(mesh.triangles.empty());
   EXPECT_TRUE(core::is_closed_and_consistently_oriented(mesh));
   // Volume: the tubes with hemispherical caps, minus the overlap at the node, plus a small
   // fillet; within 8 % of the capsules' sum.
   double capsules = 0.0;
   for (const auto& s : tree.segments) {
-    capsules += std::numbers::pi * s.radius * s.radius * segment_length(s) + 4.0 / 3.0 * std::numbers::pi * std::pow(s.radius, 3);
+    capsules += std::numbers::pi * s.radius * s.radius * segment_length(s) +
+                4.0 / 3.0 * std::numbers::pi * std::pow(s.radius, 3);
   }
   EXPECT_GT(core::enclosed_volume(mesh), 0.0);  // outward orientation
   EXPECT_NEAR(core::enclosed_volume(mesh), capsules, 0.08 * capsules);

@@ -1,12 +1,13 @@
 // The L-system engine lives in core/lsystem; its tests sit with the textures that paint with it,
 // since tests/core is kept by the foundation issue.
 
+#include "core/lsystem/lsystem.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "core/error.h"
-#include "core/lsystem/lsystem.h"
 #include "core/lsystem/turtle.h"
 
 namespace viscera::core {
@@ -32,8 +33,9 @@ TEST(Lsystem, rewrites_lindenmayers_algae_into_fibonacci_strings) {
 
 TEST(Lsystem, rewrites_the_quadratic_koch_island_in_parallel) {
   const auto modules = Lsystem::parse("axiom: F-F-F-F\nF -> F-F+F+FF-F-F+F\n").derive(2, 0);
-  EXPECT_EQ(std::count_if(modules.begin(), modules.end(), [](const auto& m) { return m.symbol == 'F'; }),
-            4 * 8 * 8);
+  EXPECT_EQ(
+      std::count_if(modules.begin(), modules.end(), [](const auto& m) { return m.symbol == 'F'; }),
+      4 * 8 * 8);
 }
 
 TEST(Lsystem, follows_the_parametric_derivation_of_abop_figure_1_31) {
@@ -60,11 +62,14 @@ TEST(Lsystem, constants_functions_and_logic_in_expressions) {
 
 TEST(Lsystem, stochastic_choices_follow_the_weights_and_the_seed) {
   std::string axiom = "axiom: ";
-  for (int i = 0; i < 30000; ++i) axiom += 'F';
+  for (int i = 0; i < 30000; ++i)
+    axiom += 'F';
   const std::string grammar = axiom + "\nF -> F[+F]F : 1\nF -> F[-F]F : 1\nF -> FF : 2\n";
   const auto modules = Lsystem::parse(grammar).derive(1, 42);
-  const auto plus = std::count_if(modules.begin(), modules.end(), [](const auto& m) { return m.symbol == '+'; });
-  const auto minus = std::count_if(modules.begin(), modules.end(), [](const auto& m) { return m.symbol == '-'; });
+  const auto plus =
+      std::count_if(modules.begin(), modules.end(), [](const auto& m) { return m.symbol == '+'; });
+  const auto minus =
+      std::count_if(modules.begin(), modules.end(), [](const auto& m) { return m.symbol == '-'; });
   // Expected 7500 each; five standard deviations is about 375.
   EXPECT_NEAR(static_cast<double>(plus), 7500.0, 375.0);
   EXPECT_NEAR(static_cast<double>(minus), 7500.0, 375.0);
@@ -81,10 +86,10 @@ TEST(Lsystem, reports_grammar_errors_with_their_line) {
     EXPECT_EQ(e.location().element, "line 2");
     EXPECT_NE(std::string(e.what()).find("unknown name \"q\""), std::string::npos) << e.what();
   }
-  EXPECT_THROW(Lsystem::parse("F -> FF\n"), InputError);                     // no axiom
-  EXPECT_THROW(Lsystem::parse("axiom: F(1\n"), InputError);                  // missing ')'
-  EXPECT_THROW(Lsystem::parse("axiom: F\nF -> F : 0\n"), InputError);       // zero weight
-  EXPECT_THROW(Lsystem::parse("axiom: F\nF\n"), InputError);                 // not a statement
+  EXPECT_THROW(Lsystem::parse("F -> FF\n"), InputError);               // no axiom
+  EXPECT_THROW(Lsystem::parse("axiom: F(1\n"), InputError);            // missing ')'
+  EXPECT_THROW(Lsystem::parse("axiom: F\nF -> F : 0\n"), InputError);  // zero weight
+  EXPECT_THROW(Lsystem::parse("axiom: F\nF\n"), InputError);           // not a statement
 }
 
 TEST(Lsystem, refuses_strings_beyond_the_module_limit) {

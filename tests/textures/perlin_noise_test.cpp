@@ -19,7 +19,8 @@ TEST(PerlinNoise, equals_the_reference_implementation_at_a_known_point) {
 
 TEST(PerlinNoise, vanishes_on_lattice_points) {
   const PerlinNoise noise;
-  for (int i = -3; i < 4; ++i) EXPECT_EQ(noise.noise(i, 2 * i, -i), 0.0);
+  for (int i = -3; i < 4; ++i)
+    EXPECT_EQ(noise.noise(i, 2 * i, -i), 0.0);
 }
 
 TEST(PerlinNoise, stays_in_range_and_turbulence_is_non_negative) {
@@ -51,23 +52,23 @@ class ReferenceImprovedNoise {
  public:
   ReferenceImprovedNoise() {
     static const int permutation[] = {
-        151, 160, 137, 91,  90,  15,  131, 13,  201, 95,  96,  53,  194, 233, 7,   225, 140,
-        36,  103, 30,  69,  142, 8,   99,  37,  240, 21,  10,  23,  190, 6,   148, 247, 120,
-        234, 75,  0,   26,  197, 62,  94,  252, 219, 203, 117, 35,  11,  32,  57,  177, 33,
-        88,  237, 149, 56,  87,  174, 20,  125, 136, 171, 168, 68,  175, 74,  165, 71,  134,
-        139, 48,  27,  166, 77,  146, 158, 231, 83,  111, 229, 122, 60,  211, 133, 230, 220,
-        105, 92,  41,  55,  46,  245, 40,  244, 102, 143, 54,  65,  25,  63,  161, 1,   216,
-        80,  73,  209, 76,  132, 187, 208, 89,  18,  169, 200, 196, 135, 130, 116, 188, 159,
-        86,  164, 100, 109, 198, 173, 186, 3,   64,  52,  217, 226, 250, 124, 123, 5,   202,
-        38,  147, 118, 126, 255, 82,  85,  212, 207, 206, 59,  227, 47,  16,  58,  17,  182,
-        189, 28,  42,  223, 183, 170, 213, 119, 248, 152, 2,   44,  154, 163, 70,  221, 153,
-        101, 155, 167, 43,  172, 9,   129, 22,  39,  253, 19,  98,  108, 110, 79,  113, 224,
-        232, 178, 185, 112, 104, 218, 246, 97,  228, 251, 34,  242, 193, 238, 210, 144, 12,
-        191, 179, 162, 241, 81,  51,  145, 235, 249, 14,  239, 107, 49,  192, 214, 31,  181,
-        199, 106, 157, 184, 84,  204, 176, 115, 121, 50,  45,  127, 4,   150, 254, 138, 236,
-        205, 93,  222, 114, 67,  29,  24,  72,  243, 141, 128, 195, 78,  66,  215, 61,  156,
-        180};
-    for (int i = 0; i < 256; ++i) p_[256 + i] = p_[i] = permutation[i];
+        151, 160, 137, 91,  90,  15,  131, 13,  201, 95,  96,  53,  194, 233, 7,   225, 140, 36,
+        103, 30,  69,  142, 8,   99,  37,  240, 21,  10,  23,  190, 6,   148, 247, 120, 234, 75,
+        0,   26,  197, 62,  94,  252, 219, 203, 117, 35,  11,  32,  57,  177, 33,  88,  237, 149,
+        56,  87,  174, 20,  125, 136, 171, 168, 68,  175, 74,  165, 71,  134, 139, 48,  27,  166,
+        77,  146, 158, 231, 83,  111, 229, 122, 60,  211, 133, 230, 220, 105, 92,  41,  55,  46,
+        245, 40,  244, 102, 143, 54,  65,  25,  63,  161, 1,   216, 80,  73,  209, 76,  132, 187,
+        208, 89,  18,  169, 200, 196, 135, 130, 116, 188, 159, 86,  164, 100, 109, 198, 173, 186,
+        3,   64,  52,  217, 226, 250, 124, 123, 5,   202, 38,  147, 118, 126, 255, 82,  85,  212,
+        207, 206, 59,  227, 47,  16,  58,  17,  182, 189, 28,  42,  223, 183, 170, 213, 119, 248,
+        152, 2,   44,  154, 163, 70,  221, 153, 101, 155, 167, 43,  172, 9,   129, 22,  39,  253,
+        19,  98,  108, 110, 79,  113, 224, 232, 178, 185, 112, 104, 218, 246, 97,  228, 251, 34,
+        242, 193, 238, 210, 144, 12,  191, 179, 162, 241, 81,  51,  145, 235, 249, 14,  239, 107,
+        49,  192, 214, 31,  181, 199, 106, 157, 184, 84,  204, 176, 115, 121, 50,  45,  127, 4,
+        150, 254, 138, 236, 205, 93,  222, 114, 67,  29,  24,  72,  243, 141, 128, 195, 78,  66,
+        215, 61,  156, 180};
+    for (int i = 0; i < 256; ++i)
+      p_[256 + i] = p_[i] = permutation[i];
   }
   double noise(double x, double y, double z) const {
     const int X = static_cast<int>(std::floor(x)) & 255, Y = static_cast<int>(std::floor(y)) & 255,
@@ -76,13 +77,14 @@ class ReferenceImprovedNoise {
     y -= std::floor(y);
     z -= std::floor(z);
     const double u = fade(x), v = fade(y), w = fade(z);
-    const int A = p_[X] + Y, AA = p_[A] + Z, AB = p_[A + 1] + Z, B = p_[X + 1] + Y,
-              BA = p_[B] + Z, BB = p_[B + 1] + Z;
-    return lerp(w, lerp(v, lerp(u, grad(p_[AA], x, y, z), grad(p_[BA], x - 1, y, z)),
-                        lerp(u, grad(p_[AB], x, y - 1, z), grad(p_[BB], x - 1, y - 1, z))),
-                lerp(v, lerp(u, grad(p_[AA + 1], x, y, z - 1), grad(p_[BA + 1], x - 1, y, z - 1)),
-                     lerp(u, grad(p_[AB + 1], x, y - 1, z - 1),
-                          grad(p_[BB + 1], x - 1, y - 1, z - 1))));
+    const int A = p_[X] + Y, AA = p_[A] + Z, AB = p_[A + 1] + Z, B = p_[X + 1] + Y, BA = p_[B] + Z,
+              BB = p_[B + 1] + Z;
+    return lerp(
+        w,
+        lerp(v, lerp(u, grad(p_[AA], x, y, z), grad(p_[BA], x - 1, y, z)),
+             lerp(u, grad(p_[AB], x, y - 1, z), grad(p_[BB], x - 1, y - 1, z))),
+        lerp(v, lerp(u, grad(p_[AA + 1], x, y, z - 1), grad(p_[BA + 1], x - 1, y, z - 1)),
+             lerp(u, grad(p_[AB + 1], x, y - 1, z - 1), grad(p_[BB + 1], x - 1, y - 1, z - 1))));
   }
 
  private:
@@ -119,24 +121,29 @@ TEST(PerlinNoise, rows_equal_point_evaluation_bit_for_bit) {
   for (const std::uint64_t seed : {0ULL, 5ULL}) {
     const PerlinNoise noise = seed == 0 ? PerlinNoise() : PerlinNoise(seed);
     std::vector<double> xs(1500);
-    for (std::size_t i = 0; i < xs.size(); ++i) xs[i] = -7.3 + 0.0137 * static_cast<double>(i);
+    for (std::size_t i = 0; i < xs.size(); ++i)
+      xs[i] = -7.3 + 0.0137 * static_cast<double>(i);
     // A few unsorted entries: the row code must handle any order.
     std::swap(xs[10], xs[900]);
     std::vector<double> out(xs.size());
     for (const double y : {-3.25, 0.0, 17.8}) {
       const double z = 2.0 * y + 0.3;
       noise.noise_row(xs.data(), static_cast<int>(xs.size()), y, z, out.data());
-      for (std::size_t i = 0; i < xs.size(); ++i) ASSERT_EQ(out[i], noise.noise(xs[i], y, z));
+      for (std::size_t i = 0; i < xs.size(); ++i)
+        ASSERT_EQ(out[i], noise.noise(xs[i], y, z));
       noise.noise_row(xs.data(), static_cast<int>(xs.size()), y, out.data());
-      for (std::size_t i = 0; i < xs.size(); ++i) ASSERT_EQ(out[i], noise.noise(xs[i], y));
+      for (std::size_t i = 0; i < xs.size(); ++i)
+        ASSERT_EQ(out[i], noise.noise(xs[i], y));
       noise.turbulence_row(xs.data(), static_cast<int>(xs.size()), y, 4, 0.5, out.data());
-      for (std::size_t i = 0; i < xs.size(); ++i) ASSERT_EQ(out[i], noise.turbulence(xs[i], y, 4));
+      for (std::size_t i = 0; i < xs.size(); ++i)
+        ASSERT_EQ(out[i], noise.turbulence(xs[i], y, 4));
       noise.turbulence_row(xs.data(), static_cast<int>(xs.size()), y, z, 5, 0.6, out.data());
       for (std::size_t i = 0; i < xs.size(); ++i) {
         ASSERT_EQ(out[i], noise.turbulence(xs[i], y, z, 5, 0.6));
       }
       noise.fractal_row(xs.data(), static_cast<int>(xs.size()), y, 3, 0.5, out.data());
-      for (std::size_t i = 0; i < xs.size(); ++i) ASSERT_EQ(out[i], noise.fractal_sum(xs[i], y, 3));
+      for (std::size_t i = 0; i < xs.size(); ++i)
+        ASSERT_EQ(out[i], noise.fractal_sum(xs[i], y, 3));
     }
   }
 }
@@ -146,7 +153,8 @@ TEST(PerlinNoise, turbulence_stays_in_its_range_for_every_octave_count) {
   core::Rng rng(22);
   for (int octaves = 1; octaves <= 8; ++octaves) {
     double bound = 0.0, amplitude = 1.0, sum = 0.0, maximum = 0.0;
-    for (int o = 0; o < octaves; ++o, amplitude *= 0.5) bound += amplitude;
+    for (int o = 0; o < octaves; ++o, amplitude *= 0.5)
+      bound += amplitude;
     const int n = 20000;
     for (int i = 0; i < n; ++i) {
       const double t = noise.turbulence(rng.uniform(-100, 100), rng.uniform(-100, 100),

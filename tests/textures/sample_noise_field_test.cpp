@@ -28,8 +28,10 @@ Image8 two_colour_sample() {
 
 std::array<double, 3> mean_color(const Image8& image) {
   std::array<double, 3> sum{0, 0, 0};
-  for (std::size_t i = 0; i < image.pixels.size(); ++i) sum[i % 3] += image.pixels[i];
-  for (auto& s : sum) s /= static_cast<double>(image.pixels.size() / 3);
+  for (std::size_t i = 0; i < image.pixels.size(); ++i)
+    sum[i % 3] += image.pixels[i];
+  for (auto& s : sum)
+    s /= static_cast<double>(image.pixels.size() / 3);
   return sum;
 }
 
@@ -50,7 +52,8 @@ TEST(SampleNoiseField, colour_statistics_follow_the_sample) {
       }
     }
   }
-  for (int k = 0; k < 3; ++k) EXPECT_NEAR(sum[k] / (n * n), expected[k], 4.0) << "channel " << k;
+  for (int k = 0; k < 3; ++k)
+    EXPECT_NEAR(sum[k] / (n * n), expected[k], 4.0) << "channel " << k;
 }
 
 TEST(SampleNoiseField, solid_field_follows_the_sample_too) {
@@ -62,9 +65,11 @@ TEST(SampleNoiseField, solid_field_follows_the_sample_too) {
   const int n = 100000;
   for (int i = 0; i < n; ++i) {
     const Rgb c = field.color(rng.uniform(0, 300), rng.uniform(0, 300), rng.uniform(0, 300));
-    for (int k = 0; k < 3; ++k) sum[k] += static_cast<double>(c[k]);
+    for (int k = 0; k < 3; ++k)
+      sum[k] += static_cast<double>(c[k]);
   }
-  for (int k = 0; k < 3; ++k) EXPECT_NEAR(sum[k] / n, expected[k], 3.0) << "channel " << k;
+  for (int k = 0; k < 3; ++k)
+    EXPECT_NEAR(sum[k] / n, expected[k], 3.0) << "channel " << k;
 }
 
 TEST(SampleNoiseField, differs_for_every_seed_and_repeats_for_the_same) {
@@ -81,7 +86,8 @@ TEST(SampleNoiseField, refuses_an_empty_sample) {
 TEST(SampleNoiseField, palette_sample_holds_colours_in_proportion) {
   const Image8 palette = palette_sample({{255, 0, 0}, {0, 0, 255}}, {3.0, 1.0}, 100);
   int red = 0;
-  for (int i = 0; i < 100; ++i) red += palette.pixels[3 * i] == 255;
+  for (int i = 0; i < 100; ++i)
+    red += palette.pixels[3 * i] == 255;
   EXPECT_EQ(red, 75);
 }
 
@@ -98,7 +104,8 @@ TEST(TextureSynthesis, texture_from_a_sample_takes_its_colours) {
     const auto mean = mean_color(synthesize_texture(preset, options).albedo);
     // Grain scales brightness around its mean, so the mean colour stays the sample's within a
     // few percent.
-    for (int k = 0; k < 3; ++k) EXPECT_NEAR(mean[k], expected[k], 0.06 * expected[k]) << name << " " << k;
+    for (int k = 0; k < 3; ++k)
+      EXPECT_NEAR(mean[k], expected[k], 0.06 * expected[k]) << name << " " << k;
   }
 }
 

@@ -24,7 +24,8 @@ class PositionShader final : public SurfaceShader {
  public:
   SurfaceSample shade(const Vec3& p, const Vec3& n, double) const override {
     SurfaceSample s;
-    s.albedo = {static_cast<float>(128.0 + 2500.0 * p.x()), static_cast<float>(128.0 + 2500.0 * p.y()),
+    s.albedo = {static_cast<float>(128.0 + 2500.0 * p.x()),
+                static_cast<float>(128.0 + 2500.0 * p.y()),
                 static_cast<float>(128.0 + 2500.0 * p.z())};
     s.normal = n;
     s.wetness = 0.25f;
@@ -38,12 +39,15 @@ TEST(TextureBaker, every_texel_inside_a_chart_shows_its_surface_point) {
   int checked = 0;
   // Sample triangle centroids: their texel must hold the colour of the centroid's position.
   for (const auto& t : atlas.mesh.triangles) {
-    const core::Vec2 uv = (atlas.mesh.uvs[t[0]] + atlas.mesh.uvs[t[1]] + atlas.mesh.uvs[t[2]]) / 3.0;
-    const Vec3 p = (atlas.mesh.vertices[t[0]] + atlas.mesh.vertices[t[1]] + atlas.mesh.vertices[t[2]]) / 3.0;
+    const core::Vec2 uv =
+        (atlas.mesh.uvs[t[0]] + atlas.mesh.uvs[t[1]] + atlas.mesh.uvs[t[2]]) / 3.0;
+    const Vec3 p =
+        (atlas.mesh.vertices[t[0]] + atlas.mesh.vertices[t[1]] + atlas.mesh.vertices[t[2]]) / 3.0;
     const int x = static_cast<int>(uv.x() * 256), y = static_cast<int>((1.0 - uv.y()) * 256);
     const std::uint8_t* albedo = maps.albedo.row(y) + 3 * x;
     // Within the colour change across one texel (2500 · texel size ≈ 1.5 levels) plus rounding.
-    for (int k = 0; k < 3; ++k) ASSERT_NEAR(albedo[k], 128.0 + 2500.0 * p[k], 3.0) << k;
+    for (int k = 0; k < 3; ++k)
+      ASSERT_NEAR(albedo[k], 128.0 + 2500.0 * p[k], 3.0) << k;
     // An unperturbed normal is (0, 0, 1) in tangent space.
     const std::uint8_t* normal = maps.normal.row(y) + 3 * x;
     EXPECT_NEAR(normal[0], 128, 2);
@@ -59,7 +63,8 @@ TEST(TextureBaker, bakes_a_preset_deterministically_on_any_thread_count) {
   const auto atlas = build_uv_atlas(core::make_icosphere(0.04, 3), {256, 3});
   const auto& preset = find_texture_preset("myoma-surface");
   const SurfaceProjector surface(atlas.mesh);
-  const SolidTissueTexture solid(preset, 5, 0.04, nullptr, grow_surface_vessels(preset, surface, 0.04, 5));
+  const SolidTissueTexture solid(preset, 5, 0.04, nullptr,
+                                 grow_surface_vessels(preset, surface, 0.04, 5));
   const auto a = bake_surface_texture(atlas.mesh, solid, {256, 256, 3, 1});
   const auto b = bake_surface_texture(atlas.mesh, solid, {256, 256, 3, 4});
   EXPECT_EQ(encode_png(a.albedo), encode_png(b.albedo));
@@ -102,7 +107,8 @@ TEST(TriplanarTexture, projects_a_flat_map_along_the_dominant_axis) {
   maps.albedo = Image8(4, 4, 3);
   // Left half red, right half blue (in u).
   for (int y = 0; y < 4; ++y) {
-    for (int x = 0; x < 4; ++x) maps.albedo.row(y)[3 * x + (x < 2 ? 0 : 2)] = 255;
+    for (int x = 0; x < 4; ++x)
+      maps.albedo.row(y)[3 * x + (x < 2 ? 0 : 2)] = 255;
   }
   const TriplanarTexture triplanar(maps, 0.04, 8.0);
   // On a face looking along +z, u is world x: x = 0.25 · 0.04 is in the red half.
@@ -119,7 +125,8 @@ TEST(TriplanarTexture, vertex_colors_for_surfaces_without_uvs) {
   bake_vertex_colors(sphere, PositionShader());
   ASSERT_EQ(sphere.vertex_attributes.at("albedo_r").size(), sphere.vertices.size());
   for (std::size_t v = 0; v < sphere.vertices.size(); ++v) {
-    EXPECT_NEAR(sphere.vertex_attributes.at("albedo_g")[v], (128.0 + 2500.0 * sphere.vertices[v].y()) / 255.0, 1e-6);
+    EXPECT_NEAR(sphere.vertex_attributes.at("albedo_g")[v],
+                (128.0 + 2500.0 * sphere.vertices[v].y()) / 255.0, 1e-6);
     EXPECT_DOUBLE_EQ(sphere.vertex_attributes.at("wetness")[v], 0.25);
   }
 }

@@ -55,7 +55,8 @@ TEST(TextureSynthesis, same_seed_gives_the_same_png_bytes_for_every_preset) {
     EXPECT_EQ(encode_png(a.albedo), encode_png(b.albedo)) << name;
     EXPECT_EQ(encode_png(a.normal), encode_png(b.normal)) << name;
     EXPECT_EQ(encode_png(a.specular), encode_png(b.specular)) << name;
-    EXPECT_NE(encode_png(synthesize_texture(preset, small(8)).albedo), encode_png(a.albedo)) << name;
+    EXPECT_NE(encode_png(synthesize_texture(preset, small(8)).albedo), encode_png(a.albedo))
+        << name;
   }
 }
 
@@ -77,10 +78,12 @@ TEST(TextureSynthesis, maps_have_the_documented_shapes_and_ranges) {
   EXPECT_EQ(maps.normal.width, 192);
   EXPECT_EQ(maps.normal.height, 128);
   // Tangent-space normals point out of the surface: blue (z) above 0.5 everywhere.
-  for (std::size_t i = 2; i < maps.normal.pixels.size(); i += 3) ASSERT_GT(maps.normal.pixels[i], 128);
+  for (std::size_t i = 2; i < maps.normal.pixels.size(); i += 3)
+    ASSERT_GT(maps.normal.pixels[i], 128);
   // A wet peritoneum: mean specular near the preset's base of 0.75.
-  const double mean = std::accumulate(maps.specular.pixels.begin(), maps.specular.pixels.end(), 0.0) /
-                      static_cast<double>(maps.specular.pixels.size());
+  const double mean =
+      std::accumulate(maps.specular.pixels.begin(), maps.specular.pixels.end(), 0.0) /
+      static_cast<double>(maps.specular.pixels.size());
   EXPECT_NEAR(mean / 255.0, 0.75, 0.08);
 }
 
@@ -104,7 +107,8 @@ TEST(TextureSynthesis, refuses_sizes_outside_the_documented_range) {
 TEST(NormalMap, a_ramp_tilts_normals_against_its_slope) {
   std::vector<float> height(16 * 16);
   for (int y = 0; y < 16; ++y) {
-    for (int x = 0; x < 16; ++x) height[y * 16 + x] = static_cast<float>(x) / 16.0f;  // h = u
+    for (int x = 0; x < 16; ++x)
+      height[y * 16 + x] = static_cast<float>(x) / 16.0f;  // h = u
   }
   const Image8 normal = normal_map_from_height(height, 16, 16, 1.0);
   // ∂h/∂u = 1 per texture width → n = (−1, 0, 1)/√2 → about (37, 128, 218).
@@ -127,7 +131,8 @@ TEST(VesselPainter, paints_an_antialiased_tapered_stroke) {
   EXPECT_FLOAT_EQ(at(120, 31), 0.0f);
   const auto column_ink = [&](int x) {
     float sum = 0;
-    for (int y = 0; y < 64; ++y) sum += at(x, y);
+    for (int y = 0; y < 64; ++y)
+      sum += at(x, y);
     return sum;
   };
   EXPECT_NEAR(column_ink(15), 7.7, 0.5);   // width 7.7 there
@@ -142,7 +147,8 @@ TEST(VesselPainter, vessel_layers_are_deterministic_per_seed) {
   const auto b = grow_vessel_layer(spec, 512, 512, 9);
   ASSERT_EQ(a.size(), b.size());
   ASSERT_FALSE(a.empty());
-  for (std::size_t i = 0; i < a.size(); ++i) ASSERT_TRUE(a[i].end == b[i].end);
+  for (std::size_t i = 0; i < a.size(); ++i)
+    ASSERT_TRUE(a[i].end == b[i].end);
   EXPECT_FALSE(grow_vessel_layer(spec, 512, 512, 10).back().end == a.back().end);
   EXPECT_EQ(paint_vessels(a, 512, 512, 1).coverage, paint_vessels(a, 512, 512, 3).coverage);
 }

@@ -52,13 +52,16 @@ void expect_valid_atlas(const core::SurfaceMesh& input, const UvAtlas& atlas) {
   for (std::size_t t = 0; t < input.triangles.size(); ++t) {
     for (int k = 0; k < 3; ++k) {
       ASSERT_EQ(atlas.original_vertex[atlas.mesh.triangles[t][k]], input.triangles[t][k]);
-      ASSERT_TRUE(atlas.mesh.vertices[atlas.mesh.triangles[t][k]] == input.vertices[input.triangles[t][k]]);
+      ASSERT_TRUE(atlas.mesh.vertices[atlas.mesh.triangles[t][k]] ==
+                  input.vertices[input.triangles[t][k]]);
     }
   }
   // Every chart is a topological disk.
   std::vector<std::vector<int>> charts(static_cast<std::size_t>(atlas.chart_count));
-  for (std::size_t t = 0; t < atlas.chart_of_triangle.size(); ++t) charts[atlas.chart_of_triangle[t]].push_back(static_cast<int>(t));
-  for (const auto& chart : charts) EXPECT_TRUE(chart.size() == 1 || is_topological_disk(input, chart));
+  for (std::size_t t = 0; t < atlas.chart_of_triangle.size(); ++t)
+    charts[atlas.chart_of_triangle[t]].push_back(static_cast<int>(t));
+  for (const auto& chart : charts)
+    EXPECT_TRUE(chart.size() == 1 || is_topological_disk(input, chart));
 }
 
 TEST(UvAtlas, icosphere_gets_an_lscm_atlas_within_the_distortion_bounds) {
@@ -87,9 +90,11 @@ TEST(UvAtlas, charts_keep_their_gutter_apart) {
   // The bounding boxes of any two charts are at least two gutters apart, in texels.
   std::vector<int> chart_of_vertex(atlas.mesh.vertices.size());
   for (std::size_t t = 0; t < atlas.mesh.triangles.size(); ++t) {
-    for (const int v : atlas.mesh.triangles[t]) chart_of_vertex[v] = atlas.chart_of_triangle[t];
+    for (const int v : atlas.mesh.triangles[t])
+      chart_of_vertex[v] = atlas.chart_of_triangle[t];
   }
-  std::vector<core::Vec2> lo(atlas.chart_count, core::Vec2::Constant(2)), hi(atlas.chart_count, core::Vec2::Constant(-1));
+  std::vector<core::Vec2> lo(atlas.chart_count, core::Vec2::Constant(2)),
+      hi(atlas.chart_count, core::Vec2::Constant(-1));
   for (std::size_t v = 0; v < atlas.mesh.uvs.size(); ++v) {
     lo[chart_of_vertex[v]] = lo[chart_of_vertex[v]].cwiseMin(atlas.mesh.uvs[v]);
     hi[chart_of_vertex[v]] = hi[chart_of_vertex[v]].cwiseMax(atlas.mesh.uvs[v]);
@@ -106,13 +111,15 @@ TEST(UvAtlas, charts_keep_their_gutter_apart) {
 TEST(UvAtlas, keeps_vertex_attributes_and_normals_across_seams) {
   auto sphere = core::make_icosphere(0.03, 2);
   sphere.vertex_attributes["stiffness"] = std::vector<double>(sphere.vertices.size());
-  for (std::size_t v = 0; v < sphere.vertices.size(); ++v) sphere.vertex_attributes["stiffness"][v] = static_cast<double>(v);
+  for (std::size_t v = 0; v < sphere.vertices.size(); ++v)
+    sphere.vertex_attributes["stiffness"][v] = static_cast<double>(v);
   const UvAtlas atlas = build_uv_atlas(sphere);
   ASSERT_EQ(atlas.mesh.normals.size(), atlas.mesh.vertices.size());
   for (std::size_t v = 0; v < atlas.mesh.vertices.size(); ++v) {
     EXPECT_EQ(atlas.mesh.vertex_attributes.at("stiffness")[v], atlas.original_vertex[v]);
     // Copies share the original's smooth normal, so seams do not show in lighting.
-    EXPECT_GT(atlas.mesh.normals[v].dot(sphere.vertices[atlas.original_vertex[v]].normalized()), 0.99);
+    EXPECT_GT(atlas.mesh.normals[v].dot(sphere.vertices[atlas.original_vertex[v]].normalized()),
+              0.99);
   }
 }
 

@@ -27,6 +27,13 @@ void apply_uv_atlas(core::SceneObject& object, const UvAtlas& atlas) {
   }
   object.surface = atlas.mesh;
   object.embedding = std::move(embedding);
+  // Consumers that need the closed surface's adjacency (surface walks, cutting) weld copies by
+  // this index. A surface cut before already carries it, copied per vertex by the atlas, so it
+  // keeps pointing at the first uncut surface.
+  auto& weld = object.surface.vertex_attributes[kSeamVertexAttribute];
+  if (weld.empty()) {
+    for (const int v : atlas.original_vertex) weld.push_back(static_cast<double>(v));
+  }
 }
 
 BakedTextures bake_textures_into(core::Scenario& scenario, const ScenarioBakeOptions& options,

@@ -60,8 +60,13 @@ std::string texture_map_path(const std::string& texture_id, const std::string& m
 BakedTextures bake_textures_into(core::Scenario& scenario, const ScenarioBakeOptions& options,
                                  core::Progress& progress = core::Progress::none());
 
+/// Vertex attribute holding, for every vertex of a surface cut along seams, the index of the
+/// vertex it copies in the uncut surface (as a double, like every vertex attribute).
+inline constexpr const char* kSeamVertexAttribute = "seam_vertex";
+
 /// Replaces an object's visual surface by the atlas's, whose seam vertices are copies: each copy
-/// follows the same tet with the same weights as its original, so the split surface moves as one.
+/// follows the same tet with the same weights as its original, so the split surface moves as one,
+/// and records the original index in the kSeamVertexAttribute attribute.
 void apply_uv_atlas(core::SceneObject& object, const UvAtlas& atlas);
 
 }  // namespace viscera::textures

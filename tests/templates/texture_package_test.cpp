@@ -67,6 +67,13 @@ TEST(TexturePackage, maps_baked_onto_a_ball_are_stored_and_read_back) {
     EXPECT_TRUE(textures::has_usable_uvs(ball.surface));
     EXPECT_EQ(ball.embedding.tet.size(), ball.surface.vertices.size());
     EXPECT_FALSE(core::is_closed_and_consistently_oriented(ball.surface));  // seams split it
+    // Welding the copies by their recorded original index gives back the closed ball.
+    core::SurfaceMesh welded = ball.surface;
+    const auto& original = ball.surface.vertex_attributes.at(textures::kSeamVertexAttribute);
+    for (auto& t : welded.triangles) {
+      for (int& v : t) v = static_cast<int>(original[static_cast<std::size_t>(v)]);
+    }
+    EXPECT_TRUE(core::is_closed_and_consistently_oriented(welded));
   }
   const auto folder = dir / "ball.vscene";
   const auto albedo =

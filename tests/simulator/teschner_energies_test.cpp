@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "simulator/physics/deformable_body.h"
 #include "tests/simulator/sim_fixtures.h"
 
@@ -104,29 +107,65 @@ TEST(TeschnerEnergies, damping_opposes_relative_velocity_along_the_edge) {
   EXPECT_NEAR(f[0].x(), 6.0, 1e-12);
 }
 
-TEST(TeschnerEnergies, inverted_tet_is_pushed_back_to_its_orientation) {
+/// One tet of 1 cm legs; only volume terms unless a test adds others.
+core::TetMesh single_tet() {
   core::TetMesh tet;
   tet.nodes = {Vec3::Zero(), Vec3::UnitX() * 0.01, Vec3::UnitY() * 0.01, Vec3::UnitZ() * 0.01};
   tet.tets = {{0, 1, 2, 3}};
+  return tet;
+}
+
+TEST(TeschnerEnergies, forces_are_the_negative_energy_gradient_on_inverted_tets) {
+  // The signed volume of eq. 6 must be differentiated as signed: an inverted tet is where an
+  // unsigned |V| (or a sign slip in its gradient) would show.
   core::Material material;
   material.distance_stiffness = 0.0;
-  material.distance_damping = 0.0;
   material.volume_stiffness = 10000.0;
-  DeformableBody body("tet", tet, material);
-  // Push the apex through the base: the signed volume is now negative.
-  body.positions()[3] = Vec3(0.002, 0.002, -0.004);
-  body.previous_positions() = body.positions();
-  const auto signed_volume = [&] {
-    const auto& p = body.positions();
-    return core::signed_volume(p[0], p[1], p[2], p[3]);
-  };
-  ASSERT_LT(signed_volume(), 0.0);
-  const double h = body.stable_time_step();
-  for (int s = 0; s < 20000 && signed_volume() <= 0.0; ++s) {
-    body.compute_forces(Vec3::Zero(), h);
-    body.integrate(h);
+  DeformableBody body("tet", single_tet(), material);
+  for (const double depth : {-0.004, -0.02}) {  // |V| below and above V0
+    std::vector<Vec3> x = body.rest_positions();
+    x[3] = Vec3(0.002, 0.003, depth);
+    ASSERT_LT(core::signed_volume(x[0], x[1], x[2], x[3]), 0.0);
+    std::vector<Vec3> f(x.size(), Vec3::Zero());
+    add_volume_forces(x, body.volume_terms(), f);
+    const double h = 1e-8;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      for (int c = 0; c < 3; ++c) {
+        auto plus = x, minus = x;
+        plus[i][c] += h;
+        minus[i][c] -= h;
+        const double gradient = (volume_energy(plus, body.volume_terms()) - volume_energy(minus, body.volume_terms())) / (2 * h);
+        ASSERT_NEAR(f[i][c], -gradient, 1e-6 * std::max(1.0, std::abs(gradient))) << "depth " << depth << " node " << i;
+      }
+    }
   }
-  EXPECT_GT(signed_volume(), 0.0);
+}
+
+TEST(TeschnerEnergies, inverted_tet_is_pushed_back_to_its_orientation) {
+  // Damped and with a step ten times below the stability bound, so the tet cannot jump through
+  // its degenerate state by overshoot: it must be driven back and settle at +V0. An energy in
+  // the unsigned |V| would settle at −V0 instead.
+  core::Material material;
+  material.distance_stiffness = 0.0;
+  material.distance_damping = 20.0;
+  material.volume_stiffness = 10000.0;
+  for (const double depth : {-0.004, -0.02}) {
+    DeformableBody body("tet", single_tet(), material);
+    const double rest_volume = body.volume_terms().rest_volume[0];
+    body.positions()[3] = Vec3(0.002, 0.002, depth);
+    body.previous_positions() = body.positions();
+    const auto signed_volume = [&] {
+      const auto& p = body.positions();
+      return core::signed_volume(p[0], p[1], p[2], p[3]);
+    };
+    ASSERT_LT(signed_volume(), 0.0);
+    const double h = 0.1 * body.stable_time_step();
+    for (int s = 0; s < 20000; ++s) {
+      body.compute_forces(Vec3::Zero(), h);
+      body.integrate(h);
+    }
+    EXPECT_NEAR(signed_volume(), rest_volume, 0.02 * rest_volume) << "apex started at z = " << depth;
+  }
 }
 
 }  // namespace

@@ -51,7 +51,16 @@ void World::step() {
         }
       }
     }
-    for (auto& body : bodies_) body.integrate(h);
+    for (auto& body : bodies_) {
+      try {
+        body.integrate(h);
+      } catch (const core::Error& e) {
+        // The body names itself and the node; only the world knows when it happened.
+        throw core::Error(e.reason() + " at step " + std::to_string(steps_ + 1) + " (t = " +
+                              std::to_string(static_cast<double>(steps_ + 1) * time_step_) + " s)",
+                          e.location());
+      }
+    }
   }
   ++steps_;
 }

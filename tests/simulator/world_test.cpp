@@ -1,0 +1,91 @@
+#include "simulator/world/world.h"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+
+#include "core/error.h"
+#include "tests/simulator/sim_fixtures.h"
+
+namespace viscera::sim {
+namespace {
+
+/// A 2 × 2 × 3 cm soft block on its fixed base, under gravity, at a step of `time_step` s.
+core::Scenario small_block(double time_step = 1e-3) {
+  core::Scenario scenario;
+  core::Material material;
+  material.id = "soft";
+  material.density = 1000.0;
+  material.distance_stiffness = 20000.0;
+  material.volume_stiffness = 20000.0;
+  material.distance_damping = 50.0;
+  scenario.materials[material.id] = material;
+  core::SceneObject block;
+  block.id = "block";
+  block.material = "soft";
+  block.body_kind = core::BodyKind::TetMesh;
+  block.body = viscera::testing::tet_block(2, 2, 3, 0.01);
+  block.body.fixed.assign(block.body.nodes.size(), 0);
+  for (std::size_t n = 0; n < block.body.nodes.size(); ++n) {
+    if (block.body.nodes[n].z() < 1e-9) block.body.fixed[n] = 1;
+  }
+  scenario.objects.push_back(block);
+  scenario.session.gravity = core::Vec3(0.0, 0.0, -9.81);
+  scenario.session.time_step = time_step;
+  return scenario;
+}
+
+std::string hash_after(double simulated_time, double time_step) {
+  World world(small_block(time_step));
+  const auto steps = static_cast<int>(std::lround(simulated_time / time_step));
+  for (int s = 0; s < steps; ++s) world.step();
+  return world.state_hash();
+}
+
+TEST(World, a_different_time_step_gives_a_different_hash) {
+  EXPECT_EQ(hash_after(0.1, 1e-3), hash_after(0.1, 1e-3));
+  EXPECT_NE(hash_after(0.1, 1e-3), hash_after(0.1, 5e-4));
+}
+
+TEST(World, the_hash_covers_previous_positions) {
+  World a(small_block()), b(small_block());
+  b.bodies()[0].previous_positions()[7].x() += 1e-12;  // a velocity change only
+  EXPECT_NE(a.state_hash(), b.state_hash());
+}
+
+TEST(World, energies_at_rest_are_zero_and_follow_a_rigid_motion) {
+  World world(small_block());
+  EXPECT_EQ(world.energies().total(), 0.0);
+  // Move every node 1 mm down and give it 0.2 m/s along x through the previous positions:
+  // kinetic ½ M v², gravitational −M g·d relative to rest, no elastic energy.
+  DeformableBody& body = world.bodies()[0];
+  const double h = world.time_step() / world.substeps();
+  const core::Vec3 drop(0.0, 0.0, -1e-3), velocity(0.2, 0.0, 0.0);
+  double mass = 0.0;
+  for (std::size_t i = 0; i < body.node_count(); ++i) {
+    body.positions()[i] = body.rest_positions()[i] + drop;
+    body.previous_positions()[i] = body.positions()[i] - velocity * h;
+    mass += body.masses()[i];
+  }
+  const BodyEnergies e = world.energies();
+  EXPECT_NEAR(e.kinetic, 0.5 * mass * velocity.squaredNorm(), 1e-12 * mass);
+  EXPECT_NEAR(e.gravitational, -mass * world.gravity().dot(drop), 1e-12 * mass);
+  EXPECT_NEAR(e.elastic, 0.0, 1e-18);
+}
+
+TEST(World, non_finite_positions_raise_an_error_naming_the_body_and_step) {
+  World world(small_block());
+  for (int s = 0; s < 3; ++s) world.step();
+  world.bodies()[0].positions()[20].y() = std::numeric_limits<double>::quiet_NaN();
+  try {
+    world.step();
+    FAIL() << "a NaN position went unnoticed";
+  } catch (const core::Error& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("block"), std::string::npos) << message;
+    EXPECT_NE(message.find("step 4"), std::string::npos) << message;
+  }
+}
+
+}  // namespace
+}  // namespace viscera::sim

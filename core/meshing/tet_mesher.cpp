@@ -38,12 +38,22 @@ constexpr int kTetrahedron4 = 4;  // gmsh element type of 4-node tetrahedra
 
 TetMesh mesh_closed_surface(const SurfaceMesh& surface, const TetMeshingOptions& options,
                             Progress& progress) {
-  check_surface_mesh(surface, "surface to mesh");
-  if (!is_closed_and_consistently_oriented(surface)) {
-    throw InputError("surface is not closed and consistently oriented; cannot fill it with tets");
-  }
-  if (enclosed_volume(surface) <= 0.0) {
-    throw InputError("surface encloses no positive volume (inward-facing triangles?)");
+  return mesh_region_between(surface, {}, options, progress);
+}
+
+TetMesh mesh_region_between(const SurfaceMesh& outer, const std::vector<SurfaceMesh>& holes,
+                            const TetMeshingOptions& options, Progress& progress) {
+  std::vector<const SurfaceMesh*> boundaries = {&outer};
+  for (const auto& hole : holes) boundaries.push_back(&hole);
+  for (std::size_t b = 0; b < boundaries.size(); ++b) {
+    const std::string what = b == 0 ? "surface to mesh" : "inner surface " + std::to_string(b);
+    check_surface_mesh(*boundaries[b], what);
+    if (!is_closed_and_consistently_oriented(*boundaries[b])) {
+      throw InputError(what + " is not closed and consistently oriented; cannot fill it with tets");
+    }
+    if (enclosed_volume(*boundaries[b]) <= 0.0) {
+      throw InputError(what + " encloses no positive volume (inward-facing triangles?)");
+    }
   }
   progress.begin_stage("tetrahedral meshing", 3);
 
@@ -58,27 +68,35 @@ TetMesh mesh_closed_surface(const SurfaceMesh& surface, const TetMeshingOptions&
       gmsh::option::setNumber("Mesh.MeshSizeMax", options.cell_size);
     }
 
-    const int surface_tag = gmsh::model::addDiscreteEntity(2);
-    std::vector<std::size_t> node_tags(surface.vertices.size());
-    std::vector<double> coordinates;
-    coordinates.reserve(3 * surface.vertices.size());
-    for (std::size_t i = 0; i < surface.vertices.size(); ++i) {
-      node_tags[i] = i + 1;
-      for (int c = 0; c < 3; ++c) coordinates.push_back(surface.vertices[i][c]);
+    // One discrete surface per boundary, node and element tags numbered on across them, and
+    // one surface loop each: the first bounds the volume, the others are its holes.
+    std::vector<int> loops;
+    std::size_t node_offset = 0, element_offset = 0;
+    for (const SurfaceMesh* boundary : boundaries) {
+      const int surface_tag = gmsh::model::addDiscreteEntity(2);
+      std::vector<std::size_t> node_tags(boundary->vertices.size());
+      std::vector<double> coordinates;
+      coordinates.reserve(3 * boundary->vertices.size());
+      for (std::size_t i = 0; i < boundary->vertices.size(); ++i) {
+        node_tags[i] = node_offset + i + 1;
+        for (int c = 0; c < 3; ++c) coordinates.push_back(boundary->vertices[i][c]);
+      }
+      gmsh::model::mesh::addNodes(2, surface_tag, node_tags, coordinates);
+      std::vector<std::size_t> element_tags(boundary->triangles.size());
+      std::vector<std::size_t> element_nodes;
+      element_nodes.reserve(3 * boundary->triangles.size());
+      for (std::size_t t = 0; t < boundary->triangles.size(); ++t) {
+        element_tags[t] = element_offset + t + 1;
+        for (const int v : boundary->triangles[t]) element_nodes.push_back(node_offset + static_cast<std::size_t>(v) + 1);
+      }
+      gmsh::model::mesh::addElementsByType(surface_tag, kTriangle3, element_tags, element_nodes);
+      // A built-in-kernel volume bounded by the discrete surfaces: gmsh keeps the surface
+      // triangles as they are and fills the inside.
+      loops.push_back(gmsh::model::geo::addSurfaceLoop({surface_tag}));
+      node_offset += boundary->vertices.size();
+      element_offset += boundary->triangles.size();
     }
-    gmsh::model::mesh::addNodes(2, surface_tag, node_tags, coordinates);
-    std::vector<std::size_t> element_tags(surface.triangles.size());
-    std::vector<std::size_t> element_nodes;
-    element_nodes.reserve(3 * surface.triangles.size());
-    for (std::size_t t = 0; t < surface.triangles.size(); ++t) {
-      element_tags[t] = t + 1;
-      for (const int v : surface.triangles[t]) element_nodes.push_back(static_cast<std::size_t>(v) + 1);
-    }
-    gmsh::model::mesh::addElementsByType(surface_tag, kTriangle3, element_tags, element_nodes);
-    // A built-in-kernel volume bounded by the discrete surface: gmsh keeps the surface
-    // triangles as they are and fills the inside.
-    const int loop = gmsh::model::geo::addSurfaceLoop({surface_tag});
-    const int volume_tag = gmsh::model::geo::addVolume({loop});
+    const int volume_tag = gmsh::model::geo::addVolume(loops);
     gmsh::model::geo::synchronize();
     progress.step();
 
@@ -88,11 +106,15 @@ TetMesh mesh_closed_surface(const SurfaceMesh& surface, const TetMeshingOptions&
     std::vector<std::size_t> all_tags;
     std::vector<double> all_coordinates, parametric;
     gmsh::model::mesh::getNodes(all_tags, all_coordinates, parametric, -1, -1, true, false);
-    // gmsh numbers nodes by tag; map tags to dense indices, keeping the surface's own
+    // gmsh numbers nodes by tag; map tags to dense indices, keeping the boundaries' own
     // vertices first and in their order so surface_faces reuse the input triangles.
     std::map<std::size_t, int> index_of_tag;
-    result.nodes = surface.vertices;
-    for (std::size_t i = 0; i < surface.vertices.size(); ++i) index_of_tag[i + 1] = static_cast<int>(i);
+    for (const SurfaceMesh* boundary : boundaries) {
+      for (const Vec3& v : boundary->vertices) {
+        index_of_tag[result.nodes.size() + 1] = static_cast<int>(result.nodes.size());
+        result.nodes.push_back(v);
+      }
+    }
     for (std::size_t i = 0; i < all_tags.size(); ++i) {
       if (index_of_tag.contains(all_tags[i])) continue;
       index_of_tag[all_tags[i]] = static_cast<int>(result.nodes.size());
@@ -115,7 +137,15 @@ TetMesh mesh_closed_surface(const SurfaceMesh& surface, const TetMeshingOptions&
     throw InputError("gmsh produced no tetrahedra (surface self-intersecting or too coarse?)");
   }
   orient_tets_positively(result);
-  result.surface_faces = surface.triangles;
+  int offset = 0;
+  for (std::size_t b = 0; b < boundaries.size(); ++b) {
+    for (const auto& t : boundaries[b]->triangles) {
+      // Holes face into the cavity, away from the material.
+      result.surface_faces.push_back(b == 0 ? Triangle{t[0] + offset, t[1] + offset, t[2] + offset}
+                                            : Triangle{t[0] + offset, t[2] + offset, t[1] + offset});
+    }
+    offset += static_cast<int>(boundaries[b]->vertices.size());
+  }
   progress.step();
   return result;
 }

@@ -23,4 +23,13 @@ struct TetMeshingOptions {
 TetMesh mesh_closed_surface(const SurfaceMesh& surface, const TetMeshingOptions& options = {},
                             Progress& progress = Progress::none());
 
+/// Fills the region inside `outer` and outside every surface in `holes` with tetrahedra — a
+/// hollow shell such as the wall between an organ's outer and inner layer (seed 001 §3.3). Each
+/// boundary is a closed, outward-oriented surface of its own, the holes lie inside `outer` and
+/// do not touch it or each other. Nodes: outer's vertices, then each hole's, then the interior
+/// ones; surface_faces: outer's triangles, then each hole's reversed (outward from the material).
+/// Throws as mesh_closed_surface, naming the boundary at fault.
+TetMesh mesh_region_between(const SurfaceMesh& outer, const std::vector<SurfaceMesh>& holes,
+                            const TetMeshingOptions& options = {}, Progress& progress = Progress::none());
+
 }  // namespace viscera::core

@@ -1,26 +1,32 @@
-/// `viscera-sim`: the simulator runtime. Opens a scenario package and runs a session on it.
+/// `viscera-sim`: the simulator runtime. Opens a scenario package and runs a session on it, or
+/// replays a recorded session and checks it bit for bit.
 /// Exit codes (DESIGN.md §9): 0 success, 1 internal error, 2 usage, 3 unreadable or invalid
-/// input, 4 validation failed.
+/// input, 4 validation failed (a replay that departs from its recording).
 
 #include <CLI/CLI.hpp>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 
-#include "studio/cli/command_line.h"
 #include "core/error.h"
 #include "core/package/scenario_package.h"
 #include "simulator/session/headless_session.h"
+#include "simulator/session/session_trace.h"
+#include "studio/cli/command_line.h"
 
 namespace {
 
 namespace fs = std::filesystem;
+using viscera::sim::SessionReport;
 
 struct RunOptions {
   std::string package;
   bool headless = false;
   double duration = 0.0;
   std::string report_dir;
+  std::string script;
+  std::string record;
   bool json = false;
 };
 
@@ -36,6 +42,30 @@ void write_atomically(const fs::path& path, const std::string& text) {
   fs::rename(temporary, path);
 }
 
+/// Writes report.json into `report_dir` (if given) and prints the summary or the JSON.
+void publish(const SessionReport& report, const std::string& report_dir, bool as_json) {
+  const nlohmann::json json = viscera::sim::report_to_json(report);
+  std::string report_path;
+  if (!report_dir.empty()) {
+    const fs::path path = fs::absolute(report_dir) / "report.json";
+    write_atomically(path, json.dump(2) + "\n");
+    report_path = path.string();
+  }
+  if (as_json) {
+    std::cout << json.dump(2) << "\n";
+    return;
+  }
+  std::cout << "simulated " << report.simulated_time << " s in " << report.steps << " steps (" << report.wall_time
+            << " s wall, " << report.substeps << " substeps per step)\n"
+            << "max displacement " << report.max_displacement << " m\n";
+  if (report.has_instrument) {
+    std::cout << "instrument path " << report.metrics.path_length() << " m, " << report.metrics.contacts()
+              << " contacts, max force " << report.metrics.max_force() << " N\n";
+  }
+  std::cout << "final state hash " << report.final_state_hash << "\n";
+  if (!report_path.empty()) std::cout << "report " << report_path << "\n";
+}
+
 int run(const RunOptions& options) {
   if (!options.headless) {
     // The endoscopic view comes with the rendering module; until then every session is
@@ -46,24 +76,62 @@ int run(const RunOptions& options) {
   viscera::sim::HeadlessRunOptions run;
   run.package = fs::absolute(options.package).string();
   run.duration = options.duration > 0.0 ? options.duration : scenario.session.duration_limit;
-  const viscera::sim::SessionReport report = viscera::sim::run_headless(scenario, run);
-  const nlohmann::json json = viscera::sim::report_to_json(report);
+  std::optional<viscera::sim::ScriptedTrajectory> script;
+  if (!options.script.empty()) {
+    script = viscera::sim::ScriptedTrajectory::read(options.script);
+    run.instrument = &*script;
+    run.instrument_body = script->body();
+    run.instrument_stiffness = script->stiffness();
+    if (options.duration <= 0.0) run.duration = script->duration();
+  }
+  run.record_inputs = !options.record.empty();
+  const SessionReport report = viscera::sim::run_headless(scenario, run);
+  if (!options.record.empty()) {
+    viscera::sim::SessionTrace trace;
+    trace.package = run.package;
+    trace.manifest_sha256 = viscera::sim::package_manifest_sha256(options.package);
+    trace.duration = run.duration;
+    trace.body = run.instrument_body;
+    trace.stiffness = run.instrument_stiffness;
+    trace.checkpoint_interval = run.checkpoint_interval;
+    trace.tips = report.inputs;
+    trace.checkpoints = report.checkpoints;
+    trace.final_state_hash = report.final_state_hash;
+    viscera::sim::write_trace(trace, options.record);
+  }
+  publish(report, options.report_dir, options.json);
+  return 0;
+}
 
-  std::string report_path;
-  if (!options.report_dir.empty()) {
-    const fs::path path = fs::absolute(options.report_dir) / "report.json";
-    write_atomically(path, json.dump(2) + "\n");
-    report_path = path.string();
+/// Runs the recorded session again and compares every checkpoint hash.
+int replay(const std::string& trace_path, const std::string& report_dir, bool as_json) {
+  const viscera::sim::SessionTrace trace = viscera::sim::read_trace(trace_path);
+  if (viscera::sim::package_manifest_sha256(trace.package) != trace.manifest_sha256) {
+    throw viscera::core::ValidationError("the package changed since the session was recorded", {trace.package, "", ""});
   }
-  if (options.json) {
-    std::cout << json.dump(2) << "\n";
-  } else {
-    std::cout << "simulated " << report.simulated_time << " s in " << report.steps << " steps ("
-              << report.wall_time << " s wall, " << report.substeps << " substeps per step)\n"
-              << "max displacement " << report.max_displacement << " m\n"
-              << "final state hash " << report.final_state_hash << "\n";
-    if (!report_path.empty()) std::cout << "report " << report_path << "\n";
+  const viscera::core::Scenario scenario = viscera::core::read_package(trace.package);
+  const viscera::sim::RecordedInput input(trace.tips);
+  viscera::sim::HeadlessRunOptions run;
+  run.package = trace.package;
+  run.duration = trace.duration;
+  run.checkpoint_interval = trace.checkpoint_interval;
+  if (!trace.body.empty()) {
+    run.instrument = &input;
+    run.instrument_body = trace.body;
+    run.instrument_stiffness = trace.stiffness;
   }
+  const SessionReport report = viscera::sim::run_headless(scenario, run);
+  for (std::size_t i = 0; i < trace.checkpoints.size(); ++i) {
+    if (i >= report.checkpoints.size() || report.checkpoints[i] != trace.checkpoints[i]) {
+      throw viscera::core::ValidationError(
+          "replay departs from the recording at step " + std::to_string(trace.checkpoints[i].first), {trace_path, "", ""});
+    }
+  }
+  if (report.final_state_hash != trace.final_state_hash) {
+    throw viscera::core::ValidationError("replay ends in a different state", {trace_path, "", ""});
+  }
+  publish(report, report_dir, as_json);
+  if (!as_json) std::cout << "replay identical: " << trace.checkpoints.size() << " checkpoints match\n";
   return 0;
 }
 
@@ -79,11 +147,24 @@ int main(int argc, char** argv) {
   auto* run_command = app.add_subcommand("run", "Run a session on a scenario package");
   run_command->add_option("package", options.package, "Package (.vscene folder or .vscz)")->required();
   run_command->add_flag("--headless", options.headless, "Run without a window");
-  run_command->add_option("--duration", options.duration, "Simulated seconds (default: the scenario's limit)")
+  run_command->add_option("--duration", options.duration, "Simulated seconds (default: the script's length or the scenario's limit)")
       ->check(CLI::NonNegativeNumber);
+  run_command->add_option("--script", options.script, "Scripted instrument trajectory (viscera-script JSON)");
+  run_command->add_option("--record", options.record, "Write the session's trace here for replay");
   run_command->add_option("--report", options.report_dir, "Folder for report.json");
   run_command->add_flag("--json", options.json, "Print the report as JSON");
   run_command->callback([&] { exit_code = run(options); });
+
+  std::string trace;
+  std::string replay_report;
+  bool replay_json = false;
+  bool replay_headless = false;
+  auto* replay_command = app.add_subcommand("replay", "Replay a recorded session and check it is bit-identical");
+  replay_command->add_option("trace", trace, "Trace written by run --record")->required();
+  replay_command->add_flag("--headless", replay_headless, "Run without a window (the only mode of this build)");
+  replay_command->add_option("--report", replay_report, "Folder for report.json");
+  replay_command->add_flag("--json", replay_json, "Print the report as JSON");
+  replay_command->callback([&] { exit_code = replay(trace, replay_report, replay_json); });
 
   return viscera::cli::run_command_line(app, argc, argv, exit_code);
 }

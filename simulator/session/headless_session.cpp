@@ -43,6 +43,20 @@ SessionReport run_headless(const core::Scenario& scenario, const HeadlessRunOpti
     report.tasks.push_back(result);
   }
 
+  int instrument_body = -1;
+  if (options.instrument != nullptr) {
+    for (std::size_t b = 0; b < world.bodies().size(); ++b) {
+      if (world.bodies()[b].name() == options.instrument_body) instrument_body = static_cast<int>(b);
+    }
+    if (instrument_body < 0) {
+      throw core::InputError("the scenario has no simulated object \"" + options.instrument_body + "\" for the instrument");
+    }
+    const core::Vec3 start = options.instrument->tip(0, 0.0);
+    world.attach_instrument(instrument_body, options.instrument_stiffness, start);
+    if (options.record_inputs) report.inputs.push_back(start);  // inputs[s] is the tip of step s
+    report.has_instrument = true;
+  }
+
   const auto total_steps = static_cast<long long>(std::llround(options.duration / world.time_step()));
   const long long sample_every = std::max<long long>(1, std::llround(options.sample_interval / world.time_step()));
   progress.begin_stage("simulating", total_steps);
@@ -69,7 +83,18 @@ SessionReport run_headless(const core::Scenario& scenario, const HeadlessRunOpti
   };
   sample();
   for (long long s = 1; s <= total_steps; ++s) {
+    if (options.instrument != nullptr) {
+      const core::Vec3 tip = options.instrument->tip(s, world.time() + world.time_step());
+      world.set_instrument_tip(tip);
+      if (options.record_inputs) report.inputs.push_back(tip);
+    }
     world.step();
+    if (options.instrument != nullptr) {
+      report.metrics.record(world.instrument_tip(), world.instrument_force(), world.instrument_in_contact(), world.time_step());
+    }
+    if (options.checkpoint_interval > 0 && s % options.checkpoint_interval == 0) {
+      report.checkpoints.emplace_back(s, world.state_hash());
+    }
     if (s % sample_every == 0 || s == total_steps) sample();
     progress.step();
   }
@@ -140,6 +165,8 @@ nlohmann::json report_to_json(const SessionReport& r) {
           {"contacts", contacts},
           {"bodies", bodies},
           {"tasks", tasks},
+          {"instrument", r.has_instrument ? r.metrics.to_json() : nlohmann::json(nullptr)},
+          {"checkpoints", r.checkpoints.size()},
           {"final_state_hash", r.final_state_hash}};
 }
 

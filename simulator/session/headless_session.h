@@ -9,6 +9,8 @@
 
 #include "core/progress.h"
 #include "core/scenario/scenario.h"
+#include "simulator/session/instrument_input.h"
+#include "simulator/session/session_metrics.h"
 
 namespace viscera::sim {
 
@@ -17,6 +19,13 @@ struct HeadlessRunOptions {
   double duration = 2.0;           ///< simulated seconds
   double sample_interval = 0.01;   ///< s between energy samples
   std::string package;             ///< package path, recorded in the report
+  /// When set, a haptic instrument whose tip follows this input presses on the body of object
+  /// `instrument_body` with a proxy spring of `instrument_stiffness` N/m.
+  const InstrumentInput* instrument = nullptr;
+  std::string instrument_body;
+  double instrument_stiffness = 200.0;
+  long long checkpoint_interval = 100;  ///< physics steps between state hashes (for replay)
+  bool record_inputs = false;           ///< keep the tip of every step in the report
 };
 
 /// One energy sample. Energies in J, displacement in m.
@@ -63,6 +72,10 @@ struct SessionReport {
   std::vector<BodySummary> bodies;
   std::vector<TaskResult> tasks;
   std::string final_state_hash;
+  bool has_instrument = false;
+  SessionMetrics metrics;                                   ///< of the instrument, when there is one
+  std::vector<std::pair<long long, std::string>> checkpoints;  ///< (step, state hash)
+  std::vector<core::Vec3> inputs;                           ///< tip of step 0 … steps, when recorded
 };
 
 /// Runs `scenario` headless for options.duration seconds. Tasks of kind "settle" complete when

@@ -46,6 +46,8 @@ class World {
   /// Force in N that the tissue puts on the instrument (zero without contact or instrument).
   core::Vec3 instrument_force() const { return instrument_ ? instrument_->proxy.force() : core::Vec3::Zero(); }
   bool instrument_in_contact() const { return instrument_ && instrument_->proxy.in_contact(); }
+  /// The tip position the instrument was last moved to, in m.
+  const core::Vec3& instrument_tip() const { return tool_tip_; }
 
   /// Contacts of the last sub-step.
   const ContactStatistics& contacts() const { return contacts_; }

@@ -178,3 +178,45 @@ TEST(CliContract, simulator_refuses_a_missing_package_with_exit_3) {
 
 }  // namespace
 }  // namespace viscera
+
+namespace viscera {
+namespace {
+
+TEST(CliContract, recorded_session_replays_identically_and_a_tampered_trace_fails_with_4) {
+  const auto dir = testing::scratch_dir();
+  const auto package = dir / "ball.vscene";
+  ASSERT_EQ(run_program("viscera", std::string(kSmallBall) + " -o " + shell_quote(package.string()), dir).exit_code, 0);
+  // The small ball (radius 2 cm) is pressed from above, 6 mm deep, and released.
+  std::ofstream(dir / "script.json") << R"({"format": "viscera-script", "version": 1, "body": "ball", "stiffness": 200,
+    "waypoints": [{"t": 0, "tip": [0, 0, 0.03]}, {"t": 0.3, "tip": [0, 0, 0.012]}, {"t": 0.5, "tip": [0, 0, 0.03]}]})";
+  const auto trace = dir / "trace.json";
+  auto result = run_program("viscera-sim",
+                            "run " + shell_quote(package.string()) + " --headless --script " +
+                                shell_quote((dir / "script.json").string()) + " --record " + shell_quote(trace.string()) +
+                                " --json",
+                            dir);
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const auto report = nlohmann::json::parse(result.out);
+  EXPECT_GE(report["instrument"]["contacts"].get<int>(), 1);
+  EXPECT_GT(report["instrument"]["max_force"].get<double>(), 0.0);
+
+  result = run_program("viscera-sim", "replay " + shell_quote(trace.string()) + " --headless", dir);
+  EXPECT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_NE(result.out.find("replay identical"), std::string::npos) << result.out;
+
+  auto tampered = nlohmann::json::parse(read_text(trace));
+  tampered["tips"][250][2] = tampered["tips"][250][2].get<double>() + 1e-9;
+  std::ofstream(dir / "tampered.json") << tampered.dump();
+  result = run_program("viscera-sim", "replay " + shell_quote((dir / "tampered.json").string()), dir);
+  EXPECT_EQ(result.exit_code, 4) << result.out << result.err;
+  EXPECT_NE(result.err.find("replay departs from the recording at step"), std::string::npos) << result.err;
+
+  std::ofstream(dir / "bad.json") << R"({"format": "viscera-script", "version": 1, "body": "ball", "waypoints": []})";
+  result = run_program("viscera-sim", "run " + shell_quote(package.string()) + " --headless --script " +
+                                          shell_quote((dir / "bad.json").string()), dir);
+  EXPECT_EQ(result.exit_code, 3) << result.err;  // an invalid script is invalid input
+  EXPECT_NE(result.err.find("/waypoints"), std::string::npos) << result.err;
+}
+
+}  // namespace
+}  // namespace viscera

@@ -1,0 +1,126 @@
+#include <gtest/gtest.h>
+
+#include "core/error.h"
+#include "simulator/session/headless_session.h"
+#include "simulator/session/instrument_input.h"
+#include "simulator/session/session_trace.h"
+#include "tests/simulator/sim_fixtures.h"
+
+namespace viscera::sim {
+namespace {
+
+/// A 4 × 4 × 2 cm block held at its base, top face at z = 2 cm.
+core::Scenario block() {
+  core::Scenario scenario;
+  core::Material material;
+  material.id = "soft";
+  material.distance_stiffness = 20000.0;
+  material.volume_stiffness = 20000.0;
+  material.distance_damping = 50.0;
+  scenario.materials[material.id] = material;
+  core::SceneObject body;
+  body.id = "block";
+  body.material = "soft";
+  body.body_kind = core::BodyKind::TetMesh;
+  body.body = viscera::testing::tet_block(4, 4, 2, 0.01);
+  body.body.fixed.assign(body.body.nodes.size(), 0);
+  for (std::size_t n = 0; n < body.body.nodes.size(); ++n) body.body.fixed[n] = body.body.nodes[n].z() < 1e-9;
+  scenario.objects.push_back(body);
+  return scenario;
+}
+
+nlohmann::json script(const std::vector<std::pair<double, core::Vec3>>& waypoints) {
+  nlohmann::json points = nlohmann::json::array();
+  for (const auto& [t, tip] : waypoints) points.push_back({{"t", t}, {"tip", {tip.x(), tip.y(), tip.z()}}});
+  return {{"format", "viscera-script"}, {"version", 1}, {"body", "block"}, {"stiffness", 200.0}, {"waypoints", points}};
+}
+
+SessionReport run_script(const ScriptedTrajectory& trajectory, bool record = false) {
+  HeadlessRunOptions options;
+  options.duration = trajectory.duration();
+  options.instrument = &trajectory;
+  options.instrument_body = trajectory.body();
+  options.instrument_stiffness = trajectory.stiffness();
+  options.record_inputs = record;
+  return run_headless(block(), options);
+}
+
+TEST(ScriptedTrajectory, interpolates_between_waypoints_and_names_bad_ones) {
+  const auto trajectory = ScriptedTrajectory::from_json(script({{0.0, {0, 0, 0.05}}, {1.0, {0, 0, 0.01}}}), "s.json");
+  EXPECT_TRUE(trajectory.tip(0, 0.25).isApprox(core::Vec3(0, 0, 0.04)));
+  EXPECT_TRUE(trajectory.tip(0, 7.0).isApprox(core::Vec3(0, 0, 0.01)));
+  try {
+    ScriptedTrajectory::from_json(script({{0.0, {0, 0, 0}}, {0.0, {0, 0, 1}}}), "s.json");
+    FAIL() << "non-increasing times accepted";
+  } catch (const core::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("s.json: /waypoints/1"), std::string::npos) << e.what();
+  }
+}
+
+TEST(ScriptedSession, expert_and_novice_separate_on_every_metric) {
+  const core::Vec3 above(0.021, 0.019, 0.04), target(0.021, 0.019, 0.016);
+  // Expert: straight down to 4 mm depth, hold, straight back out.
+  const auto expert = ScriptedTrajectory::from_json(script({{0.0, above}, {0.4, target}, {0.6, target}, {1.0, above}}), "e");
+  // Novice: wanders, prods three times, presses deeper.
+  const auto novice = ScriptedTrajectory::from_json(
+      script({{0.0, above + core::Vec3(0.01, 0, 0)}, {0.15, {0.03, 0.01, 0.013}}, {0.3, {0.01, 0.03, 0.03}},
+              {0.45, {0.012, 0.025, 0.012}}, {0.6, {0.03, 0.03, 0.03}}, {0.75, {0.025, 0.012, 0.011}}, {1.0, above}}),
+      "n");
+  const SessionReport e = run_script(expert), n = run_script(novice);
+  ASSERT_TRUE(e.has_instrument && n.has_instrument);
+  EXPECT_LT(e.metrics.path_length(), n.metrics.path_length());
+  EXPECT_LT(e.metrics.contacts(), n.metrics.contacts());
+  EXPECT_LT(e.metrics.max_force(), n.metrics.max_force());
+  EXPECT_GT(e.metrics.contact_time(), 0.0);
+  EXPECT_EQ(e.metrics.contacts(), 1);
+  EXPECT_GE(n.metrics.contacts(), 3);
+  // Economy over the in-and-out path is low for both; the straight half-path is economical.
+  const auto in_only = ScriptedTrajectory::from_json(script({{0.0, above}, {0.4, target}}), "i");
+  EXPECT_NEAR(run_script(in_only).metrics.economy(), 1.0, 1e-9);
+}
+
+TEST(ScriptedSession, recorded_tips_replay_to_the_same_checkpoints) {
+  const core::Vec3 above(0.021, 0.019, 0.04), target(0.021, 0.019, 0.015);
+  const auto trajectory = ScriptedTrajectory::from_json(script({{0.0, above}, {0.3, target}, {0.5, above}}), "s");
+  const SessionReport recorded = run_script(trajectory, true);
+  ASSERT_EQ(recorded.inputs.size(), static_cast<std::size_t>(recorded.steps + 1));
+  ASSERT_FALSE(recorded.checkpoints.empty());
+  const RecordedInput input(recorded.inputs);
+  HeadlessRunOptions options;
+  options.duration = trajectory.duration();
+  options.instrument = &input;
+  options.instrument_body = "block";
+  options.instrument_stiffness = trajectory.stiffness();
+  const SessionReport replayed = run_headless(block(), options);
+  EXPECT_EQ(replayed.checkpoints, recorded.checkpoints);
+  EXPECT_EQ(replayed.final_state_hash, recorded.final_state_hash);
+  // A nanometre on one tip during contact changes the state.
+  std::vector<core::Vec3> nudged = recorded.inputs;
+  nudged[250].z() += 1e-9;
+  const RecordedInput nudged_input(nudged);
+  options.instrument = &nudged_input;
+  EXPECT_NE(run_headless(block(), options).final_state_hash, recorded.final_state_hash);
+}
+
+TEST(SessionTrace, round_trips_through_json_exactly) {
+  SessionTrace trace;
+  trace.package = "/tmp/p.vscene";
+  trace.manifest_sha256 = std::string(64, 'a');
+  trace.duration = 1.5;
+  trace.body = "ball";
+  trace.stiffness = 200.0;
+  trace.checkpoint_interval = 100;
+  trace.tips = {{0.1, 0.2, 0.30000000000000004}, {1e-17, -3.0, 2.5}};
+  trace.checkpoints = {{100, "x"}, {200, "y"}};
+  trace.final_state_hash = "z";
+  const SessionTrace back = trace_from_json(nlohmann::json::parse(trace_to_json(trace).dump()), "t.json");
+  EXPECT_EQ(back.tips, trace.tips);
+  EXPECT_EQ(back.checkpoints, trace.checkpoints);
+  EXPECT_EQ(back.manifest_sha256, trace.manifest_sha256);
+  nlohmann::json broken = trace_to_json(trace);
+  broken.erase("tips");
+  EXPECT_THROW(trace_from_json(broken, "t.json"), core::ValidationError);
+}
+
+}  // namespace
+}  // namespace viscera::sim

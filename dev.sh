@@ -9,6 +9,8 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 build="${VISCERA_BUILD_DIR:-$root/build}"
 jobs="$(nproc 2>/dev/null || echo 2)"
+# ccache keys on paths relative to the checkout, so every clone (CI's included) shares hits.
+export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$root}"
 
 # Debian 12 packages the product, its tests and its benchmarks need (BUILD_NOTES.md).
 packages=(
@@ -20,6 +22,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev libnoise-dev libbullet-dev
   libopenmpi-dev openmpi-bin
   xvfb xauth libgl1-mesa-dri
+  python3-nibabel python3-pydicom libcgal-demo  # real DICOM/NIfTI/MINC/INR test images
 )
 
 say() { printf '\033[1m==> %s\033[0m\n' "$*" >&2; }

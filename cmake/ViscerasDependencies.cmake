@@ -24,9 +24,20 @@ find_package(VTK 9.1 REQUIRED COMPONENTS
   CommonCore CommonDataModel CommonExecutionModel CommonMath CommonTransforms
   IOXML IOLegacy IOGeometry IOImage
   FiltersCore FiltersGeneral FiltersGeometry
-  ImagingCore
+  ImagingCore ImagingGeneral ImagingMorphological ImagingSources IOMINC
   GUISupportQt RenderingCore RenderingOpenGL2 RenderingVolumeOpenGL2 InteractionStyle
   ChartsCore ViewsContext2D RenderingContextOpenGL2 IOOggTheora)
+
+# DICOM through GDCM's VTK reader (BUILD_NOTES.md). GDCMConfig.cmake does not load the
+# GDCM::vtkgdcm target itself; its file sits beside the config and needs VTK found first.
+find_package(GDCM REQUIRED)
+if(NOT TARGET GDCM::vtkgdcm)
+  include(${GDCM_DIR}/GDCM-targets.cmake)
+endif()
+
+# CGAL Mesh_3's parallel mode (CGAL::Parallel_tag) runs on TBB.
+find_package(TBB REQUIRED)
+include(CGAL_TBB_support)
 
 # gmsh ships no CMake config (BUILD_NOTES.md).
 find_library(GMSH_LIBRARY gmsh REQUIRED)

@@ -62,6 +62,7 @@ void publish(const SessionReport& report, const std::string& report_dir, bool as
     std::cout << "instrument path " << report.metrics.path_length() << " m, " << report.metrics.contacts()
               << " contacts, max force " << report.metrics.max_force() << " N\n";
   }
+  for (const auto& event : report.events) std::cout << event.time << " s  " << event.kind << ": " << event.message << "\n";
   std::cout << "final state hash " << report.final_state_hash << "\n";
   if (!report_path.empty()) std::cout << "report " << report_path << "\n";
 }
@@ -82,6 +83,8 @@ int run(const RunOptions& options) {
     run.instrument = &*script;
     run.instrument_body = script->body();
     run.instrument_stiffness = script->stiffness();
+    run.perforation_depth = script->perforation_depth();
+    run.force_warning = script->force_warning();
     if (options.duration <= 0.0) run.duration = script->duration();
   }
   run.record_inputs = !options.record.empty();

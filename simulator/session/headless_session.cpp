@@ -82,6 +82,7 @@ SessionReport run_headless(const core::Scenario& scenario, const HeadlessRunOpti
     }
   };
   sample();
+  bool over_force = false;
   for (long long s = 1; s <= total_steps; ++s) {
     if (options.instrument != nullptr) {
       const core::Vec3 tip = options.instrument->tip(s, world.time() + world.time_step());
@@ -89,14 +90,33 @@ SessionReport run_headless(const core::Scenario& scenario, const HeadlessRunOpti
       if (options.record_inputs) report.inputs.push_back(tip);
     }
     world.step();
+    bool perforated = false;
     if (options.instrument != nullptr) {
-      report.metrics.record(world.instrument_tip(), world.instrument_force(), world.instrument_in_contact(), world.time_step());
+      const core::Vec3 force = world.instrument_force();
+      report.metrics.record(world.instrument_tip(), force, world.instrument_in_contact(), world.time_step());
+      // The proxy stays on the surface: its distance to the tip is how deep the tool pushes.
+      const double depth = force.norm() / options.instrument_stiffness;
+      if (options.perforation_depth > 0.0 && depth > options.perforation_depth) {
+        report.events.push_back({world.time(), "perforation",
+                                 "the tool went " + std::to_string(depth * 1000.0) + " mm into the wall, past its " +
+                                     std::to_string(options.perforation_depth * 1000.0) + " mm"});
+        report.end_reason = "perforation";
+        perforated = true;
+      }
+      const bool excessive = options.force_warning > 0.0 && force.norm() > options.force_warning;
+      if (excessive && !over_force) {
+        report.events.push_back({world.time(), "excessive-force",
+                                 "force " + std::to_string(force.norm()) + " N above the " +
+                                     std::to_string(options.force_warning) + " N warning level"});
+      }
+      over_force = excessive;
     }
     if (options.checkpoint_interval > 0 && s % options.checkpoint_interval == 0) {
       report.checkpoints.emplace_back(s, world.state_hash());
     }
-    if (s % sample_every == 0 || s == total_steps) sample();
+    if (s % sample_every == 0 || s == total_steps || perforated) sample();
     progress.step();
+    if (perforated) break;
   }
 
   report.steps = world.steps();
@@ -150,6 +170,8 @@ nlohmann::json report_to_json(const SessionReport& r) {
     if (!t.note.empty()) task["note"] = t.note;
     tasks.push_back(task);
   }
+  nlohmann::json events = nlohmann::json::array();
+  for (const auto& e : r.events) events.push_back({{"time", e.time}, {"kind", e.kind}, {"message", e.message}});
   return {{"format", "viscera-session-report"},
           {"version", 1},
           {"package", r.package},
@@ -166,6 +188,8 @@ nlohmann::json report_to_json(const SessionReport& r) {
           {"bodies", bodies},
           {"tasks", tasks},
           {"instrument", r.has_instrument ? r.metrics.to_json() : nlohmann::json(nullptr)},
+          {"end_reason", r.end_reason},
+          {"events", events},
           {"checkpoints", r.checkpoints.size()},
           {"final_state_hash", r.final_state_hash}};
 }

@@ -26,6 +26,18 @@ struct HeadlessRunOptions {
   double instrument_stiffness = 200.0;
   long long checkpoint_interval = 100;  ///< physics steps between state hashes (for replay)
   bool record_inputs = false;           ///< keep the tip of every step in the report
+  /// Complications (issue 8): the tool pushed further than this (m) into tissue perforates the
+  /// wall and ends the session; 0 disables. Forces above `force_warning` (N) are logged as
+  /// warnings, one per episode.
+  double perforation_depth = 0.0;
+  double force_warning = 0.0;
+};
+
+/// Something that happened during a session, at a time in s.
+struct SessionEvent {
+  double time = 0.0;
+  std::string kind;     ///< "perforation" (ends the session) or "excessive-force"
+  std::string message;
 };
 
 /// One energy sample. Energies in J, displacement in m.
@@ -76,6 +88,8 @@ struct SessionReport {
   SessionMetrics metrics;                                   ///< of the instrument, when there is one
   std::vector<std::pair<long long, std::string>> checkpoints;  ///< (step, state hash)
   std::vector<core::Vec3> inputs;                           ///< tip of step 0 … steps, when recorded
+  std::vector<SessionEvent> events;
+  std::string end_reason = "duration";  ///< "duration" or "perforation"
 };
 
 /// Runs `scenario` headless for options.duration seconds. Tasks of kind "settle" complete when

@@ -22,6 +22,10 @@ ScriptedTrajectory ScriptedTrajectory::from_json(const nlohmann::json& json, con
   if (script.body_.empty()) fail("/body", "names no body for the instrument to touch");
   script.stiffness_ = json.value("stiffness", 200.0);
   if (!(script.stiffness_ > 0.0)) fail("/stiffness", "stiffness must be positive (N/m)");
+  script.perforation_depth_ = json.value("perforation_depth", 0.0);
+  if (!(script.perforation_depth_ >= 0.0)) fail("/perforation_depth", "perforation depth must be ≥ 0 (m)");
+  script.force_warning_ = json.value("force_warning", 0.0);
+  if (!(script.force_warning_ >= 0.0)) fail("/force_warning", "force warning level must be ≥ 0 (N)");
   const auto waypoints = json.find("waypoints");
   if (waypoints == json.end() || !waypoints->is_array() || waypoints->empty()) fail("/waypoints", "needs at least one waypoint");
   for (std::size_t i = 0; i < waypoints->size(); ++i) {

@@ -36,12 +36,18 @@ class ScriptedTrajectory final : public InstrumentInput {
 
   const std::string& body() const { return body_; }
   double stiffness() const { return stiffness_; }
+  /// Wall thickness in m past which the tool perforates (0: no check) and force warning level
+  /// in N (0: none), from the script's optional "perforation_depth" and "force_warning".
+  double perforation_depth() const { return perforation_depth_; }
+  double force_warning() const { return force_warning_; }
   /// Time of the last waypoint in s.
   double duration() const { return times_.back(); }
 
  private:
   std::string body_;
   double stiffness_ = 200.0;
+  double perforation_depth_ = 0.0;
+  double force_warning_ = 0.0;
   std::vector<double> times_;
   std::vector<core::Vec3> tips_;
 };

@@ -1,0 +1,51 @@
+#pragma once
+/// Shared steps of the volume readers: the memory budget check made from a header before any
+/// allocation, copying VTK voxels into an ImageVolume, and setting geometry from a voxel-to-
+/// world affine given in millimetres (converted to metres, RAS converted to LPS).
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/image/image_volume.h"
+#include "importers/volume/volume_reader.h"
+
+class vtkImageData;
+class vtkImageReader2;
+
+namespace viscera::importers::detail {
+
+/// Throws core::InputError naming `file` when dims are not positive or dims × components ×
+/// bytes_per_component exceeds options.max_bytes ("header claims 100000×…").
+void check_voxel_budget(const std::array<std::int64_t, 3>& dims, std::int64_t components,
+                        std::int64_t bytes_per_component, const VolumeReadOptions& options,
+                        const std::string& file);
+
+/// Runs UpdateInformation() on `reader` and checks its whole extent, component count and
+/// scalar size against the budget; throws core::InputError naming `file` if the header
+/// cannot be read.
+void check_reader_budget(vtkImageReader2& reader, const VolumeReadOptions& options,
+                         const std::string& file);
+
+/// Copies the voxels of `image` (dims and values only; geometry is the caller's). Types with
+/// no ImageVolume twin are widened (int8 → int16, uint32/int64 → float64); 3 or 4 components
+/// become luminance (Rec. 601 weights), any other count keeps the first component and adds a
+/// note. Throws core::InputError naming `file` if the image holds no voxels.
+core::ImageVolume volume_from_vtk_image(vtkImageData& image, const std::string& file,
+                                        std::vector<std::string>& notes);
+
+/// Sets spacing, direction and origin from an affine in millimetres: columns of `axes` are the
+/// world steps of +i, +j, +k, `origin` the world centre of voxel (0,0,0). With `ras`, x and y
+/// are negated (RAS → LPS). Results in metres.
+void set_geometry_mm(core::ImageVolume& volume, const core::Mat3& axes, const core::Vec3& origin,
+                     bool ras);
+
+/// value ← slope·value + intercept, converting to float32 (no-op for slope 1, intercept 0, or
+/// slope 0 which files use for "no scaling").
+void apply_rescale(core::ImageVolume& volume, double slope, double intercept);
+
+/// Throws core::InputError naming `file` if any voxel is NaN or infinite.
+void check_finite(const core::ImageVolume& volume, const std::string& file);
+
+}  // namespace viscera::importers::detail

@@ -1,0 +1,26 @@
+#pragma once
+/// Checks that a mesh read from a file is fit for the studio and the simulator: the defects that
+/// no later step can repair silently are refused with the file and the element named.
+
+#include <string>
+
+#include "core/mesh/surface_mesh.h"
+#include "core/mesh/tet_mesh.h"
+
+namespace viscera::importers {
+
+/// Checks a surface, its vertices joined by position first (so that copies made for UV seams or
+/// per-face normals count as one): finite coordinates and attributes, no triangle with two
+/// corners at the same position or with collinear corners, no edge shared by more than two
+/// triangles, no vertex whose triangles form several fans (non-manifold vertex), and no two
+/// triangles that intersect other than at shared edges or corners
+/// (CGAL::Polygon_mesh_processing::self_intersections, exact predicates). Open borders and
+/// several components are allowed. Throws core::InputError naming `file`, the element and the
+/// defect.
+void check_surface_integrity(const core::SurfaceMesh& mesh, const std::string& file);
+
+/// Checks a tetrahedral mesh beyond core::check_tet_mesh: no triangle shared by more than two
+/// tetrahedra. Throws core::InputError naming `file` and the face.
+void check_tet_mesh_integrity(const core::TetMesh& mesh, const std::string& file);
+
+}  // namespace viscera::importers

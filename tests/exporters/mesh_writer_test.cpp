@@ -24,8 +24,10 @@ TEST_P(MeshRoundTrip, keeps_topology_area_and_volume) {
   EXPECT_EQ(back.vertices.size(), sphere.vertices.size());
   EXPECT_TRUE(core::is_closed_and_consistently_oriented(back));
   // Files store single precision: compare measured quantities to float accuracy.
-  EXPECT_NEAR(core::surface_area(back), core::surface_area(sphere), 1e-6 * core::surface_area(sphere));
-  EXPECT_NEAR(core::enclosed_volume(back), core::enclosed_volume(sphere), 1e-6 * core::enclosed_volume(sphere));
+  EXPECT_NEAR(core::surface_area(back), core::surface_area(sphere),
+              1e-6 * core::surface_area(sphere));
+  EXPECT_NEAR(core::enclosed_volume(back), core::enclosed_volume(sphere),
+              1e-6 * core::enclosed_volume(sphere));
   // No staging folder or partial file is left beside the result.
   int files = 0;
   for (const auto& entry : std::filesystem::directory_iterator(dir)) {
@@ -58,7 +60,8 @@ TEST(MeshWriter, refuses_unknown_extension_and_empty_mesh) {
 TEST(MeshReader, names_the_file_when_it_is_garbage) {
   const auto dir = viscera::testing::scratch_dir();
   const auto path = dir / "broken.ply";
-  std::ofstream(path) << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nend_header\n1\n";
+  std::ofstream(path)
+      << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nend_header\n1\n";
   try {
     importers::read_mesh(path);
     FAIL() << "garbage accepted";

@@ -32,7 +32,7 @@ class GmshScanner {
   void check_claim(std::uint64_t count, std::size_t bytes_each, const std::string& what) const {
     if (count > remaining() / bytes_each) {
       fail("the header claims " + std::to_string(count) + " " + what +
-           " but the file is too short to hold them");
+           " but the file ends before them");
     }
   }
 

@@ -160,31 +160,31 @@ fs::path gmsh_tutorial_mesh(const std::string& tutorial, const std::string& argu
   fs::create_directories(dir);
   const fs::path out = dir / name;
   if (fs::exists(out)) return out;
-  fs::path geo = docs / (tutorial + ".geo");
-  if (!fs::exists(geo)) {
-    const fs::path packed = docs / (tutorial + ".geo.gz");
-    if (!fs::exists(packed)) {
-      ADD_FAILURE() << packed
-                    << " is missing: install the Debian package gmsh-doc (dev.sh lists it)";
-      return {};
-    }
-    geo = dir / (private_name(tutorial) + ".geo");
-    std::string err;
-    EXPECT_EQ(
-        run_shell("gzip -dc " + shell_quote(packed.string()) + " > " + shell_quote(geo.string()),
-                  dir, err),
-        0)
-        << err;
+  if (!fs::exists(docs / (tutorial + ".geo")) && !fs::exists(docs / (tutorial + ".geo.gz"))) {
+    ADD_FAILURE() << docs / tutorial
+                  << ".geo is missing: install the Debian package gmsh-doc (dev.sh lists it)";
+    return {};
   }
-  // gmsh writes the file itself; a private name keeps a half-written mesh from being reused.
-  const fs::path staged = dir / (private_name(name) + fs::path(name).extension().string());
+  // The tutorials include each other ("t3.geo" includes "t1.geo"): unpack them all, under their
+  // own names, into a folder of this process.
+  const fs::path work = dir / private_name("tutorials");
+  fs::create_directories(work);
   std::string err;
-  const int code = run_shell("gmsh " + shell_quote(geo.string()) + " " + arguments + " -o " +
-                                 shell_quote(staged.string()) + " -v 1 >/dev/null",
-                             dir, err);
+  EXPECT_EQ(
+      run_shell("cp " + shell_quote(docs.string()) + "/t*.geo* " + shell_quote(work.string()) +
+                    " && gzip -df " + shell_quote(work.string()) + "/*.gz",
+                dir, err),
+      0)
+      << err;
+  // gmsh writes the file itself; a private name keeps a half-written mesh from being reused.
+  const fs::path staged = work / name;
+  const int code =
+      run_shell("cd " + shell_quote(work.string()) + " && gmsh " + tutorial + ".geo " + arguments +
+                    " -o " + shell_quote(staged.string()) + " -v 1 >/dev/null",
+                dir, err);
   EXPECT_EQ(code, 0) << "gmsh (Debian package gmsh) failed: " << err;
   if (code == 0) fs::rename(staged, out);
-  if (geo.parent_path() == dir) fs::remove(geo);
+  fs::remove_all(work);
   return out;
 }
 

@@ -1,16 +1,17 @@
 #include "importers/mesh/vtk_mesh_file.h"
 
-#include <vtkCallbackCommand.h>
 #include <vtkCellData.h>
 #include <vtkCellType.h>
 #include <vtkDataSetSurfaceFilter.h>
 #include <vtkGenericCell.h>
 #include <vtkGenericDataObjectReader.h>
 #include <vtkIdList.h>
+#include <vtkLogger.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
+#include <vtkStringOutputWindow.h>
 #include <vtkTriangleFilter.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLPolyDataReader.h>
@@ -19,24 +20,53 @@
 #include <algorithm>
 
 #include "core/error.h"
-#include "core/vtk_silence.h"
 #include "importers/mesh/no_tetrahedra_error.h"
 
 namespace viscera::importers {
 namespace {
 
-/// Keeps the first error VTK reports, without its "ERROR: In <source>, line N" preamble.
-void keep_first_error(vtkObject*, unsigned long, void* client_data, void* call_data) {
-  auto& first = *static_cast<std::string*>(client_data);
-  if (!first.empty() || call_data == nullptr) return;
-  std::string text(static_cast<const char*>(call_data));
-  if (const auto at = text.find("): "); at != std::string::npos) text = text.substr(at + 3);
-  while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
-    text.pop_back();
-  if (const auto newline = text.find('\n'); newline != std::string::npos)
-    text = text.substr(0, newline);
-  first = text.empty() ? "unknown error" : text;
-}
+/// The first error VTK reports anywhere while it lives (the reader or the parsers and streams it
+/// creates), without its "ERROR: In <source>, line N" preamble; nothing reaches the terminal.
+/// Global VTK state, like core::ScopedVtkSilence: not for concurrent use from several threads.
+class VtkErrorCapture {
+ public:
+  VtkErrorCapture()
+      : previous_(vtkOutputWindow::GetInstance()),
+        display_(vtkObject::GetGlobalWarningDisplay()),
+        stderr_verbosity_(vtkLogger::GetCurrentVerbosityCutoff()) {
+    vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+    previous_->Register(nullptr);
+    capture_->SetDisplayModeToAlways();  // to the capture, not to vtkLogger on the terminal
+    vtkOutputWindow::SetInstance(capture_);
+    vtkObject::GlobalWarningDisplayOn();
+  }
+  ~VtkErrorCapture() {
+    vtkOutputWindow::SetInstance(previous_);
+    previous_->UnRegister(nullptr);
+    vtkObject::SetGlobalWarningDisplay(display_);
+    vtkLogger::SetStderrVerbosity(stderr_verbosity_);
+  }
+  VtkErrorCapture(const VtkErrorCapture&) = delete;
+  VtkErrorCapture& operator=(const VtkErrorCapture&) = delete;
+
+  /// The first error's message, or empty.
+  std::string first_error() {
+    std::string text = capture_->GetOutput();
+    const auto error = text.find("ERROR");
+    if (error == std::string::npos) return {};
+    text = text.substr(error);
+    if (const auto at = text.find("): "); at != std::string::npos) text = text.substr(at + 3);
+    if (const auto newline = text.find('\n'); newline != std::string::npos)
+      text = text.substr(0, newline);
+    return text.empty() ? "unknown error" : text;
+  }
+
+ private:
+  vtkNew<vtkStringOutputWindow> capture_;
+  vtkOutputWindow* previous_;
+  int display_;
+  vtkLogger::Verbosity stderr_verbosity_;
+};
 
 std::string lower_extension(const std::filesystem::path& path) {
   std::string extension = path.extension().string();
@@ -66,13 +96,10 @@ vtkSmartPointer<vtkDataSet> read_dataset(const std::filesystem::path& path) {
     reader = legacy;
   }
   std::string error;
-  vtkNew<vtkCallbackCommand> catcher;
-  catcher->SetCallback(keep_first_error);
-  catcher->SetClientData(&error);
-  reader->AddObserver(vtkCommand::ErrorEvent, catcher);
   {
-    const core::ScopedVtkSilence silence;  // reported once below, as a typed error
+    VtkErrorCapture capture;  // reported once below, as a typed error
     reader->Update();
+    error = capture.first_error();
   }
   if (!error.empty()) throw core::InputError("VTK cannot read the file: " + error, {file, "", ""});
   vtkSmartPointer<vtkDataSet> data = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0));

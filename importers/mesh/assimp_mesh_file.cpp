@@ -6,6 +6,7 @@
 #include <assimp/Importer.hpp>
 
 #include "core/error.h"
+#include "importers/mesh/mesh_integrity.h"
 
 namespace viscera::importers {
 
@@ -15,12 +16,10 @@ core::SurfaceMesh read_assimp_surface(const std::filesystem::path& path) {
     throw core::InputError("no such file", {file, "", ""});
   }
   Assimp::Importer importer;
-  // Triangulate polygons, bake node transforms, join duplicated vertices (STL stores each
-  // triangle's corners separately), and drop points and lines.
+  // Triangulate polygons, bake node transforms, check indices, and drop points and lines.
   importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
                               aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-  unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
-                   aiProcess_PreTransformVertices | aiProcess_SortByPType |
+  unsigned flags = aiProcess_Triangulate | aiProcess_PreTransformVertices | aiProcess_SortByPType |
                    aiProcess_ValidateDataStructure;
   // STL gives each triangle corner its face normal, which keeps corners apart when vertices
   // are joined; drop those normals and compute smooth ones from the welded mesh instead.
@@ -65,6 +64,9 @@ core::SurfaceMesh read_assimp_surface(const std::filesystem::path& path) {
     }
   }
   if (mesh.triangles.empty()) throw core::InputError("file holds no triangles", {file, "", ""});
+  // Corners are joined here, exactly: assimp's aiProcess_JoinIdenticalVertices uses a tolerance
+  // of the bounding box that merges distinct corners of small meshes into pinches.
+  join_identical_vertices(mesh);
   if (facet_normals_only) core::compute_vertex_normals(mesh);
   return mesh;
 }

@@ -23,32 +23,6 @@ std::string triangle_name(std::size_t t) {
   return "triangle " + std::to_string(t);
 }
 
-/// Index of every vertex's first copy at the same position: sorting keeps it O(n log n) and
-/// exact (no tolerance: only identical coordinates are the same point).
-std::vector<int> weld_by_position(const std::vector<core::Vec3>& vertices) {
-  std::vector<int> order(vertices.size());
-  std::iota(order.begin(), order.end(), 0);
-  const auto less = [&](int a, int b) {
-    const auto& p = vertices[static_cast<std::size_t>(a)];
-    const auto& q = vertices[static_cast<std::size_t>(b)];
-    if (p.x() != q.x()) return p.x() < q.x();
-    if (p.y() != q.y()) return p.y() < q.y();
-    if (p.z() != q.z()) return p.z() < q.z();
-    return a < b;
-  };
-  std::sort(order.begin(), order.end(), less);
-  std::vector<int> first(vertices.size());
-  for (std::size_t i = 0; i < order.size(); ++i) {
-    const int v = order[i];
-    first[static_cast<std::size_t>(v)] =
-        i > 0 && vertices[static_cast<std::size_t>(order[i - 1])] ==
-                     vertices[static_cast<std::size_t>(v)]
-            ? first[static_cast<std::size_t>(order[i - 1])]
-            : v;
-  }
-  return first;
-}
-
 void check_finite(const core::SurfaceMesh& mesh, const std::string& file) {
   core::check_surface_mesh(mesh, file);
   for (std::size_t i = 0; i < mesh.normals.size(); ++i) {
@@ -155,9 +129,74 @@ void check_self_intersections(const std::vector<core::Vec3>& vertices,
 
 }  // namespace
 
+// Sorting keeps it O(n log n).
+std::vector<int> first_copy_by_position(const std::vector<core::Vec3>& vertices) {
+  std::vector<int> order(vertices.size());
+  std::iota(order.begin(), order.end(), 0);
+  const auto less = [&](int a, int b) {
+    const auto& p = vertices[static_cast<std::size_t>(a)];
+    const auto& q = vertices[static_cast<std::size_t>(b)];
+    if (p.x() != q.x()) return p.x() < q.x();
+    if (p.y() != q.y()) return p.y() < q.y();
+    if (p.z() != q.z()) return p.z() < q.z();
+    return a < b;
+  };
+  std::sort(order.begin(), order.end(), less);
+  std::vector<int> first(vertices.size());
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    const int v = order[i];
+    first[static_cast<std::size_t>(v)] =
+        i > 0 && vertices[static_cast<std::size_t>(order[i - 1])] ==
+                     vertices[static_cast<std::size_t>(v)]
+            ? first[static_cast<std::size_t>(order[i - 1])]
+            : v;
+  }
+  return first;
+}
+
+void join_identical_vertices(core::SurfaceMesh& mesh) {
+  const std::size_t n = mesh.vertices.size();
+  const auto key = [&](std::size_t v) {
+    std::array<double, 8> k{};
+    for (int c = 0; c < 3; ++c)
+      k[static_cast<std::size_t>(c)] = mesh.vertices[v][c];
+    for (int c = 0; c < 3 && !mesh.normals.empty(); ++c)
+      k[static_cast<std::size_t>(3 + c)] = mesh.normals[v][c];
+    for (int c = 0; c < 2 && !mesh.uvs.empty(); ++c)
+      k[static_cast<std::size_t>(6 + c)] = mesh.uvs[v][c];
+    return k;
+  };
+  std::vector<std::size_t> order(n);
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    const auto ka = key(a), kb = key(b);
+    return ka != kb ? ka < kb : a < b;
+  });
+  std::vector<std::size_t> first(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    first[order[i]] = i > 0 && key(order[i - 1]) == key(order[i]) ? first[order[i - 1]] : order[i];
+  }
+  std::vector<int> index(n, -1);
+  core::SurfaceMesh joined;
+  for (std::size_t v = 0; v < n; ++v) {
+    if (first[v] != v) continue;
+    index[v] = static_cast<int>(joined.vertices.size());
+    joined.vertices.push_back(mesh.vertices[v]);
+    if (!mesh.normals.empty()) joined.normals.push_back(mesh.normals[v]);
+    if (!mesh.uvs.empty()) joined.uvs.push_back(mesh.uvs[v]);
+  }
+  for (const auto& t : mesh.triangles) {
+    core::Triangle j;
+    for (int c = 0; c < 3; ++c)
+      j[c] = index[first[static_cast<std::size_t>(t[c])]];
+    joined.triangles.push_back(j);
+  }
+  mesh = std::move(joined);
+}
+
 void check_surface_integrity(const core::SurfaceMesh& mesh, const std::string& file) {
   check_finite(mesh, file);
-  const std::vector<int> weld = weld_by_position(mesh.vertices);
+  const std::vector<int> weld = first_copy_by_position(mesh.vertices);
   std::vector<core::Triangle> welded;
   welded.reserve(mesh.triangles.size());
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {

@@ -3,11 +3,21 @@
 /// no later step can repair silently are refused with the file and the element named.
 
 #include <string>
+#include <vector>
 
 #include "core/mesh/surface_mesh.h"
 #include "core/mesh/tet_mesh.h"
 
 namespace viscera::importers {
+
+/// For every vertex, the index of the first vertex at exactly the same position (itself if none
+/// comes before it). Exact comparison, no tolerance: only identical coordinates are one point.
+std::vector<int> first_copy_by_position(const std::vector<core::Vec3>& vertices);
+
+/// Joins vertices whose position, normal and UV are all exactly equal and drops unused ones:
+/// STL and assimp's OBJ reader store every triangle corner separately. (assimp's own joining
+/// works within a tolerance of the bounding box and merges distinct corners of small meshes.)
+void join_identical_vertices(core::SurfaceMesh& mesh);
 
 /// Checks a surface, its vertices joined by position first (so that copies made for UV seams or
 /// per-face normals count as one): finite coordinates and attributes, no triangle with two

@@ -82,7 +82,6 @@ core::TetMesh read_tet_mesh(const std::filesystem::path& path, LengthUnit unit) 
   }
   core::TetMesh mesh = extension == ".msh" ? gmsh_tet_mesh(read_gmsh_file(path), path.string())
                                            : read_vtk_tet_mesh(path);
-  check_tet_mesh_integrity(mesh, path.string());
   const double factor = metres_per(unit);
   scale(mesh.nodes, factor);
   // Masses are per node and do not scale with length.

@@ -4,6 +4,7 @@
 #include <unordered_map>
 
 #include "core/error.h"
+#include "importers/mesh/mesh_integrity.h"
 #include "importers/mesh/no_tetrahedra_error.h"
 
 namespace viscera::importers {
@@ -139,7 +140,7 @@ core::TetMesh gmsh_tet_mesh(const GmshFile& content, const std::string& file) {
   mesh.tet_labels = std::move(labels);
   core::orient_tets_positively(mesh);
   core::check_tet_mesh(mesh, file);
-  mesh.surface_faces = core::boundary_faces(mesh.tets);
+  mesh.surface_faces = checked_boundary_faces(mesh, file);
   return mesh;
 }
 

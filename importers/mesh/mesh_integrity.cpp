@@ -7,7 +7,6 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
-#include <map>
 #include <numeric>
 #include <unordered_map>
 
@@ -222,20 +221,42 @@ void check_surface_integrity(const core::SurfaceMesh& mesh, const std::string& f
   check_self_intersections(mesh.vertices, welded, file);
 }
 
-void check_tet_mesh_integrity(const core::TetMesh& mesh, const std::string& file) {
-  std::map<std::array<int, 3>, int> face_count;
-  static constexpr int kFaces[4][3] = {{0, 1, 2}, {0, 1, 3}, {0, 2, 3}, {1, 2, 3}};
+std::vector<core::Triangle> checked_boundary_faces(const core::TetMesh& mesh,
+                                                   const std::string& file) {
+  // The faces of a positively oriented tet (a,b,c,d), counter-clockwise from outside (as core).
+  static constexpr int kFaces[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+  struct Face {
+    std::array<int, 3> key;  ///< sorted corners
+    core::Triangle face;
+    std::size_t tet;
+  };
+  std::vector<Face> faces;
+  faces.reserve(4 * mesh.tets.size());
   for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
     for (const auto& f : kFaces) {
-      std::array<int, 3> face = {mesh.tets[t][f[0]], mesh.tets[t][f[1]], mesh.tets[t][f[2]]};
-      std::sort(face.begin(), face.end());
-      if (++face_count[face] > 2) {
-        throw core::InputError(
-            "the mesh is not manifold: a face is shared by more than two tetrahedra",
-            {file, "", "tet " + std::to_string(t)});
-      }
+      Face face{{}, {mesh.tets[t][f[0]], mesh.tets[t][f[1]], mesh.tets[t][f[2]]}, t};
+      face.key = face.face;
+      std::sort(face.key.begin(), face.key.end());
+      faces.push_back(face);
     }
   }
+  std::sort(faces.begin(), faces.end(), [](const Face& a, const Face& b) {
+    return a.key != b.key ? a.key < b.key : a.tet < b.tet;
+  });
+  std::vector<core::Triangle> boundary;
+  for (std::size_t i = 0; i < faces.size();) {
+    std::size_t end = i + 1;
+    while (end < faces.size() && faces[end].key == faces[i].key)
+      ++end;
+    if (end - i > 2) {
+      throw core::InputError(
+          "the mesh is not manifold: a face is shared by more than two tetrahedra",
+          {file, "", "tet " + std::to_string(faces[i + 2].tet)});
+    }
+    if (end - i == 1) boundary.push_back(faces[i].face);
+    i = end;
+  }
+  return boundary;
 }
 
 }  // namespace viscera::importers

@@ -29,8 +29,11 @@ void join_identical_vertices(core::SurfaceMesh& mesh);
 /// defect.
 void check_surface_integrity(const core::SurfaceMesh& mesh, const std::string& file);
 
-/// Checks a tetrahedral mesh beyond core::check_tet_mesh: no triangle shared by more than two
-/// tetrahedra. Throws core::InputError naming `file` and the face.
-void check_tet_mesh_integrity(const core::TetMesh& mesh, const std::string& file);
+/// Checks a positively oriented tetrahedral mesh beyond core::check_tet_mesh (no triangle shared
+/// by more than two tetrahedra) and returns its boundary faces, outward, in the order of
+/// core::boundary_faces (by sorted corner indices) — by sorting instead of a tree, which makes
+/// it several times faster on large meshes. Throws core::InputError naming `file` and a tet.
+std::vector<core::Triangle> checked_boundary_faces(const core::TetMesh& mesh,
+                                                   const std::string& file);
 
 }  // namespace viscera::importers

@@ -20,6 +20,7 @@
 #include <algorithm>
 
 #include "core/error.h"
+#include "importers/mesh/mesh_integrity.h"
 #include "importers/mesh/no_tetrahedra_error.h"
 
 namespace viscera::importers {
@@ -230,7 +231,7 @@ core::TetMesh read_vtk_tet_mesh(const std::filesystem::path& path) {
   }
   core::orient_tets_positively(mesh);
   core::check_tet_mesh(mesh, file);
-  mesh.surface_faces = core::boundary_faces(mesh.tets);
+  mesh.surface_faces = checked_boundary_faces(mesh, file);
   return mesh;
 }
 

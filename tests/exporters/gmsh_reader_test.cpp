@@ -153,6 +153,18 @@ TEST(GmshReader, broken_headers_and_references_are_named) {
   }
 }
 
+TEST(GmshReader, a_face_shared_by_three_tetrahedra_is_refused_as_not_manifold) {
+  const std::string fan =
+      "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n6\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 0 0 "
+      "-1\n6 0.1 0.1 2\n"
+      "$EndNodes\n$Elements\n3\n1 4 0 1 2 3 4\n2 4 0 1 3 2 5\n3 4 0 1 2 3 6\n$EndElements\n";
+  const fs::path path = written("fan.msh", fan);
+  const std::string message = error_of([&] { read_tet_mesh(path); });
+  EXPECT_TRUE(testing::message_has(
+      message, {"fan.msh", "not manifold", "shared by more than two tetrahedra"}))
+      << message;
+}
+
 /// Big-endian bytes of a value, for files written on machines of the other byte order.
 template <typename T>
 std::string big_endian(T value) {

@@ -56,25 +56,48 @@ std::vector<fs::path> StagedOutput::commit() {
   const auto main = std::find(entries.begin(), entries.end(), main_file());
   if (main == entries.end())
     throw core::OutputError("the writer produced no file", {target_.string(), "", ""});
-  std::rotate(entries.begin(), main, main + 1);
+  // Side files first and the main file last, so that a reader who sees the main file finds
+  // everything it names.
+  std::rotate(main, main + 1, entries.end());
+  const fs::path parent = target_.parent_path().empty() ? fs::path(".") : target_.parent_path();
+  // Refuse to replace a folder by a file or a file by a folder: that is not an older export.
+  for (const auto& entry : entries) {
+    const fs::path destination = parent / entry.filename();
+    if (fs::exists(destination) && fs::is_directory(destination) != fs::is_directory(entry)) {
+      throw core::OutputError("cannot replace \"" + destination.string() + "\": it is a " +
+                                  (fs::is_directory(destination) ? "folder" : "file") +
+                                  " of another kind",
+                              {target_.string(), "", ""});
+    }
+  }
+  // Older versions step aside, the new entries move in; on any failure the new ones are removed
+  // and the old ones put back, so the target is either wholly old or wholly new.
+  std::vector<std::pair<fs::path, fs::path>> set_aside;  // destination → backup
   std::vector<fs::path> written;
   try {
     for (const auto& entry : entries) {
-      const fs::path destination = target_.parent_path() / entry.filename();
+      const fs::path destination = parent / entry.filename();
       if (fs::exists(destination)) {
-        const fs::path old = hidden_sibling(destination, ".old-");
-        fs::rename(destination, old);
-        fs::rename(entry, destination);
-        fs::remove_all(old);
-      } else {
-        fs::rename(entry, destination);
+        const fs::path backup = hidden_sibling(destination, ".old-");
+        fs::rename(destination, backup);
+        set_aside.emplace_back(destination, backup);
       }
+      fs::rename(entry, destination);
       written.push_back(destination);
     }
   } catch (const fs::filesystem_error& e) {
+    std::error_code ignored;
+    for (const auto& path : written)
+      fs::remove_all(path, ignored);
+    for (const auto& [destination, backup] : set_aside)
+      fs::rename(backup, destination, ignored);
     throw core::OutputError(std::string("cannot move the export into place: ") + e.what(),
                             {target_.string(), "", ""});
   }
+  std::error_code ignored;
+  for (const auto& [destination, backup] : set_aside)
+    fs::remove_all(backup, ignored);
+  std::rotate(written.rbegin(), written.rbegin() + 1, written.rend());  // the main file first
   return written;
 }
 

@@ -35,6 +35,15 @@ fs::path textured_package(const fs::path& dir) {
   return textured;
 }
 
+TEST(ExportCommand, export_and_mesh_convert_have_help) {
+  const fs::path dir = testing::scratch_dir();
+  for (const char* command : {"export", "mesh convert"}) {
+    const auto result = run_program("viscera", std::string(command) + " --help", dir);
+    EXPECT_EQ(result.exit_code, 0) << command;
+    EXPECT_NE(result.out.find("Usage"), std::string::npos) << command;
+  }
+}
+
 TEST(ExportCommand, writes_every_format_and_each_reads_back) {
   const fs::path dir = testing::scratch_dir();
   const fs::path package = textured_package(dir);

@@ -35,6 +35,25 @@ class Fields {
   bool binary_;
 };
 
+/// The header of $Nodes and $Elements: block count, item count, smallest and largest tag. The
+/// counts are checked against the rest of the file before anything is allocated for them.
+struct SectionHeader {
+  std::uint64_t blocks = 0;
+  std::uint64_t items = 0;
+};
+
+SectionHeader read_header(GmshScanner& scanner, Fields& fields, const char* items,
+                          std::size_t item_fields, const char* blocks) {
+  SectionHeader header;
+  header.blocks = fields.size();
+  header.items = fields.size();
+  fields.size();  // smallest tag
+  fields.size();  // largest tag
+  scanner.check_claim(header.items, item_fields * fields.min_size_bytes(), items);
+  scanner.check_claim(header.blocks, 4 * fields.min_size_bytes(), blocks);
+  return header;
+}
+
 void finish_section(GmshScanner& scanner, const char* end) {
   scanner.at("");
   scanner.expect_line(end);
@@ -81,12 +100,7 @@ void read_v4_entities(GmshScanner& scanner, const GmshFile& file,
 void read_v4_nodes(GmshScanner& scanner, GmshFile& file) {
   scanner.enter("$Nodes");
   Fields fields(scanner, file.binary);
-  const std::uint64_t block_count = fields.size();
-  const std::uint64_t node_count = fields.size();
-  fields.size();  // smallest node tag
-  fields.size();  // largest node tag
-  scanner.check_claim(node_count, 4 * fields.min_size_bytes(), "nodes");
-  scanner.check_claim(block_count, 4 * fields.min_size_bytes(), "node blocks");
+  const auto [block_count, node_count] = read_header(scanner, fields, "nodes", 4, "node blocks");
   file.node_tags.reserve(node_count);
   file.nodes.reserve(node_count);
   for (std::uint64_t b = 0; b < block_count; ++b) {
@@ -118,12 +132,8 @@ void read_v4_elements(GmshScanner& scanner, GmshFile& file,
                       const std::map<std::pair<int, int>, int>& entity_physicals) {
   scanner.enter("$Elements");
   Fields fields(scanner, file.binary);
-  const std::uint64_t block_count = fields.size();
-  const std::uint64_t element_count = fields.size();
-  fields.size();  // smallest element tag
-  fields.size();  // largest element tag
-  scanner.check_claim(element_count, 2 * fields.min_size_bytes(), "elements");
-  scanner.check_claim(block_count, 4 * fields.min_size_bytes(), "element blocks");
+  const auto [block_count, element_count] =
+      read_header(scanner, fields, "elements", 2, "element blocks");
   std::uint64_t total = 0;
   for (std::uint64_t b = 0; b < block_count; ++b) {
     scanner.at(item("element block", b, block_count));

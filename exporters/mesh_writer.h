@@ -3,18 +3,18 @@
 /// and one for tetrahedral meshes, dispatching on the extension to the writers that
 /// export_scenario() uses.
 ///
-/// | extension  | writer                | surfaces: write_meshes()                     | tets:
-/// write_tet_mesh()                  |
-/// |------------|-----------------------|----------------------------------------------|-----------------------------------------|
-/// | .obj       | assimp                | groups per surface, normals, UVs             | — | | .stl
-/// | assimp                | binary STL, all surfaces in one solid        | — | | .ply       |
-/// assimp                | binary PLY: normals, UVs, vertex colours      | — | | .gltf .glb |
-/// assimp (glTF 2.0)     | one node per surface, unit normals, UVs      | — | | .vtp       | VTK
-/// XML               | the surfaces merged: normals, UVs, attributes | — | | .vtk       | VTK
-/// legacy 4.2 ASCII  | the surfaces merged as POLYDATA               | UNSTRUCTURED_GRID with
-/// node_mass, fixed, tet_label | | .vtu       | VTK XML               | — | the package's body.vtu
-/// layout (vtk_mesh_io.h) | | .msh       | own gmsh 4.1 writer   | one surface entity per surface
-/// | tets by label, with the boundary triangles |
+// clang-format off
+/// | extension  | writer               | surfaces: write_meshes()                        | tets: write_tet_mesh()                          |
+/// |------------|----------------------|-------------------------------------------------|-------------------------------------------------|
+/// | .obj       | assimp               | groups per surface, normals, UVs                | —                                               |
+/// | .stl       | assimp               | binary STL, all surfaces in one solid           | —                                               |
+/// | .ply       | assimp               | binary PLY (ASCII when coloured): normals, UVs, colours | —                                       |
+/// | .gltf .glb | assimp (glTF 2.0)    | a node per surface, unit normals, UVs           | —                                               |
+/// | .vtp       | VTK XML              | the surfaces merged: normals, UVs               | —                                               |
+/// | .vtk       | VTK legacy 4.2 ASCII | the surfaces merged as POLYDATA                 | UNSTRUCTURED_GRID with node_mass, fixed, tet_label |
+/// | .vtu       | VTK XML              | —                                               | the package's body.vtu layout (vtk_mesh_io.h)   |
+/// | .msh       | own gmsh 4.1 writer  | a surface entity per surface                    | tets by label, with their boundary triangles    |
+// clang-format on
 ///
 /// Positions are written in metres; surfaces are sanitised first (surface_sanitizer.h). The
 /// output is written to a temporary sibling and renamed into place, so a failure leaves nothing.

@@ -2,30 +2,19 @@
 /// Exporting a scenario (a whole package or some of its objects) for other tools: one entry
 /// point that dispatches on the format to one file per format in exporters/.
 ///
-/// | format | OUT                 | files written                                   | carries | for
-/// |
-/// |--------|---------------------|-------------------------------------------------|--------------------------------------------------------------------------|----------------|
-/// | vtk    | X.vtm               | X.vtm, X/<id>_surface.vtp, X/<id>_body.vtu      | every array
-/// of the package: normals, UVs, embedding, masses, fixed flags, tet labels (DESIGN §4) | ParaView
-/// | | vtk    | X.vtp / X.vtu       | one file                                        | the one
-/// selected object's surface / body                                 | ParaView       | | gltf   |
-/// X.gltf              | X.gltf, X.bin (PNG maps embedded as data URIs)   | one node and mesh per
-/// object: positions, unit normals, UVs, vertex colours; a PBR material with the baked albedo as
-/// base-colour texture and the baked normal map | Unity, Blender, three.js | | glb    | X.glb | one
-/// binary glTF, maps in its buffer              | same | same           | | obj    | X.obj | X.obj,
-/// X.mtl, X_<texture>_{albedo,normal,specular}.png | groups per object, normals, UVs; map_Kd,
-/// bump/norm, map_Ks               | Blender, MeshLab | | stl    | X.stl               | binary STL
-/// | triangles of every object (one solid)                                    | printing, CAD  | |
-/// ply    | X.ply               | binary PLY                                      | triangles,
-/// normals, UVs, vertex colours of every object                   | MeshLab, CloudCompare | | msh
-/// | X.msh               | gmsh 4.1 ASCII                                  | every body's tets (one
-/// volume entity and physical group per object and label) with its boundary triangles; surface-only
-/// objects as surfaces | gmsh, FEM codes | | sofa   | X.scn               | X.scn,
-/// X_meshes/<id>_body.vtk, X_meshes/<id>_surface.obj(+.mtl, maps) | a SOFA scene: per body an
-/// implicit Euler solver, TetrahedronFEMForceField (tet bodies) or MeshSpringForceField
-/// (mass-spring bodies), DiagonalMass, FixedProjectiveConstraint on the fixed nodes, a textured
-/// visual model mapped barycentrically; connections as springs (sofa_scene_exporter.h) | SOFA ≥
-/// v24.06 |
+// clang-format off
+/// | format | OUT           | files written                                              | carries                                                        | for                 |
+/// |--------|---------------|------------------------------------------------------------|----------------------------------------------------------------|---------------------|
+/// | vtk    | X.vtm         | X.vtm, X/<id>_surface.vtp, X/<id>_body.vtu                  | every array of the package: normals, UVs, embedding, masses, fixed flags, tet labels (DESIGN §4) | ParaView |
+/// | vtk    | X.vtp, X.vtu  | one file                                                   | the one selected object's surface or body                      | ParaView            |
+/// | gltf   | X.gltf        | X.gltf, X.bin (PNG maps as data URIs)                      | a node and mesh per object: positions, unit normals, UVs, vertex colours; PBR material with the baked albedo as base-colour texture and the baked normal map | Unity, Blender, three.js |
+/// | glb    | X.glb         | one binary glTF, maps in its buffer                        | same                                                           | same                |
+/// | obj    | X.obj         | X.obj, X.mtl, X_<texture>_{albedo,normal,specular}.png     | groups per object, normals, UVs; map_Kd, bump/map_bump, map_Ks  | Blender, MeshLab    |
+/// | stl    | X.stl         | binary STL                                                 | triangles of every object (one solid)                          | printing, CAD       |
+/// | ply    | X.ply         | binary PLY (ASCII when an object has vertex colours)       | triangles, normals, UVs, vertex colours of every object        | MeshLab, CloudCompare |
+/// | msh    | X.msh         | gmsh 4.1 ASCII                                             | every body's tets (a volume entity and physical group per object and label) with its boundary; surface-only objects as surfaces | gmsh, FEM codes |
+/// | sofa   | X.scn         | X.scn, X_meshes/<id>_body.vtk, X_meshes/<id>_surface.obj (+ .mtl, maps) | a SOFA scene: TetrahedronFEMForceField or MeshSpringForceField, DiagonalMass, FixedProjectiveConstraint on the fixed nodes, a textured visual model mapped barycentrically, connections as springs (sofa_scene_exporter.h) | SOFA ≥ v24.06 |
+// clang-format on
 ///
 /// Before writing, every exported surface is sanitised (surface_sanitizer.h): non-finite or
 /// zero normals are recomputed and normalised, non-finite UVs and colours replaced, so that strict

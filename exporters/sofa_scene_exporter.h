@@ -5,7 +5,7 @@
 /// The root holds the time step and gravity of the session and one implicit Euler solver with a
 /// conjugate-gradient linear solver for every body, so that connections couple bodies in one
 /// system. Per object with a body, a node "<id>" with:
-///   MeshVTKLoader      <X>/<id>_body.vtk (legacy 4.2 ASCII: points and tetrahedra only)
+///   MeshVTKLoader      <X>_meshes/<id>_body.vtk (legacy 4.2 ASCII: points and tetrahedra only)
 ///   MeshTopology, MechanicalObject "dofs"
 ///   DiagonalMass       massDensity = material density, or the package's vertexMass when its
 ///                      node masses are not the lumped density·volume/4
@@ -13,7 +13,7 @@
 ///                      of sofa_material.h, or MeshSpringForceField (mass-spring bodies) with its
 ///                      mean edge stiffness and damping
 ///   FixedProjectiveConstraint on the package's fixed nodes
-///   a child "visual": MeshOBJLoader <X>/<id>_surface.obj, OglModel with the baked albedo,
+///   a child "visual": MeshOBJLoader <X>_meshes/<id>_surface.obj, OglModel with the baked albedo,
 ///                      BarycentricMapping from the body (SOFA's twin of our embedding)
 /// Objects without a body (fixtures) become static visual models. Each connection between two
 /// exported bodies becomes a SpringForceField between their "dofs" with one spring per node

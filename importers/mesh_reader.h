@@ -2,18 +2,16 @@
 /// Reading meshes made elsewhere: one entry point for surfaces, one for tetrahedral meshes, both
 /// dispatching on the extension to one file per format under importers/mesh/.
 ///
-/// | extension                      | reader                 | surface: read_mesh() | tets:
-/// read_tet_mesh()                 |
-/// |--------------------------------|------------------------|--------------------------------------------|---------------------------------------|
-/// | .obj .stl .ply .off .gltf .glb | assimp                 | triangles (polygons split), normals,
-/// UV set 0 | —                                  | | .3ds .dae .fbx and other assimp| assimp | same
-/// | —                                     | | .msh (gmsh 2.x, 4.1; ASCII or binary) | own parser
-/// (gmsh_file.h) | triangles and quadrangles, or the boundary of the tets | tets (corners of 2nd
-/// order ones), label = physical tag | | .vtp                           | VTK XML PolyData       |
-/// polygons and strips split, normals, TCoords/"UV" | —                               | | .vtu |
-/// VTK XML UnstructuredGrid | outer surface of the cells, normals, TCoords | tets, "tet_label",
-/// "node_mass", "fixed" | | .vtk (legacy 4.2 or 5.1)        | VTK legacy reader      | as .vtp or
-/// .vtu, by the dataset it holds    | as .vtu                               |
+// clang-format off
+/// | extension                       | reader                   | surface: read_mesh()                           | tets: read_tet_mesh()                        |
+/// |---------------------------------|--------------------------|------------------------------------------------|----------------------------------------------|
+/// | .obj .stl .ply .off .gltf .glb  | assimp                   | triangles (polygons split), normals, UV set 0  | —                                            |
+/// | .3ds .dae .fbx, other assimp    | assimp                   | same                                           | —                                            |
+/// | .msh: gmsh 2.x and 4.1 (ASCII or binary, either byte order), ASCII 4.0 | own parser (mesh/gmsh_file.h) | triangles and quadrangles, else the tets' boundary | tets (corners of 2nd-order ones), label = physical tag |
+/// | .vtp                            | VTK XML PolyData         | polygons and strips split, normals, TCoords/"UV" | —                                          |
+/// | .vtu                            | VTK XML UnstructuredGrid | outer surface of the cells, normals, TCoords   | tets, "tet_label", "node_mass", "fixed"      |
+/// | .vtk (legacy 4.2 or 5.1)        | VTK legacy reader        | as .vtp or .vtu, by the dataset it holds       | as .vtu                                      |
+// clang-format on
 ///
 /// Files state no unit, so the caller says which one they are in; results are in metres. Every
 /// surface is checked before it is returned (mesh/mesh_integrity.h): finite, no degenerate

@@ -47,12 +47,18 @@ void read_mesh_format(GmshScanner& scanner, GmshFile& file) {
     scanner.fail("file type " + std::to_string(type) + " is neither ASCII (0) nor binary (1)");
   file.binary = type == 1;
   const bool v2 = file.version >= 2.0 && file.version < 3.0;
-  const bool v41 = file.version >= 4.1 && file.version < 5.0;
-  if (!v2 && !v41) {
+  const bool v4 = file.version >= 4.0 && file.version < 5.0;
+  if (v4 && file.version < 4.1 && file.binary) {
+    // gmsh itself wrote 4.0 in binary only in 2018 and no longer can: no file to check against.
+    scanner.fail(
+        "binary format 4.0 is not read (ASCII 4.0, 2.x and 4.1 are; gmsh writes 4.1 with -format "
+        "msh41)");
+  }
+  if (!v2 && !v4) {
     std::ostringstream shown;
     shown << file.version;
     scanner.fail("format version " + shown.str() +
-                 " is not read (2.x and 4.1 are; gmsh writes 4.1 with -format msh41)");
+                 " is not read (2.x, 4.0 and 4.1 are; gmsh writes 4.1 with -format msh41)");
   }
   if (data_size != 8) scanner.fail("data size " + std::to_string(data_size) + " is not 8");
   if (file.binary) {

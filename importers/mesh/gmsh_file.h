@@ -1,9 +1,9 @@
 #pragma once
 /// The contents of a gmsh .msh file in gmsh's own terms (nodes by tag, element blocks by
-/// entity), read by a parser of our own: format 2.x (2.0–2.2) and 4.1, ASCII and binary, either
-/// byte order. Sections other than $MeshFormat, $PhysicalNames, $Entities, $Nodes and $Elements
-/// ($NodeData, $Periodic, $Comments, …) are skipped. Reference: the gmsh 4.8 manual, §9.1
-/// "MSH file format" and §9.2 "Legacy formats".
+/// entity), read by a parser of our own: formats 2.x (2.0–2.2) and 4.1, ASCII and binary, either
+/// byte order, and the ASCII 4.0 of gmsh 4.0. Sections other than $MeshFormat, $PhysicalNames,
+/// $Entities, $Nodes and $Elements ($NodeData, $Periodic, $Comments, …) are skipped. Reference: the
+/// gmsh 4.8 manual, §9.1 "MSH file format" and §9.2 "Legacy formats".
 
 #include <cstdint>
 #include <filesystem>

@@ -1,5 +1,8 @@
-// Format 4.1 sections (gmsh 4.8 manual §9.1). In binary files the counts and tags of nodes and
-// elements are 64-bit (the header's data size 8), entity dimensions and tags 32-bit.
+// Format 4.1 sections (gmsh 4.8 manual §9.1), and the ASCII 4.0 of gmsh 4.0 (2018), which differs
+// in four places: points carry a bounding box, the section headers have no tag range, blocks
+// name the entity tag before its dimension, and each node's tag precedes its coordinates. In
+// binary files the counts and tags of nodes and elements are 64-bit (the header's data size 8),
+// entity dimensions and tags 32-bit.
 #include "importers/mesh/gmsh_sections.h"
 
 namespace viscera::importers {
@@ -42,13 +45,15 @@ struct SectionHeader {
   std::uint64_t items = 0;
 };
 
-SectionHeader read_header(GmshScanner& scanner, Fields& fields, const char* items,
+SectionHeader read_header(GmshScanner& scanner, Fields& fields, bool v40, const char* items,
                           std::size_t item_fields, const char* blocks) {
   SectionHeader header;
   header.blocks = fields.size();
   header.items = fields.size();
-  fields.size();  // smallest tag
-  fields.size();  // largest tag
+  if (!v40) {
+    fields.size();  // smallest tag
+    fields.size();  // largest tag
+  }
   scanner.check_claim(header.items, item_fields * fields.min_size_bytes(), items);
   scanner.check_claim(header.blocks, 4 * fields.min_size_bytes(), blocks);
   return header;
@@ -78,7 +83,8 @@ void read_v4_entities(GmshScanner& scanner, const GmshFile& file,
                                        : "volume",
                       e, count));
       const int tag = fields.integer();
-      for (int c = 0; c < (dimension == 0 ? 3 : 6); ++c)
+      const bool box = dimension > 0 || file.version < 4.1;  // 4.0 boxes points too
+      for (int c = 0; c < (box ? 6 : 3); ++c)
         fields.real();  // point or bounding box
       const std::uint64_t physical_count = fields.size();
       scanner.check_claim(physical_count, fields.min_size_bytes() / 2, "physical tags");
@@ -100,13 +106,16 @@ void read_v4_entities(GmshScanner& scanner, const GmshFile& file,
 void read_v4_nodes(GmshScanner& scanner, GmshFile& file) {
   scanner.enter("$Nodes");
   Fields fields(scanner, file.binary);
-  const auto [block_count, node_count] = read_header(scanner, fields, "nodes", 4, "node blocks");
+  const bool v40 = file.version < 4.1;
+  const auto [block_count, node_count] =
+      read_header(scanner, fields, v40, "nodes", 4, "node blocks");
   file.node_tags.reserve(node_count);
   file.nodes.reserve(node_count);
   for (std::uint64_t b = 0; b < block_count; ++b) {
     scanner.at(item("node block", b, block_count));
-    const int dimension = fields.integer();
-    fields.integer();  // entity tag
+    int dimension = fields.integer();
+    if (v40) dimension = fields.integer();  // 4.0: entity tag, then dimension
+    if (!v40) fields.integer();             // 4.1: dimension, then entity tag
     const int parametric = fields.integer();
     const std::uint64_t count = fields.size();
     if (count > node_count - file.nodes.size())
@@ -114,9 +123,10 @@ void read_v4_nodes(GmshScanner& scanner, GmshFile& file) {
     const int extra = parametric != 0 ? dimension : 0;
     scanner.check_claim(count, static_cast<std::size_t>(4 + extra) * fields.min_size_bytes(),
                         "nodes");
-    for (std::uint64_t n = 0; n < count; ++n)
+    for (std::uint64_t n = 0; n < count && !v40; ++n)
       file.node_tags.push_back(static_cast<std::int64_t>(fields.size()));
     for (std::uint64_t n = 0; n < count; ++n) {
+      if (v40) file.node_tags.push_back(static_cast<std::int64_t>(fields.size()));
       const double x = fields.real(), y = fields.real(), z = fields.real();
       for (int p = 0; p < extra; ++p)
         fields.real();  // parametric coordinates on the entity
@@ -132,14 +142,16 @@ void read_v4_elements(GmshScanner& scanner, GmshFile& file,
                       const std::map<std::pair<int, int>, int>& entity_physicals) {
   scanner.enter("$Elements");
   Fields fields(scanner, file.binary);
+  const bool v40 = file.version < 4.1;
   const auto [block_count, element_count] =
-      read_header(scanner, fields, "elements", 2, "element blocks");
+      read_header(scanner, fields, v40, "elements", 2, "element blocks");
   std::uint64_t total = 0;
   for (std::uint64_t b = 0; b < block_count; ++b) {
     scanner.at(item("element block", b, block_count));
     GmshElementBlock block;
     block.dimension = fields.integer();
     block.entity = fields.integer();
+    if (v40) std::swap(block.dimension, block.entity);  // 4.0: entity tag, then dimension
     block.type = fields.integer();
     const std::uint64_t count = fields.size();
     block.nodes_per_element = gmsh_nodes_per_element(block.type);

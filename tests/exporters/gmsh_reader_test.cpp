@@ -36,7 +36,7 @@ TEST(GmshReader, every_version_and_encoding_of_a_tutorial_mesh_gives_the_same_te
   EXPECT_GT(core::total_volume(reference), 0.0);
   EXPECT_FALSE(reference.tet_labels.empty());
   for (const auto& [format, binary] :
-       {std::pair{"msh41", true}, {"msh22", false}, {"msh22", true}}) {
+       {std::pair{"msh41", true}, {"msh40", false}, {"msh22", false}, {"msh22", true}}) {
     const core::TetMesh mesh = read_tet_mesh(t5(format, binary));
     ASSERT_EQ(mesh.nodes.size(), reference.nodes.size());
     double largest = 0.0;  // ASCII files round coordinates to 16 or 17 digits
@@ -135,6 +135,7 @@ TEST(GmshReader, broken_headers_and_references_are_named) {
   const std::pair<std::string, std::vector<std::string>> cases[] = {
       {"solid cube\n", {"not a gmsh file"}},
       {replaced("2.2 0 8", "3.0 0 8"), {"format version 3 is not read"}},
+      {replaced("2.2 0 8", "4 1 8"), {"binary format 4.0 is not read"}},
       {replaced("$Nodes\n4\n", "$Nodes\n99999999999\n"),
        {"claims 99999999999 nodes", "ends before them", "$Nodes"}},
       {replaced("1 4 2 7 1 1 2 3 4", "1 4 2 7 1 1 2 3 9"), {"refers to node 9", "does not define"}},

@@ -59,7 +59,7 @@ std::vector<fs::path> StagedOutput::commit() {
   // Side files first and the main file last, so that a reader who sees the main file finds
   // everything it names.
   std::rotate(main, main + 1, entries.end());
-  const fs::path parent = target_.parent_path().empty() ? fs::path(".") : target_.parent_path();
+  const fs::path parent = target_.parent_path();  // empty: the current folder
   // Refuse to replace a folder by a file or a file by a folder: that is not an older export.
   for (const auto& entry : entries) {
     const fs::path destination = parent / entry.filename();

@@ -169,10 +169,19 @@ void write_gmsh_msh41(const std::vector<MshPart>& parts, const std::filesystem::
   out << "$Elements\n"
       << entities.size() << " " << element_count << " "
       << (element_count > 0 ? std::size_t{1} : std::size_t{0}) << " " << element_count << "\n";
-  std::size_t element = 1;
+  // Element tags keep each part's order (its tets, then its triangles) whatever entity holds
+  // them, so readers that order elements by tag get the mesh back as it was.
+  std::vector<std::size_t> first_element(parts.size());
+  std::size_t next_element = 1;
+  for (std::size_t p = 0; p < parts.size(); ++p) {
+    first_element[p] = next_element;
+    next_element += (parts[p].tets != nullptr ? parts[p].tets->size() : 0) +
+                    (parts[p].triangles != nullptr ? parts[p].triangles->size() : 0);
+  }
   for (const auto& e : entities) {
     const MshPart& part = parts[e.part];
     const std::size_t base = first_tag[e.part];
+    std::size_t element = first_element[e.part];
     if (e.dimension == 3) {
       std::size_t count = 0;
       for (std::size_t t = 0; t < part.tets->size(); ++t)
@@ -181,13 +190,14 @@ void write_gmsh_msh41(const std::vector<MshPart>& parts, const std::filesystem::
       for (std::size_t t = 0; t < part.tets->size(); ++t) {
         if ((part.tet_labels != nullptr ? (*part.tet_labels)[t] : 0) != e.label) continue;
         const auto& tet = (*part.tets)[t];
-        out << element++;
+        out << element + t;
         for (const int n : tet)
           out << " " << base + static_cast<std::size_t>(n);
         out << "\n";
       }
     } else {
       out << 2 << " " << e.tag << " 2 " << part.triangles->size() << "\n";
+      element += part.tets != nullptr ? part.tets->size() : 0;
       for (const auto& tri : *part.triangles) {
         out << element++;
         for (const int n : tri)

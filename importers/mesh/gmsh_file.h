@@ -23,6 +23,7 @@ struct GmshElementBlock {
   int entity = 0;     ///< elementary (geometric entity) tag
   int physical = 0;   ///< first physical tag of the entity, 0 if none
   int nodes_per_element = 0;
+  std::vector<std::int64_t> tags;   ///< element tag of each element
   std::vector<std::int64_t> nodes;  ///< node tags, nodes_per_element per element
   std::size_t size() const { return nodes_per_element == 0 ? 0 : nodes.size() / nodes_per_element; }
 };

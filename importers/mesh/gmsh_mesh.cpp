@@ -71,20 +71,22 @@ class UsedNodes {
 
 core::SurfaceMesh gmsh_surface(const GmshFile& content, const std::string& file) {
   UsedNodes used(content, file);
-  std::vector<std::array<std::size_t, 3>> faces;
+  std::vector<std::pair<std::int64_t, std::array<std::size_t, 3>>> faces;  // (element tag, face)
   for (const auto& block : content.blocks) {
     const bool triangle = is_triangle(block.type), quadrangle = is_quadrangle(block.type);
     if (!triangle && !quadrangle) continue;
     for (std::size_t e = 0; e < block.size(); ++e) {
       const std::int64_t* n =
           block.nodes.data() + e * static_cast<std::size_t>(block.nodes_per_element);
+      const std::int64_t tag = block.tags[e];
       if (triangle) {
-        faces.push_back({used.use(n[0], block), used.use(n[1], block), used.use(n[2], block)});
+        faces.push_back(
+            {tag, {used.use(n[0], block), used.use(n[1], block), used.use(n[2], block)}});
       } else {
         const std::size_t a = used.use(n[0], block), b = used.use(n[1], block),
                           c = used.use(n[2], block), d = used.use(n[3], block);
-        faces.push_back({a, b, c});
-        faces.push_back({a, c, d});
+        faces.push_back({tag, {a, b, c}});
+        faces.push_back({tag, {a, c, d}});
       }
     }
   }
@@ -101,18 +103,25 @@ core::SurfaceMesh gmsh_surface(const GmshFile& content, const std::string& file)
     surface.triangles = body.surface_faces;
     return surface;
   }
+  // Elements in tag order, as they were numbered, whichever entity block holds them.
+  std::stable_sort(faces.begin(), faces.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
   core::SurfaceMesh surface;
   surface.vertices = used.number();
   surface.triangles.reserve(faces.size());
-  for (const auto& f : faces)
+  for (const auto& [tag, f] : faces)
     surface.triangles.push_back({used.index(f[0]), used.index(f[1]), used.index(f[2])});
   return surface;
 }
 
 core::TetMesh gmsh_tet_mesh(const GmshFile& content, const std::string& file) {
   UsedNodes used(content, file);
-  std::vector<std::array<std::size_t, 4>> tets;
-  std::vector<int> labels;
+  struct Tet {
+    std::int64_t tag;
+    std::array<std::size_t, 4> corners;
+    int label;
+  };
+  std::vector<Tet> tets;
   for (const auto& block : content.blocks) {
     if (block.dimension != 3) continue;
     if (!is_tetrahedron(block.type)) {
@@ -126,18 +135,24 @@ core::TetMesh gmsh_tet_mesh(const GmshFile& content, const std::string& file) {
     for (std::size_t e = 0; e < block.size(); ++e) {
       const std::int64_t* n =
           block.nodes.data() + e * static_cast<std::size_t>(block.nodes_per_element);
-      tets.push_back({used.use(n[0], block), used.use(n[1], block), used.use(n[2], block),
-                      used.use(n[3], block)});
-      labels.push_back(label);
+      tets.push_back({block.tags[e],
+                      {used.use(n[0], block), used.use(n[1], block), used.use(n[2], block),
+                       used.use(n[3], block)},
+                      label});
     }
   }
+  // Elements in tag order, as they were numbered, whichever entity block holds them.
+  std::stable_sort(tets.begin(), tets.end(),
+                   [](const Tet& a, const Tet& b) { return a.tag < b.tag; });
   if (tets.empty()) throw NoTetrahedraError("the file holds no tetrahedra", {file, "", ""});
   core::TetMesh mesh;
   mesh.nodes = used.number();
   mesh.tets.reserve(tets.size());
-  for (const auto& t : tets)
+  mesh.tet_labels.reserve(tets.size());
+  for (const auto& [tag, t, label] : tets) {
     mesh.tets.push_back({used.index(t[0]), used.index(t[1]), used.index(t[2]), used.index(t[3])});
-  mesh.tet_labels = std::move(labels);
+    mesh.tet_labels.push_back(label);
+  }
   core::orient_tets_positively(mesh);
   core::check_tet_mesh(mesh, file);
   mesh.surface_faces = checked_boundary_faces(mesh, file);

@@ -96,7 +96,7 @@ void read_v2_elements(GmshScanner& scanner, GmshFile& file) {
       scanner.check_claim(static_cast<std::uint64_t>(run),
                           4 * static_cast<std::size_t>(1 + tag_count + per), "elements");
       for (std::int64_t e = 0; e < run; ++e, ++read) {
-        scanner.binary<std::int32_t>();  // element number
+        const std::int64_t number = scanner.binary<std::int32_t>();
         int physical = 0, entity = 0;
         for (std::int64_t t = 0; t < tag_count; ++t) {
           const int tag = scanner.binary<std::int32_t>();
@@ -104,6 +104,7 @@ void read_v2_elements(GmshScanner& scanner, GmshFile& file) {
           if (t == 1) entity = tag;
         }
         auto& block = blocks.block(type, entity, physical);
+        block.tags.push_back(number);
         for (int n = 0; n < per; ++n)
           block.nodes.push_back(scanner.binary<std::int32_t>());
       }
@@ -111,7 +112,7 @@ void read_v2_elements(GmshScanner& scanner, GmshFile& file) {
   } else {
     for (; read < count; ++read) {
       scanner.at(item("element", read, count));
-      scanner.integer();  // element number
+      const std::int64_t number = scanner.integer();
       const int type = checked_type(scanner, scanner.integer());
       const std::int64_t tag_count = scanner.integer();
       if (tag_count < 0 || tag_count > 64) scanner.fail("a malformed tag count");
@@ -122,6 +123,7 @@ void read_v2_elements(GmshScanner& scanner, GmshFile& file) {
         if (t == 1) entity = tag;
       }
       auto& block = blocks.block(type, entity, physical);
+      block.tags.push_back(number);
       for (int n = 0; n < block.nodes_per_element; ++n)
         block.nodes.push_back(scanner.integer());
     }

@@ -167,8 +167,9 @@ void read_v4_elements(GmshScanner& scanner, GmshFile& file,
     const auto physical = entity_physicals.find({block.dimension, block.entity});
     block.physical = physical == entity_physicals.end() ? 0 : physical->second;
     block.nodes.reserve(count * static_cast<std::uint64_t>(block.nodes_per_element));
+    block.tags.reserve(count);
     for (std::uint64_t e = 0; e < count; ++e) {
-      fields.size();  // element tag
+      block.tags.push_back(static_cast<std::int64_t>(fields.size()));
       for (int n = 0; n < block.nodes_per_element; ++n)
         block.nodes.push_back(static_cast<std::int64_t>(fields.size()));
     }

@@ -1,6 +1,7 @@
 // `viscera export` and `viscera mesh convert` run as a user runs them: every format written and
 // read back, exit codes of DESIGN.md §9, one line naming the file on bad input, nothing written.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <nlohmann/json.hpp>
 
@@ -17,22 +18,38 @@ namespace fs = std::filesystem;
 using testing::run_program;
 using testing::shell_quote;
 
-/// A textured ball package made with the CLI, once per test.
+/// A textured ball package made with `viscera new` and `viscera bake`, built once for all the
+/// test processes (in the shared real-files folder) and copied into `dir`.
 fs::path textured_package(const fs::path& dir) {
-  const fs::path plain = dir / "ball.vscene", textured = dir / "textured.vscene";
-  EXPECT_EQ(run_program("viscera",
-                        "new --template ball --seed 3 --set radius=0.02 --set cell_size=0.008 -o " +
-                            shell_quote(plain.string()),
-                        dir)
-                .exit_code,
-            0);
-  const auto baked =
-      run_program("viscera",
-                  "bake " + shell_quote(plain.string()) + " --preset endometrium --size 64x64 -o " +
-                      shell_quote(textured.string()),
-                  dir);
-  EXPECT_EQ(baked.exit_code, 0) << baked.err;
-  return textured;
+  // Named after the build of `viscera` that made it, so a rebuilt program makes a new one.
+  const auto built = fs::last_write_time(fs::path(VISCERA_BINARY_DIR) / "bin" / "viscera");
+  const fs::path shared =
+      testing::shared_test_folder() /
+      ("cli-textured-" + std::to_string(built.time_since_epoch().count()) + ".vscene");
+  if (!fs::exists(shared)) {
+    const fs::path work = testing::shared_test_folder() / (".cli-" + std::to_string(::getpid()));
+    fs::create_directories(work);
+    const fs::path plain = work / "ball.vscene", textured = work / "textured.vscene";
+    EXPECT_EQ(
+        run_program("viscera",
+                    "new --template ball --seed 3 --set radius=0.02 --set cell_size=0.008 -o " +
+                        shell_quote(plain.string()),
+                    work)
+            .exit_code,
+        0);
+    const auto baked =
+        run_program("viscera",
+                    "bake " + shell_quote(plain.string()) +
+                        " --preset endometrium --size 64x64 -o " + shell_quote(textured.string()),
+                    work);
+    EXPECT_EQ(baked.exit_code, 0) << baked.err;
+    std::error_code taken;  // another test process may have put its copy in place first
+    fs::rename(textured, shared, taken);
+    fs::remove_all(work);
+  }
+  const fs::path copy = dir / "textured.vscene";
+  fs::copy(shared, copy, fs::copy_options::recursive);
+  return copy;
 }
 
 TEST(ExportCommand, export_and_mesh_convert_have_help) {

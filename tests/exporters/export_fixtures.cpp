@@ -95,15 +95,15 @@ std::string private_name(const std::string& base) {
   return "." + base + "-" + std::to_string(getpid());
 }
 
-fs::path shared_temp() {
+}  // namespace
+
+fs::path shared_test_folder() {
   const char* root = std::getenv("VISCERA_TEST_TMP");
   fs::path dir =
       fs::path(root != nullptr ? root : fs::temp_directory_path().string()) / "real-files";
   fs::create_directories(dir);
   return dir;
 }
-
-}  // namespace
 
 const core::Scenario& export_scenario_fixture() {
   return fixture().scenario;
@@ -127,7 +127,7 @@ fs::path cgal_mesh(const std::string& name) {
                   << " is missing: install the Debian package libcgal-demo (dev.sh lists it)";
     return {};
   }
-  const fs::path dir = shared_temp() / "cgal";
+  const fs::path dir = shared_test_folder() / "cgal";
   const fs::path path = dir / "data" / "meshes" / name;
   if (!fs::exists(path)) {
     const fs::path staging = dir / private_name("extract");
@@ -156,7 +156,7 @@ fs::path assimp_model(const std::string& relative) {
 fs::path gmsh_tutorial_mesh(const std::string& tutorial, const std::string& arguments,
                             const std::string& name) {
   const fs::path docs = "/usr/share/doc/gmsh-doc/doc/gmsh/tutorial";
-  const fs::path dir = shared_temp() / "gmsh";
+  const fs::path dir = shared_test_folder() / "gmsh";
   fs::create_directories(dir);
   const fs::path out = dir / name;
   if (fs::exists(out)) return out;

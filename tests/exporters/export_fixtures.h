@@ -36,6 +36,10 @@ std::filesystem::path assimp_model(const std::string& relative);
 std::filesystem::path gmsh_tutorial_mesh(const std::string& tutorial, const std::string& arguments,
                                          const std::string& name);
 
+/// A folder shared by the test processes of this build for data made once (real files unpacked
+/// or meshed, packages built through the CLI): VISCERA_TEST_TMP/real-files.
+std::filesystem::path shared_test_folder();
+
 /// The whole content of a file.
 std::string file_bytes(const std::filesystem::path& path);
 

@@ -194,10 +194,48 @@ void from_json(const nlohmann::json& j, TaskSpec& t) {
   read_optional(j, "parameters", t.parameters);
 }
 
+void to_json(nlohmann::json& j, const SubstepSpec& s) { j = {{"id", s.id}, {"name", s.name}, {"tasks", s.tasks}}; }
+void from_json(const nlohmann::json& j, SubstepSpec& s) {
+  j.at("id").get_to(s.id);
+  read_optional(j, "name", s.name);
+  read_optional(j, "tasks", s.tasks);
+}
+
+void to_json(nlohmann::json& j, const StepSpec& s) { j = {{"id", s.id}, {"name", s.name}, {"substeps", s.substeps}}; }
+void from_json(const nlohmann::json& j, StepSpec& s) {
+  j.at("id").get_to(s.id);
+  read_optional(j, "name", s.name);
+  read_optional(j, "substeps", s.substeps);
+}
+
+void to_json(nlohmann::json& j, const InstrumentSpec& i) {
+  j = {{"kind", i.kind},
+       {"optics_angle", i.optics_angle},
+       {"field_of_view", i.field_of_view},
+       {"shaft_diameter", i.shaft_diameter},
+       {"focus_distance", i.focus_distance},
+       {"min_view_distance", i.min_view_distance},
+       {"max_view_distance", i.max_view_distance}};
+}
+void from_json(const nlohmann::json& j, InstrumentSpec& i) {
+  read_optional(j, "kind", i.kind);
+  read_optional(j, "optics_angle", i.optics_angle);
+  read_optional(j, "field_of_view", i.field_of_view);
+  read_optional(j, "shaft_diameter", i.shaft_diameter);
+  read_optional(j, "focus_distance", i.focus_distance);
+  read_optional(j, "min_view_distance", i.min_view_distance);
+  read_optional(j, "max_view_distance", i.max_view_distance);
+}
+
 void to_json(nlohmann::json& j, const SessionSpec& s) {
   j = {{"time_step", s.time_step}, {"duration_limit", s.duration_limit}, {"gravity", s.gravity},
        {"contact_stiffness", s.contact_stiffness},
        {"tasks", s.tasks}, {"metrics", s.metrics}};
+  if (!s.procedure_definition.empty()) j["procedure_definition"] = s.procedure_definition;
+  if (!(s.instrument == InstrumentSpec{})) j["instrument"] = s.instrument;
+  if (!s.steps.empty()) j["steps"] = s.steps;
+  if (s.force_warning != 0.0) j["force_warning"] = s.force_warning;
+  if (s.perforation_depth != 0.0) j["perforation_depth"] = s.perforation_depth;
 }
 void from_json(const nlohmann::json& j, SessionSpec& s) {
   read_optional(j, "time_step", s.time_step);
@@ -206,6 +244,11 @@ void from_json(const nlohmann::json& j, SessionSpec& s) {
   read_optional(j, "contact_stiffness", s.contact_stiffness);
   read_optional(j, "tasks", s.tasks);
   read_optional(j, "metrics", s.metrics);
+  read_optional(j, "procedure_definition", s.procedure_definition);
+  read_optional(j, "instrument", s.instrument);
+  read_optional(j, "steps", s.steps);
+  read_optional(j, "force_warning", s.force_warning);
+  read_optional(j, "perforation_depth", s.perforation_depth);
 }
 
 void to_json(nlohmann::json& j, const VariabilityRule& r) {

@@ -21,6 +21,15 @@ nlohmann::json scenario_to_json(const Scenario& scenario);
 /// The scenario without meshes (objects have empty surfaces and bodies). Throws
 /// ValidationError naming `file` and the JSON pointer (under `pointer_prefix`) when a member
 /// has the wrong type or an unknown enumeration value.
+/// Conversions of the procedure parts (seed 000 §11), for procedure definitions shipped as data
+/// (core/scenario/procedure.h). from_json throws nlohmann::json exceptions on a wrong type.
+void to_json(nlohmann::json& j, const TaskSpec& task);
+void from_json(const nlohmann::json& j, TaskSpec& task);
+void to_json(nlohmann::json& j, const StepSpec& step);
+void from_json(const nlohmann::json& j, StepSpec& step);
+void to_json(nlohmann::json& j, const InstrumentSpec& instrument);
+void from_json(const nlohmann::json& j, InstrumentSpec& instrument);
+
 Scenario scenario_from_json(const nlohmann::json& json, const std::string& file,
                             const std::string& pointer_prefix = "/scenario");
 

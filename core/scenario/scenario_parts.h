@@ -121,6 +121,39 @@ struct TaskSpec {
   bool operator==(const TaskSpec&) const = default;
 };
 
+/// A substep of a procedure (seed 000 §11, e.g. "identify the right tubal orifice"): the tasks
+/// that complete it.
+struct SubstepSpec {
+  std::string id;
+  std::string name;
+  std::vector<TaskSpec> tasks;
+
+  bool operator==(const SubstepSpec&) const = default;
+};
+
+/// A surgical step (seed 000 §11, e.g. "inspect the uterine cavity"). Steps are done in order;
+/// the substeps and tasks inside a step in any order.
+struct StepSpec {
+  std::string id;
+  std::string name;
+  std::vector<SubstepSpec> substeps;
+
+  bool operator==(const StepSpec&) const = default;
+};
+
+/// The instrument a procedure is trained with. Angles in degrees, lengths in m.
+struct InstrumentSpec {
+  std::string kind = "probe";     ///< "hysteroscope", "cystoscope", "laparoscope", "probe", "grasper", …
+  double optics_angle = 0.0;      ///< viewing direction against the shaft axis (0, 12, 30 °)
+  double field_of_view = 70.0;    ///< full opening angle of the optics, °
+  double shaft_diameter = 0.004;  ///< m
+  double focus_distance = 0.015;  ///< m, sharpest distance of the optics
+  double min_view_distance = 0.003;  ///< m, closer than this the view is lost ("red-out")
+  double max_view_distance = 0.04;   ///< m, beyond this the surface is too far to assess
+
+  bool operator==(const InstrumentSpec&) const = default;
+};
+
 /// How a session on this scenario runs and is scored.
 struct SessionSpec {
   double time_step = 1.0e-3;        ///< s, the fixed physics step
@@ -129,6 +162,14 @@ struct SessionSpec {
   double contact_stiffness = 500.0;      ///< N/m per colliding point (penalty response)
   std::vector<TaskSpec> tasks;
   std::vector<std::string> metrics;
+  /// The shipped procedure definition these steps came from (core::procedure_definition), or "".
+  std::string procedure_definition;
+  InstrumentSpec instrument;
+  /// Steps → substeps → tasks (seed 000 §11); `tasks` above holds tasks outside any step.
+  std::vector<StepSpec> steps;
+  double force_warning = 0.0;      ///< N on the instrument that starts a warning; 0: none
+  /// m the tool may push into the wall before it perforates; 0: the local wall thickness.
+  double perforation_depth = 0.0;
 
   bool operator==(const SessionSpec&) const = default;
 };

@@ -16,6 +16,7 @@ struct StressStrainCurve {
   std::vector<double> stress;           ///< Pa
   std::vector<double> cubic;            ///< {c0, c1, c2, c3} in Pa, empty until fitted
   double fit_rms_error = 0.0;           ///< Pa
+  double fit_max_error = 0.0;           ///< Pa, largest absolute residual of the fit
 
   bool operator==(const StressStrainCurve&) const = default;
 };

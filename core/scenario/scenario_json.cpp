@@ -18,13 +18,15 @@ void read_optional(const nlohmann::json& j, const char* key, T& value) {
 }  // namespace
 
 void to_json(nlohmann::json& j, const StressStrainCurve& c) {
-  j = {{"strain", c.strain}, {"stress", c.stress}, {"cubic", c.cubic}, {"fit_rms_error", c.fit_rms_error}};
+  j = {{"strain", c.strain}, {"stress", c.stress}, {"cubic", c.cubic}, {"fit_rms_error", c.fit_rms_error},
+       {"fit_max_error", c.fit_max_error}};
 }
 void from_json(const nlohmann::json& j, StressStrainCurve& c) {
   j.at("strain").get_to(c.strain);
   j.at("stress").get_to(c.stress);
   read_optional(j, "cubic", c.cubic);
   read_optional(j, "fit_rms_error", c.fit_rms_error);
+  read_optional(j, "fit_max_error", c.fit_max_error);
 }
 
 void to_json(nlohmann::json& j, const Material& m) {

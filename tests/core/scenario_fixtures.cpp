@@ -35,7 +35,7 @@ core::Scenario full_scenario() {
   muscle.distance_damping = 7.0;
   muscle.tearing_threshold = 0.45;
   muscle.plastic_yield = 0.25;
-  muscle.stress_strain = core::StressStrainCurve{{0.0, 0.1, 0.2}, {0.0, 900.0, 2100.0}, {0.0, 8000.0, 1000.0, 500.0}, 12.5};
+  muscle.stress_strain = core::StressStrainCurve{{0.0, 0.1, 0.2}, {0.0, 900.0, 2100.0}, {0.0, 8000.0, 1000.0, 500.0}, 12.5, 20.0};
   muscle.source = "synthetic";
   s.materials[muscle.id] = muscle;
   core::Material soft;

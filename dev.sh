@@ -23,6 +23,8 @@ packages=(
   libopenmpi-dev openmpi-bin
   xvfb xauth libgl1-mesa-dri
   python3-nibabel python3-pydicom libcgal-demo  # real DICOM/NIfTI/MINC/INR test images
+  assimp-testmodels gmsh-doc  # real meshes (assimp's test set, gmsh's tutorials) for the mesh import tests
+  nodejs  # runs the Khronos glTF validator (npm gltf-validator) in the export tests
 )
 
 say() { printf '\033[1m==> %s\033[0m\n' "$*" >&2; }
@@ -81,8 +83,19 @@ run_demo() {
   fi
 }
 
+# The Khronos glTF validator from npm, which the export tests run on every .gltf/.glb they write.
+install_gltf_validator() {
+  if [ ! -f "$build/node/node_modules/gltf-validator/package.json" ]; then
+    say "installing the Khronos glTF validator (npm gltf-validator) into $build/node"
+    mkdir -p "$build/node"
+    npm install --prefix "$build/node" --no-audit --no-fund --loglevel=error gltf-validator@2.0.0-dev.3.10 >&2 ||
+      say "npm could not install gltf-validator: the glTF validation tests will fail"
+  fi
+}
+
 run_tests() {
   configure_and_build
+  install_gltf_validator
   say "running the test suite"
   # Tests that render need an X server; without a display they run under Xvfb.
   local runner=()

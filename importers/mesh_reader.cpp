@@ -1,19 +1,43 @@
 #include "importers/mesh_reader.h"
 
-#include <assimp/postprocess.h>
-#include <assimp/scene.h>
+#include <algorithm>
 
-#include <assimp/Importer.hpp>
-
-#include "core/error.h"
+#include "importers/mesh/assimp_mesh_file.h"
+#include "importers/mesh/gmsh_file.h"
+#include "importers/mesh/gmsh_mesh.h"
+#include "importers/mesh/mesh_integrity.h"
+#include "importers/mesh/vtk_mesh_file.h"
 
 namespace viscera::importers {
+namespace {
+
+std::string lower_extension(const std::filesystem::path& path) {
+  std::string extension = path.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
+  return extension;
+}
+
+bool is_vtk(const std::string& extension) {
+  return extension == ".vtp" || extension == ".vtu" || extension == ".vtk";
+}
+
+void scale(std::vector<core::Vec3>& points, double factor) {
+  if (factor == 1.0) return;
+  for (auto& p : points)
+    p *= factor;
+}
+
+}  // namespace
 
 double metres_per(LengthUnit unit) {
   switch (unit) {
-    case LengthUnit::Metre: return 1.0;
-    case LengthUnit::Centimetre: return 0.01;
-    case LengthUnit::Millimetre: return 0.001;
+    case LengthUnit::Metre:
+      return 1.0;
+    case LengthUnit::Centimetre:
+      return 0.01;
+    case LengthUnit::Millimetre:
+      return 0.001;
   }
   return 1.0;
 }
@@ -25,62 +49,42 @@ LengthUnit length_unit_from_string(const std::string& name) {
   throw core::UsageError("unknown length unit \"" + name + "\"; use m, cm or mm");
 }
 
+const std::vector<std::string>& tet_mesh_extensions() {
+  static const std::vector<std::string> extensions = {".msh", ".vtu", ".vtk"};
+  return extensions;
+}
+
+bool may_hold_tetrahedra(const std::filesystem::path& path) {
+  const auto& extensions = tet_mesh_extensions();
+  return std::find(extensions.begin(), extensions.end(), lower_extension(path)) != extensions.end();
+}
+
 core::SurfaceMesh read_mesh(const std::filesystem::path& path, LengthUnit unit) {
-  const std::string file = path.string();
-  if (!std::filesystem::is_regular_file(path)) {
-    throw core::InputError("no such file", {file, "", ""});
-  }
-  Assimp::Importer importer;
-  // Triangulate polygons, bake node transforms, join duplicated vertices (STL stores each
-  // triangle's corners separately), and drop points and lines.
-  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-  unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
-                   aiProcess_PreTransformVertices | aiProcess_SortByPType;
-  // STL gives each triangle corner its face normal, which keeps corners apart when vertices
-  // are joined; drop those normals and compute smooth ones from the welded mesh instead.
-  const bool facet_normals_only = path.extension() == ".stl" || path.extension() == ".STL";
-  if (facet_normals_only) flags |= aiProcess_DropNormals;
-  const aiScene* scene = importer.ReadFile(file, flags);
-  if (scene == nullptr) {
-    throw core::InputError(std::string("cannot read mesh: ") + importer.GetErrorString(), {file, "", ""});
-  }
-  const double scale = metres_per(unit);
+  const std::string extension = lower_extension(path);
   core::SurfaceMesh mesh;
-  bool all_have_normals = true, all_have_uvs = true;
-  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
-    const aiMesh* part = scene->mMeshes[m];
-    if ((part->mPrimitiveTypes & aiPrimitiveType_TRIANGLE) == 0) continue;
-    all_have_normals = all_have_normals && part->HasNormals();
-    all_have_uvs = all_have_uvs && part->HasTextureCoords(0);
+  if (extension == ".msh") {
+    mesh = gmsh_surface(read_gmsh_file(path), path.string());
+  } else if (is_vtk(extension)) {
+    mesh = read_vtk_surface(path);
+  } else {
+    mesh = read_assimp_surface(path);
   }
-  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
-    const aiMesh* part = scene->mMeshes[m];
-    if ((part->mPrimitiveTypes & aiPrimitiveType_TRIANGLE) == 0) continue;
-    const int offset = static_cast<int>(mesh.vertices.size());
-    for (unsigned v = 0; v < part->mNumVertices; ++v) {
-      const aiVector3D& p = part->mVertices[v];
-      mesh.vertices.emplace_back(scale * static_cast<double>(p.x), scale * static_cast<double>(p.y),
-                                 scale * static_cast<double>(p.z));
-      if (all_have_normals) {
-        const aiVector3D& n = part->mNormals[v];
-        mesh.normals.emplace_back(n.x, n.y, n.z);
-      }
-      if (all_have_uvs) {
-        const aiVector3D& uv = part->mTextureCoords[0][v];
-        mesh.uvs.emplace_back(uv.x, uv.y);
-      }
-    }
-    for (unsigned f = 0; f < part->mNumFaces; ++f) {
-      const aiFace& face = part->mFaces[f];
-      if (face.mNumIndices != 3) continue;
-      mesh.triangles.push_back({offset + static_cast<int>(face.mIndices[0]),
-                                offset + static_cast<int>(face.mIndices[1]),
-                                offset + static_cast<int>(face.mIndices[2])});
-    }
+  check_surface_integrity(mesh, path.string());
+  scale(mesh.vertices, metres_per(unit));
+  return mesh;
+}
+
+core::TetMesh read_tet_mesh(const std::filesystem::path& path, LengthUnit unit) {
+  const std::string extension = lower_extension(path);
+  if (!may_hold_tetrahedra(path)) {
+    throw core::UsageError("\"" + path.string() +
+                           "\" cannot hold a tetrahedral mesh; use .msh, .vtu or .vtk");
   }
-  if (mesh.triangles.empty()) throw core::InputError("file holds no triangles", {file, "", ""});
-  core::check_surface_mesh(mesh, file);
-  if (facet_normals_only) core::compute_vertex_normals(mesh);
+  core::TetMesh mesh = extension == ".msh" ? gmsh_tet_mesh(read_gmsh_file(path), path.string())
+                                           : read_vtk_tet_mesh(path);
+  const double factor = metres_per(unit);
+  scale(mesh.nodes, factor);
+  // Masses are per node and do not scale with length.
   return mesh;
 }
 

@@ -1,0 +1,74 @@
+#include "importers/mesh/assimp_mesh_file.h"
+
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <assimp/Importer.hpp>
+
+#include "core/error.h"
+#include "importers/mesh/mesh_integrity.h"
+
+namespace viscera::importers {
+
+core::SurfaceMesh read_assimp_surface(const std::filesystem::path& path) {
+  const std::string file = path.string();
+  if (!std::filesystem::is_regular_file(path)) {
+    throw core::InputError("no such file", {file, "", ""});
+  }
+  Assimp::Importer importer;
+  // Triangulate polygons, bake node transforms, check indices, and drop points and lines.
+  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
+                              aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+  unsigned flags = aiProcess_Triangulate | aiProcess_PreTransformVertices | aiProcess_SortByPType |
+                   aiProcess_ValidateDataStructure;
+  // STL gives each triangle corner its face normal, which keeps corners apart when vertices
+  // are joined; drop those normals and compute smooth ones from the welded mesh instead.
+  const bool facet_normals_only = path.extension() == ".stl" || path.extension() == ".STL";
+  if (facet_normals_only) flags |= aiProcess_DropNormals;
+  const aiScene* scene = importer.ReadFile(file, flags);
+  if (scene == nullptr) {
+    throw core::InputError(std::string("cannot read mesh: ") + importer.GetErrorString(),
+                           {file, "", ""});
+  }
+  core::SurfaceMesh mesh;
+  bool all_have_normals = true, all_have_uvs = true;
+  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+    const aiMesh* part = scene->mMeshes[m];
+    if ((part->mPrimitiveTypes & aiPrimitiveType_TRIANGLE) == 0) continue;
+    all_have_normals = all_have_normals && part->HasNormals();
+    all_have_uvs = all_have_uvs && part->HasTextureCoords(0);
+  }
+  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+    const aiMesh* part = scene->mMeshes[m];
+    if ((part->mPrimitiveTypes & aiPrimitiveType_TRIANGLE) == 0) continue;
+    const int offset = static_cast<int>(mesh.vertices.size());
+    for (unsigned v = 0; v < part->mNumVertices; ++v) {
+      const aiVector3D& p = part->mVertices[v];
+      mesh.vertices.emplace_back(static_cast<double>(p.x), static_cast<double>(p.y),
+                                 static_cast<double>(p.z));
+      if (all_have_normals) {
+        const aiVector3D& n = part->mNormals[v];
+        mesh.normals.emplace_back(n.x, n.y, n.z);
+      }
+      if (all_have_uvs) {
+        const aiVector3D& uv = part->mTextureCoords[0][v];
+        mesh.uvs.emplace_back(uv.x, uv.y);
+      }
+    }
+    for (unsigned f = 0; f < part->mNumFaces; ++f) {
+      const aiFace& face = part->mFaces[f];
+      if (face.mNumIndices != 3) continue;
+      mesh.triangles.push_back({offset + static_cast<int>(face.mIndices[0]),
+                                offset + static_cast<int>(face.mIndices[1]),
+                                offset + static_cast<int>(face.mIndices[2])});
+    }
+  }
+  if (mesh.triangles.empty()) throw core::InputError("file holds no triangles", {file, "", ""});
+  // Corners are joined here, exactly: assimp's aiProcess_JoinIdenticalVertices uses a tolerance
+  // of the bounding box that merges distinct corners of small meshes into pinches.
+  join_identical_vertices(mesh);
+  if (facet_normals_only) core::compute_vertex_normals(mesh);
+  return mesh;
+}
+
+}  // namespace viscera::importers

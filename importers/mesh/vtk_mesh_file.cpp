@@ -1,0 +1,238 @@
+#include "importers/mesh/vtk_mesh_file.h"
+
+#include <vtkCellData.h>
+#include <vtkCellType.h>
+#include <vtkDataSetSurfaceFilter.h>
+#include <vtkGenericCell.h>
+#include <vtkGenericDataObjectReader.h>
+#include <vtkIdList.h>
+#include <vtkLogger.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+#include <vtkStringOutputWindow.h>
+#include <vtkTriangleFilter.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLPolyDataReader.h>
+#include <vtkXMLUnstructuredGridReader.h>
+
+#include <algorithm>
+
+#include "core/error.h"
+#include "importers/mesh/mesh_integrity.h"
+#include "importers/mesh/no_tetrahedra_error.h"
+
+namespace viscera::importers {
+namespace {
+
+/// The first error VTK reports anywhere while it lives (the reader or the parsers and streams it
+/// creates), without its "ERROR: In <source>, line N" preamble; nothing reaches the terminal.
+/// Global VTK state, like core::ScopedVtkSilence: not for concurrent use from several threads.
+class VtkErrorCapture {
+ public:
+  VtkErrorCapture()
+      : previous_(vtkOutputWindow::GetInstance()),
+        display_(vtkObject::GetGlobalWarningDisplay()),
+        stderr_verbosity_(vtkLogger::GetCurrentVerbosityCutoff()) {
+    vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+    previous_->Register(nullptr);
+    capture_->SetDisplayModeToAlways();  // to the capture, not to vtkLogger on the terminal
+    vtkOutputWindow::SetInstance(capture_);
+    vtkObject::GlobalWarningDisplayOn();
+  }
+  ~VtkErrorCapture() {
+    vtkOutputWindow::SetInstance(previous_);
+    previous_->UnRegister(nullptr);
+    vtkObject::SetGlobalWarningDisplay(display_);
+    vtkLogger::SetStderrVerbosity(stderr_verbosity_);
+  }
+  VtkErrorCapture(const VtkErrorCapture&) = delete;
+  VtkErrorCapture& operator=(const VtkErrorCapture&) = delete;
+
+  /// The first error's message, or empty.
+  std::string first_error() {
+    std::string text = capture_->GetOutput();
+    const auto error = text.find("ERROR");
+    if (error == std::string::npos) return {};
+    text = text.substr(error);
+    if (const auto at = text.find("): "); at != std::string::npos) text = text.substr(at + 3);
+    if (const auto newline = text.find('\n'); newline != std::string::npos)
+      text = text.substr(0, newline);
+    return text.empty() ? "unknown error" : text;
+  }
+
+ private:
+  vtkNew<vtkStringOutputWindow> capture_;
+  vtkOutputWindow* previous_;
+  int display_;
+  vtkLogger::Verbosity stderr_verbosity_;
+};
+
+std::string lower_extension(const std::filesystem::path& path) {
+  std::string extension = path.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
+  return extension;
+}
+
+/// Reads the file with the VTK reader its extension calls for; throws naming VTK's reason.
+vtkSmartPointer<vtkDataSet> read_dataset(const std::filesystem::path& path) {
+  const std::string file = path.string();
+  if (!std::filesystem::is_regular_file(path))
+    throw core::InputError("no such file", {file, "", ""});
+  const std::string extension = lower_extension(path);
+  vtkSmartPointer<vtkAlgorithm> reader;
+  if (extension == ".vtp") {
+    auto xml = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+    xml->SetFileName(file.c_str());
+    reader = xml;
+  } else if (extension == ".vtu") {
+    auto xml = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
+    xml->SetFileName(file.c_str());
+    reader = xml;
+  } else {
+    auto legacy = vtkSmartPointer<vtkGenericDataObjectReader>::New();
+    legacy->SetFileName(file.c_str());
+    reader = legacy;
+  }
+  std::string error;
+  {
+    VtkErrorCapture capture;  // reported once below, as a typed error
+    reader->Update();
+    error = capture.first_error();
+  }
+  if (!error.empty()) throw core::InputError("VTK cannot read the file: " + error, {file, "", ""});
+  vtkSmartPointer<vtkDataSet> data = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0));
+  if (data == nullptr || (vtkPolyData::SafeDownCast(data) == nullptr &&
+                          vtkUnstructuredGrid::SafeDownCast(data) == nullptr)) {
+    throw core::InputError("not a VTK polydata or unstructured grid file", {file, "", ""});
+  }
+  if (data->GetNumberOfPoints() == 0)
+    throw core::InputError("the file holds no points", {file, "", ""});
+  return data;
+}
+
+vtkDataArray* array_with(vtkFieldData* data, const char* name, int components) {
+  vtkDataArray* array = data->GetArray(name);
+  return array != nullptr && array->GetNumberOfComponents() == components ? array : nullptr;
+}
+
+}  // namespace
+
+core::SurfaceMesh read_vtk_surface(const std::filesystem::path& path) {
+  const vtkSmartPointer<vtkDataSet> data = read_dataset(path);
+  vtkSmartPointer<vtkPolyData> polydata = vtkPolyData::SafeDownCast(data);
+  if (polydata == nullptr) {
+    vtkNew<vtkDataSetSurfaceFilter> outer;
+    outer->SetInputData(data);
+    outer->Update();
+    polydata = outer->GetOutput();
+  }
+  vtkNew<vtkTriangleFilter> triangulate;
+  triangulate->PassVertsOff();
+  triangulate->PassLinesOff();
+  triangulate->SetInputData(polydata);
+  triangulate->Update();
+  vtkPolyData* triangles = triangulate->GetOutput();
+  if (triangles->GetNumberOfPolys() == 0)
+    throw core::InputError("the file holds no triangles", {path.string(), "", ""});
+
+  core::SurfaceMesh surface;
+  const vtkIdType n = triangles->GetNumberOfPoints();
+  surface.vertices.resize(static_cast<std::size_t>(n));
+  for (vtkIdType i = 0; i < n; ++i)
+    triangles->GetPoint(i, surface.vertices[static_cast<std::size_t>(i)].data());
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < triangles->GetNumberOfCells(); ++c) {
+    if (triangles->GetCellType(c) != VTK_TRIANGLE) continue;
+    triangles->GetCellPoints(c, ids);
+    surface.triangles.push_back({static_cast<int>(ids->GetId(0)), static_cast<int>(ids->GetId(1)),
+                                 static_cast<int>(ids->GetId(2))});
+  }
+  vtkPointData* points = triangles->GetPointData();
+  vtkDataArray* normals =
+      points->GetNormals() != nullptr ? points->GetNormals() : array_with(points, "Normals", 3);
+  if (normals != nullptr && normals->GetNumberOfComponents() == 3) {
+    surface.normals.resize(surface.vertices.size());
+    for (vtkIdType i = 0; i < n; ++i)
+      normals->GetTuple(i, surface.normals[static_cast<std::size_t>(i)].data());
+  }
+  vtkDataArray* uvs =
+      points->GetTCoords() != nullptr ? points->GetTCoords() : array_with(points, "UV", 2);
+  if (uvs != nullptr && uvs->GetNumberOfComponents() >= 2) {
+    surface.uvs.resize(surface.vertices.size());
+    for (vtkIdType i = 0; i < n; ++i)
+      surface.uvs[static_cast<std::size_t>(i)] =
+          core::Vec2(uvs->GetComponent(i, 0), uvs->GetComponent(i, 1));
+  }
+  return surface;
+}
+
+core::TetMesh read_vtk_tet_mesh(const std::filesystem::path& path) {
+  const std::string file = path.string();
+  const vtkSmartPointer<vtkDataSet> data = read_dataset(path);
+  std::vector<int> index(static_cast<std::size_t>(data->GetNumberOfPoints()), -1);
+  std::vector<vtkIdType> tet_cells;
+  std::vector<std::array<vtkIdType, 4>> corners;
+  vtkNew<vtkIdList> ids;
+  vtkIdType other_volume_cells = 0;
+  vtkNew<vtkGenericCell> cell;
+  for (vtkIdType c = 0; c < data->GetNumberOfCells(); ++c) {
+    const int type = data->GetCellType(c);
+    if (type == VTK_TETRA || type == VTK_QUADRATIC_TETRA) {
+      data->GetCellPoints(c, ids);
+      corners.push_back({ids->GetId(0), ids->GetId(1), ids->GetId(2), ids->GetId(3)});
+      for (const vtkIdType p : corners.back())
+        index[static_cast<std::size_t>(p)] = 0;
+      tet_cells.push_back(c);
+    } else {
+      data->GetCell(c, cell);
+      if (cell->GetCellDimension() == 3) ++other_volume_cells;
+    }
+  }
+  if (other_volume_cells > 0) {
+    throw core::InputError(
+        "the file holds " + std::to_string(other_volume_cells) +
+            " volume cells that are not tetrahedra; only tetrahedral meshes are read",
+        {file, "", ""});
+  }
+  if (corners.empty()) throw NoTetrahedraError("the file holds no tetrahedra", {file, "", ""});
+
+  core::TetMesh mesh;
+  std::vector<vtkIdType> kept;
+  for (std::size_t p = 0; p < index.size(); ++p) {
+    if (index[p] < 0) continue;
+    index[p] = static_cast<int>(mesh.nodes.size());
+    kept.push_back(static_cast<vtkIdType>(p));
+    core::Vec3 x;
+    data->GetPoint(static_cast<vtkIdType>(p), x.data());
+    mesh.nodes.push_back(x);
+  }
+  for (const auto& c : corners) {
+    mesh.tets.push_back(
+        {index[static_cast<std::size_t>(c[0])], index[static_cast<std::size_t>(c[1])],
+         index[static_cast<std::size_t>(c[2])], index[static_cast<std::size_t>(c[3])]});
+  }
+  for (const char* name : {"tet_label", "gmsh:physical", "CellEntityIds", "MaterialIds"}) {
+    if (vtkDataArray* labels = array_with(data->GetCellData(), name, 1)) {
+      for (const vtkIdType c : tet_cells)
+        mesh.tet_labels.push_back(static_cast<int>(labels->GetComponent(c, 0)));
+      break;
+    }
+  }
+  if (vtkDataArray* mass = array_with(data->GetPointData(), "node_mass", 1)) {
+    for (const vtkIdType p : kept)
+      mesh.node_mass.push_back(mass->GetComponent(p, 0));
+  }
+  if (vtkDataArray* fixed = array_with(data->GetPointData(), "fixed", 1)) {
+    for (const vtkIdType p : kept)
+      mesh.fixed.push_back(fixed->GetComponent(p, 0) != 0.0 ? 1 : 0);
+  }
+  core::orient_tets_positively(mesh);
+  core::check_tet_mesh(mesh, file);
+  mesh.surface_faces = checked_boundary_faces(mesh, file);
+  return mesh;
+}
+
+}  // namespace viscera::importers

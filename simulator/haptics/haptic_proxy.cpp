@@ -14,7 +14,8 @@ ProxySurface::ProxySurface(std::vector<core::Triangle> faces) : faces_(std::move
   // consistently oriented surface.
   std::map<std::pair<int, int>, std::pair<int, int>> edge_owner;  // (a, b) → (triangle, edge)
   for (std::size_t t = 0; t < faces_.size(); ++t) {
-    for (int e = 0; e < 3; ++e) edge_owner[{faces_[t][e], faces_[t][(e + 1) % 3]}] = {static_cast<int>(t), e};
+    for (int e = 0; e < 3; ++e)
+      edge_owner[{faces_[t][e], faces_[t][(e + 1) % 3]}] = {static_cast<int>(t), e};
   }
   for (std::size_t t = 0; t < faces_.size(); ++t) {
     for (int e = 0; e < 3; ++e) {
@@ -69,12 +70,17 @@ void HapticProxy::reset(const core::Vec3& position) {
   contact_ = {};
 }
 
-core::Vec3 HapticProxy::force() const { return in_contact() ? core::Vec3(stiffness_ * (proxy_ - tip_)) : core::Vec3::Zero(); }
+core::Vec3 HapticProxy::force() const {
+  return in_contact() ? core::Vec3(stiffness_ * (proxy_ - tip_)) : core::Vec3::Zero();
+}
 
-void HapticProxy::update(const core::Vec3& tip, const ProxySurface& surface, std::span<const core::Vec3> x) {
+void HapticProxy::update(const core::Vec3& tip, const ProxySurface& surface,
+                         std::span<const core::Vec3> x) {
   tip_ = tip;
   const auto& faces = surface.faces();
-  const auto corner = [&](int t, int k) -> const core::Vec3& { return x[faces[static_cast<std::size_t>(t)][k]]; };
+  const auto corner = [&](int t, int k) -> const core::Vec3& {
+    return x[faces[static_cast<std::size_t>(t)][k]];
+  };
 
   if (in_contact()) {
     // The surface moved since the last update: the proxy rides on its triangle.
@@ -88,15 +94,18 @@ void HapticProxy::update(const core::Vec3& tip, const ProxySurface& surface, std
       // Walk towards the point of the surface nearest to the tip.
       int current = t;
       std::array<double, 3> w{};
-      core::Vec3 best = closest_point_on_triangle(tip, corner(current, 0), corner(current, 1), corner(current, 2), w);
+      core::Vec3 best = closest_point_on_triangle(tip, corner(current, 0), corner(current, 1),
+                                                  corner(current, 2), w);
       for (int step = 0; step < 256; ++step) {
         int across = -1;
         for (int e = 0; e < 3; ++e) {
-          if (w[(e + 2) % 3] == 0.0 && surface.neighbour(current, e) >= 0) across = surface.neighbour(current, e);
+          if (w[(e + 2) % 3] == 0.0 && surface.neighbour(current, e) >= 0)
+            across = surface.neighbour(current, e);
         }
         if (across < 0) break;
         std::array<double, 3> w_next{};
-        const core::Vec3 next = closest_point_on_triangle(tip, corner(across, 0), corner(across, 1), corner(across, 2), w_next);
+        const core::Vec3 next = closest_point_on_triangle(tip, corner(across, 0), corner(across, 1),
+                                                          corner(across, 2), w_next);
         if ((next - tip).squaredNorm() >= (best - tip).squaredNorm()) break;
         current = across;
         best = next;
@@ -127,9 +136,42 @@ void HapticProxy::update(const core::Vec3& tip, const ProxySurface& surface, std
     return;
   }
   std::array<double, 3> w{};
-  proxy_ = closest_point_on_triangle(proxy_ + first * (tip - proxy_), corner(hit, 0), corner(hit, 1), corner(hit, 2), w);
+  proxy_ = closest_point_on_triangle(proxy_ + first * (tip - proxy_), corner(hit, 0),
+                                     corner(hit, 1), corner(hit, 2), w);
   contact_ = {hit, w};
   update(tip, surface, x);  // settle on the surface point nearest the tip
+}
+
+bool HapticProxy::recapture(const ProxySurface& surface, std::span<const core::Vec3> x) {
+  if (in_contact()) return false;
+  const auto& faces = surface.faces();
+  // A direction no mesh built on axes or regular polyhedra lines up with, so the ray meets
+  // edges and vertices only by accident; far enough to leave any body of a scene in metres.
+  const core::Vec3 far =
+      tip_ + 1.0e3 * core::Vec3(0.5773502691896257, 0.5773662691896258, 0.5773342691896259);
+  int crossings = 0;
+  for (const auto& f : faces) {
+    if (segment_triangle_intersection(tip_, far, x[f[0]], x[f[1]], x[f[2]]) >= 0.0) ++crossings;
+  }
+  if (crossings % 2 == 0) return false;
+  int nearest = -1;
+  double best = std::numeric_limits<double>::infinity();
+  std::array<double, 3> w{}, best_w{};
+  core::Vec3 point = tip_;
+  for (std::size_t t = 0; t < faces.size(); ++t) {
+    const core::Vec3 p =
+        closest_point_on_triangle(tip_, x[faces[t][0]], x[faces[t][1]], x[faces[t][2]], w);
+    if ((p - tip_).squaredNorm() < best) {
+      best = (p - tip_).squaredNorm();
+      nearest = static_cast<int>(t);
+      best_w = w;
+      point = p;
+    }
+  }
+  if (nearest < 0) return false;
+  proxy_ = point;
+  contact_ = {nearest, best_w};
+  return true;
 }
 
 }  // namespace viscera::sim

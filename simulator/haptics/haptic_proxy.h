@@ -44,7 +44,8 @@ class HapticProxy {
   /// proxy goes to the tip unless the segment from the old proxy to the tip enters the surface
   /// from outside, which starts a contact at the crossing. In contact: the proxy walks over the
   /// surface to the point nearest the tip, or is released when the tip is back outside.
-  void update(const core::Vec3& tip, const ProxySurface& surface, std::span<const core::Vec3> positions);
+  void update(const core::Vec3& tip, const ProxySurface& surface,
+              std::span<const core::Vec3> positions);
 
   const core::Vec3& proxy() const { return proxy_; }
   const ProxyContact& contact() const { return contact_; }
@@ -53,6 +54,11 @@ class HapticProxy {
   core::Vec3 force() const;
   /// Places the proxy at `position` with no contact (a tool entering the scene).
   void reset(const core::Vec3& position);
+  /// For a free proxy whose tip lies inside the closed `surface` (a moving wall swept over the
+  /// tip, which the path test of update() cannot see): starts the contact at the surface point
+  /// nearest the tip and returns true. Inside is decided by the parity of the crossings of a
+  /// ray from the tip. Does nothing (false) in contact or with the tip outside.
+  bool recapture(const ProxySurface& surface, std::span<const core::Vec3> positions);
 
  private:
   double stiffness_;
@@ -63,9 +69,9 @@ class HapticProxy {
 
 /// Spreads a force applied at a surface point to the three nodes of its triangle by the
 /// point's barycentric weights; returns (node, force) triples in node order of the triangle.
-std::array<std::pair<int, core::Vec3>, 3> distribute_to_triangle(const core::Triangle& triangle,
-                                                                 const std::array<double, 3>& barycentric,
-                                                                 const core::Vec3& force);
+std::array<std::pair<int, core::Vec3>, 3> distribute_to_triangle(
+    const core::Triangle& triangle, const std::array<double, 3>& barycentric,
+    const core::Vec3& force);
 
 /// The closest point to `p` on triangle (a, b, c) and its barycentric coordinates
 /// (Ericson 2005, Real-Time Collision Detection §5.1.5).

@@ -9,65 +9,128 @@
 
 namespace viscera::sim {
 
-ScriptedTrajectory ScriptedTrajectory::from_json(const nlohmann::json& json, const std::string& file) {
+ScriptedTrajectory ScriptedTrajectory::from_json(const nlohmann::json& json,
+                                                 const std::string& file, double optics_angle) {
   const auto fail = [&file](const std::string& pointer, const std::string& message) {
     throw core::InputError(message, {file, pointer, ""});
   };
   if (!json.is_object() || json.value("format", std::string()) != "viscera-script") {
     fail("/format", "not a Viscera script (format must be \"viscera-script\")");
   }
-  if (json.value("version", 0) != 1) fail("/version", "script version must be 1");
+  const int version = json.value("version", 0);
+  if (version != 1 && version != 2) fail("/version", "script version must be 1 or 2");
   ScriptedTrajectory script;
-  script.body_ = json.value("body", std::string());
-  if (script.body_.empty()) fail("/body", "names no body for the instrument to touch");
-  script.stiffness_ = json.value("stiffness", 200.0);
+  try {
+    script.body_ = json.value("body", std::string());
+    script.stiffness_ = json.value("stiffness", 200.0);
+    script.perforation_depth_ = json.value("perforation_depth", 0.0);
+    script.force_warning_ = json.value("force_warning", 0.0);
+    optics_angle = json.value("optics_angle", optics_angle);
+  } catch (const nlohmann::json::exception& e) {
+    fail("", std::string("a top-level member has the wrong type: ") + e.what());
+  }
+  if (version == 1 && script.body_.empty())
+    fail("/body", "names no body for the instrument to touch");
   if (!(script.stiffness_ > 0.0)) fail("/stiffness", "stiffness must be positive (N/m)");
-  script.perforation_depth_ = json.value("perforation_depth", 0.0);
-  if (!(script.perforation_depth_ >= 0.0)) fail("/perforation_depth", "perforation depth must be ≥ 0 (m)");
-  script.force_warning_ = json.value("force_warning", 0.0);
-  if (!(script.force_warning_ >= 0.0)) fail("/force_warning", "force warning level must be ≥ 0 (N)");
+  if (!(script.perforation_depth_ >= 0.0))
+    fail("/perforation_depth", "perforation depth must be ≥ 0 (m)");
+  if (!(script.force_warning_ >= 0.0))
+    fail("/force_warning", "force warning level must be ≥ 0 (N)");
   const auto waypoints = json.find("waypoints");
-  if (waypoints == json.end() || !waypoints->is_array() || waypoints->empty()) fail("/waypoints", "needs at least one waypoint");
+  if (waypoints == json.end() || !waypoints->is_array() || waypoints->empty())
+    fail("/waypoints", "needs at least one waypoint");
+  InstrumentState previous;
   for (std::size_t i = 0; i < waypoints->size(); ++i) {
     const std::string pointer = "/waypoints/" + std::to_string(i);
+    const auto& w = (*waypoints)[i];
+    InstrumentState s = previous;
+    s.abort = false;
+    double t = 0.0;
     try {
-      const double t = (*waypoints)[i].at("t").get<double>();
-      const core::Vec3 tip = (*waypoints)[i].at("tip").get<core::Vec3>();
-      if ((i == 0 && t != 0.0) || (i > 0 && !(t > script.times_.back())) || !tip.allFinite()) {
-        fail(pointer, "waypoint times must start at 0 and increase, tips must be finite");
+      t = w.at("t").get<double>();
+      s.tip = w.at("tip").get<core::Vec3>();
+      if (w.contains("axis")) s.axis = w["axis"].get<core::Vec3>();
+      if (w.contains("up")) s.up = w["up"].get<core::Vec3>();
+      s.inflow = w.value("inflow", s.inflow);
+      s.outflow = w.value("outflow", s.outflow);
+      s.abort = w.value("abort", false);
+      if (w.contains("look_at")) {
+        const InstrumentState looking =
+            look_at(s.tip, w["look_at"].get<core::Vec3>(), s.axis, optics_angle);
+        s.axis = looking.axis;
+        s.up = looking.up;
       }
-      script.times_.push_back(t);
-      script.tips_.push_back(tip);
     } catch (const nlohmann::json::exception& e) {
-      fail(pointer, std::string("waypoint needs \"t\" (s) and \"tip\" [x, y, z] (m): ") + e.what());
+      fail(
+          pointer,
+          std::string(
+              "waypoint needs \"t\" (s) and \"tip\" [x, y, z] (m), optional vectors and valves: ") +
+              e.what());
     }
+    if ((i == 0 && t != 0.0) || (i > 0 && !(t > script.times_.back())) || !s.tip.allFinite() ||
+        !s.axis.allFinite() || s.axis.norm() == 0.0) {
+      fail(pointer, "waypoint times must start at 0 and increase, tips and axes must be finite");
+    }
+    if (s.inflow < 0.0 || s.inflow > 1.0 || s.outflow < 0.0 || s.outflow > 1.0) {
+      fail(pointer, "valve openings must lie in [0, 1]");
+    }
+    orthonormalise(s);
+    if (s.abort && script.abort_time_ < 0.0) script.abort_time_ = t;
+    s.abort = false;  // abort is an event at its time, not a state to blend
+    script.times_.push_back(t);
+    script.states_.push_back(s);
+    previous = s;
   }
   return script;
 }
 
-ScriptedTrajectory ScriptedTrajectory::read(const std::string& path) {
+ScriptedTrajectory ScriptedTrajectory::read(const std::string& path, double optics_angle) {
   std::ifstream in(path);
   if (!in) throw core::InputError("cannot open script", {path, "", ""});
   std::stringstream text;
   text << in.rdbuf();
   try {
-    return from_json(nlohmann::json::parse(text.str()), path);
+    return from_json(nlohmann::json::parse(text.str()), path, optics_angle);
   } catch (const nlohmann::json::parse_error& e) {
-    throw core::InputError("not valid JSON (syntax error at byte " + std::to_string(e.byte) + ")", {path, "", ""});
+    throw core::InputError("not valid JSON (syntax error at byte " + std::to_string(e.byte) + ")",
+                           {path, "", ""});
   }
 }
 
-core::Vec3 ScriptedTrajectory::tip(long long /*step*/, double time) const {
-  if (time <= times_.front()) return tips_.front();
-  if (time >= times_.back()) return tips_.back();
-  const auto next = static_cast<std::size_t>(std::upper_bound(times_.begin(), times_.end(), time) - times_.begin());
-  const double f = (time - times_[next - 1]) / (times_[next] - times_[next - 1]);
-  return (1.0 - f) * tips_[next - 1] + f * tips_[next];
+InstrumentState ScriptedTrajectory::state(long long /*step*/, double time) const {
+  InstrumentState s;
+  if (time <= times_.front()) {
+    s = states_.front();
+  } else if (time >= times_.back()) {
+    s = states_.back();
+  } else {
+    const auto next = static_cast<std::size_t>(
+        std::upper_bound(times_.begin(), times_.end(), time) - times_.begin());
+    const double f = (time - times_[next - 1]) / (times_[next] - times_[next - 1]);
+    s = blend(states_[next - 1], states_[next], f);
+  }
+  s.abort = abort_time_ >= 0.0 && time >= abort_time_;
+  return s;
 }
 
-core::Vec3 RecordedInput::tip(long long step, double /*time*/) const {
-  if (tips_.empty()) return core::Vec3::Zero();
-  return tips_[static_cast<std::size_t>(std::clamp<long long>(step, 0, static_cast<long long>(tips_.size()) - 1))];
+RecordedInput::RecordedInput(std::vector<std::pair<long long, InstrumentState>> changes)
+    : changes_(std::move(changes)) {}
+
+RecordedInput RecordedInput::from_tips(const std::vector<core::Vec3>& tips) {
+  std::vector<std::pair<long long, InstrumentState>> changes(tips.size());
+  for (std::size_t i = 0; i < tips.size(); ++i) {
+    changes[i].first = static_cast<long long>(i);
+    changes[i].second.tip = tips[i];
+  }
+  return RecordedInput(std::move(changes));
+}
+
+InstrumentState RecordedInput::state(long long step, double /*time*/) const {
+  if (changes_.empty()) return {};
+  const auto after =
+      std::upper_bound(changes_.begin(), changes_.end(), step,
+                       [](long long s, const auto& change) { return s < change.first; });
+  return after == changes_.begin() ? changes_.front().second : std::prev(after)->second;
 }
 
 }  // namespace viscera::sim

@@ -1,43 +1,55 @@
 #pragma once
-/// Where the instrument tip is at each physics step of a deterministic session: a scripted
-/// trajectory of timed waypoints, or the tips recorded from an earlier session (DESIGN.md §5:
-/// input sources of a session).
+/// Where the instrument is and what the trainee does at each physics step of a deterministic
+/// session: a scripted trajectory of timed waypoints, or the states recorded from an earlier
+/// session (DESIGN.md §5: input sources of a session).
 
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
-#include "core/math_types.h"
+#include "simulator/session/instrument_state.h"
 
 namespace viscera::sim {
 
-/// A source of instrument tip positions, queried once per physics step.
+/// A source of instrument states, queried once per physics step.
 class InstrumentInput {
  public:
   virtual ~InstrumentInput() = default;
-  /// Tip position in m for physics step `step` at time `time` s.
-  virtual core::Vec3 tip(long long step, double time) const = 0;
+  /// The instrument at physics step `step`, time `time` s.
+  virtual InstrumentState state(long long step, double time) const = 0;
+  /// Tip position in m at that step.
+  core::Vec3 tip(long long step, double time) const { return state(step, time).tip; }
 };
 
-/// A scripted trajectory (issue 8: "JSON waypoints with tool and valve states"): the tip moves
-/// in straight lines between timed waypoints and rests at the last one.
+/// A scripted trajectory (issue 8: "JSON waypoints with tool and valve states"): the instrument
+/// moves in straight lines between timed waypoints and rests at the last one.
 ///
-///   {"format": "viscera-script", "version": 1, "body": "ball", "stiffness": 200,
-///    "waypoints": [{"t": 0.0, "tip": [x, y, z]}, …]}     (t in s, tip in m, stiffness N/m)
+///   {"format": "viscera-script", "version": 1 or 2, "body": "uterus", "stiffness": 200,
+///    "optics_angle": 30,
+///    "waypoints": [{"t": 0.0, "tip": [x, y, z], "axis": [x, y, z], "up": [x, y, z],
+///                   "look_at": [x, y, z], "inflow": 1, "outflow": 0.5, "abort": false}, …]}
+///
+/// t in s, positions in m, stiffness in N/m, optics angle in degrees. Version 1 scripts carry
+/// only "tip"; "axis" (default: the previous waypoint's, or +z) and "up" set the shaft and the
+/// roll of the optics, or "look_at" points the angled optics at a point (the shaft stays on the
+/// side of the previous axis). Valve openings are in [0, 1] and hold until changed. "body"
+/// names the object the tool touches (optional: the first simulated body).
 class ScriptedTrajectory final : public InstrumentInput {
  public:
   /// Parses a script; throws core::InputError naming `file` and the JSON pointer of a bad
-  /// member (times must start at 0 and increase).
-  static ScriptedTrajectory from_json(const nlohmann::json& json, const std::string& file);
+  /// member (times must start at 0 and increase). `optics_angle` (°) serves "look_at" when the
+  /// script does not state its own.
+  static ScriptedTrajectory from_json(const nlohmann::json& json, const std::string& file,
+                                      double optics_angle = 0.0);
   /// Reads a script file; throws core::InputError when it cannot be read or parsed.
-  static ScriptedTrajectory read(const std::string& path);
+  static ScriptedTrajectory read(const std::string& path, double optics_angle = 0.0);
 
-  core::Vec3 tip(long long step, double time) const override;
+  InstrumentState state(long long step, double time) const override;
 
   const std::string& body() const { return body_; }
   double stiffness() const { return stiffness_; }
-  /// Wall thickness in m past which the tool perforates (0: no check) and force warning level
-  /// in N (0: none), from the script's optional "perforation_depth" and "force_warning".
+  /// Wall thickness in m past which the tool perforates (0: no override) and force warning
+  /// level in N (0: none), from the script's optional "perforation_depth" and "force_warning".
   double perforation_depth() const { return perforation_depth_; }
   double force_warning() const { return force_warning_; }
   /// Time of the last waypoint in s.
@@ -48,19 +60,23 @@ class ScriptedTrajectory final : public InstrumentInput {
   double stiffness_ = 200.0;
   double perforation_depth_ = 0.0;
   double force_warning_ = 0.0;
+  double abort_time_ = -1.0;  ///< s of the first waypoint that aborts, or −1
   std::vector<double> times_;
-  std::vector<core::Vec3> tips_;
+  std::vector<InstrumentState> states_;
 };
 
-/// The tips of a recorded session: tips[s] for step s, from step 0 (where the instrument is
+/// The states of a recorded session as (step, state) changes: the state of step s is that of
+/// the last change at or before s (the first change is at step 0, where the instrument is
 /// attached); the last one holds after the end.
 class RecordedInput final : public InstrumentInput {
  public:
-  explicit RecordedInput(std::vector<core::Vec3> tips) : tips_(std::move(tips)) {}
-  core::Vec3 tip(long long step, double time) const override;
+  explicit RecordedInput(std::vector<std::pair<long long, InstrumentState>> changes);
+  /// A version-1 recording: one tip per step from step 0, the shaft along +z.
+  static RecordedInput from_tips(const std::vector<core::Vec3>& tips);
+  InstrumentState state(long long step, double time) const override;
 
  private:
-  std::vector<core::Vec3> tips_;
+  std::vector<std::pair<long long, InstrumentState>> changes_;
 };
 
 }  // namespace viscera::sim

@@ -4,7 +4,8 @@
 
 namespace viscera::sim {
 
-void SessionMetrics::record(const core::Vec3& tip, const core::Vec3& force, bool in_contact, double dt) {
+void SessionMetrics::record(const core::Vec3& tip, const core::Vec3& force, bool in_contact,
+                            double dt, double inflow) {
   if (!started_) {
     first_ = last_ = tip;
     started_ = true;
@@ -12,6 +13,7 @@ void SessionMetrics::record(const core::Vec3& tip, const core::Vec3& force, bool
   path_length_ += (tip - last_).norm();
   last_ = tip;
   duration_ += dt;
+  inflow_time_ += inflow * dt;
   if (in_contact) {
     if (!was_in_contact_) ++contacts_;
     contact_time_ += dt;
@@ -21,14 +23,39 @@ void SessionMetrics::record(const core::Vec3& tip, const core::Vec3& force, bool
   was_in_contact_ = in_contact;
 }
 
+void SessionMetrics::record_view(bool good, double dt) {
+  view_time_ += dt;
+  if (good) good_view_time_ += dt;
+}
+
 double SessionMetrics::economy() const {
-  return path_length_ > 0.0 ? std::min(1.0, (last_ - first_).norm() / path_length_) : 1.0;
+  if (!(path_length_ > 0.0)) return 1.0;
+  double straight = 0.0;
+  core::Vec3 from = first_;
+  for (const auto& m : milestones_) {
+    straight += (m - from).norm();
+    from = m;
+  }
+  straight += (last_ - from).norm();
+  return std::min(1.0, straight / path_length_);
 }
 
 nlohmann::json SessionMetrics::to_json() const {
-  return {{"duration", duration_},          {"path_length", path_length_},   {"economy_of_movement", economy()},
-          {"contacts", contacts_},          {"contact_time", contact_time_}, {"max_force", max_force_},
-          {"mean_contact_force", mean_force()}};
+  return {{"duration", duration_},
+          {"path_length", path_length_},
+          {"economy_of_movement", economy()},
+          {"contacts", contacts_},
+          {"contact_time", contact_time_},
+          {"max_force", max_force_},
+          {"mean_contact_force", mean_force()},
+          {"surface_seen", surface_seen()},
+          {"view_quality", view_quality()},
+          {"inflow_open_time", inflow_time_},
+          // The fluids issue fills this from the distension-fluid balance; until then no
+          // fluid is simulated and the report says so with null.
+          {"distension_fluid_used", nullptr},
+          {"tasks_completed", tasks_completed_},
+          {"tasks_available", tasks_available_}};
 }
 
 }  // namespace viscera::sim

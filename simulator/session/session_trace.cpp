@@ -12,27 +12,73 @@
 namespace viscera::sim {
 
 std::string package_manifest_sha256(const std::filesystem::path& package) {
-  if (std::filesystem::is_directory(package)) return core::sha256_file(package / core::kManifestFile);
-  if (!std::filesystem::exists(package)) throw core::InputError("no such package", {package.string(), "", ""});
-  return core::sha256_hex(core::read_zip_entry(package, core::kManifestFile, {core::kMaxZipEntryBytes, core::kMaxPackageBytes}));
+  if (std::filesystem::is_directory(package))
+    return core::sha256_file(package / core::kManifestFile);
+  if (!std::filesystem::exists(package))
+    throw core::InputError("no such package", {package.string(), "", ""});
+  return core::sha256_hex(core::read_zip_entry(package, core::kManifestFile,
+                                               {core::kMaxZipEntryBytes, core::kMaxPackageBytes}));
+}
+
+namespace {
+
+nlohmann::json state_to_json(long long step, const InstrumentState& s) {
+  return {step, s.tip, s.axis, s.up, s.inflow, s.outflow, s.abort};
+}
+
+std::pair<long long, InstrumentState> state_from_json(const nlohmann::json& j) {
+  InstrumentState s;
+  j.at(1).get_to(s.tip);
+  j.at(2).get_to(s.axis);
+  j.at(3).get_to(s.up);
+  j.at(4).get_to(s.inflow);
+  j.at(5).get_to(s.outflow);
+  j.at(6).get_to(s.abort);
+  return {j.at(0).get<long long>(), s};
+}
+
+}  // namespace
+
+std::unique_ptr<InstrumentInput> SessionTrace::input() const {
+  if (!script.is_null()) {
+    return std::make_unique<ScriptedTrajectory>(
+        ScriptedTrajectory::from_json(script, "the trace's script", optics_angle));
+  }
+  return std::make_unique<RecordedInput>(inputs);
 }
 
 nlohmann::json trace_to_json(const SessionTrace& t) {
   nlohmann::json checkpoints = nlohmann::json::array();
-  for (const auto& [step, hash] : t.checkpoints) checkpoints.push_back({step, hash});
-  return {{"format", "viscera-trace"}, {"version", 1},
-          {"package", t.package},      {"manifest_sha256", t.manifest_sha256},
-          {"duration", t.duration},    {"body", t.body},
-          {"stiffness", t.stiffness},  {"checkpoint_interval", t.checkpoint_interval},
-          {"tips", t.tips},            {"checkpoints", checkpoints},
-          {"final_state_hash", t.final_state_hash}};
+  for (const auto& [step, hash] : t.checkpoints)
+    checkpoints.push_back({step, hash});
+  nlohmann::json inputs = nlohmann::json::array();
+  for (const auto& [step, state] : t.inputs)
+    inputs.push_back(state_to_json(step, state));
+  return {{"format", "viscera-trace"},
+          {"version", 2},
+          {"package", t.package},
+          {"manifest_sha256", t.manifest_sha256},
+          {"duration", t.duration},
+          {"body", t.body},
+          {"stiffness", t.stiffness},
+          {"perforation_depth", t.perforation_depth},
+          {"force_warning", t.force_warning},
+          {"checkpoint_interval", t.checkpoint_interval},
+          {"script", t.script},
+          {"optics_angle", t.optics_angle},
+          {"inputs", inputs},
+          {"checkpoints", checkpoints},
+          {"final_state_hash", t.final_state_hash},
+          {"end_reason", t.end_reason}};
 }
 
 SessionTrace trace_from_json(const nlohmann::json& j, const std::string& file) {
   if (!j.is_object() || j.value("format", std::string()) != "viscera-trace") {
     throw core::ValidationError("not a Viscera session trace", {file, "/format", ""});
   }
-  if (j.value("version", 0) != 1) throw core::ValidationError("trace version must be 1", {file, "/version", ""});
+  const int version = j.value("version", 0);
+  if (version != 1 && version != 2)
+    throw core::ValidationError("trace version must be 1 or 2", {file, "/version", ""});
   SessionTrace t;
   std::string member;
   try {
@@ -48,14 +94,40 @@ SessionTrace trace_from_json(const nlohmann::json& j, const std::string& file) {
     j.at(member).get_to(t.stiffness);
     member = "checkpoint_interval";
     j.at(member).get_to(t.checkpoint_interval);
-    member = "tips";
-    j.at(member).get_to(t.tips);
+    if (version == 1) {
+      member = "tips";
+      const auto tips = j.at(member).get<std::vector<core::Vec3>>();
+      for (std::size_t i = 0; i < tips.size(); ++i) {
+        InstrumentState s;
+        s.tip = tips[i];
+        t.inputs.emplace_back(static_cast<long long>(i), s);
+      }
+    } else {
+      member = "perforation_depth";
+      j.at(member).get_to(t.perforation_depth);
+      member = "force_warning";
+      j.at(member).get_to(t.force_warning);
+      member = "script";
+      t.script = j.at(member);
+      member = "optics_angle";
+      t.optics_angle = j.value(member, 0.0);
+      member = "inputs";
+      for (const auto& change : j.at(member))
+        t.inputs.push_back(state_from_json(change));
+      member = "end_reason";
+      t.end_reason = j.value(member, std::string());
+    }
     member = "checkpoints";
-    for (const auto& c : j.at(member)) t.checkpoints.emplace_back(c.at(0).get<long long>(), c.at(1).get<std::string>());
+    for (const auto& c : j.at(member))
+      t.checkpoints.emplace_back(c.at(0).get<long long>(), c.at(1).get<std::string>());
     member = "final_state_hash";
     j.at(member).get_to(t.final_state_hash);
   } catch (const nlohmann::json::exception& e) {
     throw core::ValidationError(std::string("cannot read: ") + e.what(), {file, "/" + member, ""});
+  }
+  if (t.script.is_null() && t.inputs.empty() && !t.body.empty()) {
+    throw core::ValidationError("the trace has an instrument but neither a script nor inputs",
+                                {file, "/inputs", ""});
   }
   return t;
 }
@@ -79,7 +151,8 @@ SessionTrace read_trace(const std::filesystem::path& path) {
   try {
     return trace_from_json(nlohmann::json::parse(text.str()), path.string());
   } catch (const nlohmann::json::parse_error& e) {
-    throw core::InputError("not valid JSON (syntax error at byte " + std::to_string(e.byte) + ")", {path.string(), "", ""});
+    throw core::InputError("not valid JSON (syntax error at byte " + std::to_string(e.byte) + ")",
+                           {path.string(), "", ""});
   }
 }
 

@@ -1,18 +1,25 @@
 #pragma once
-/// Recorded sessions (DESIGN.md §5): the instrument's tip at every physics step and the state
-/// hash every N steps, so that `viscera-sim replay` can run the session again in deterministic
-/// mode and prove it bit-identical, checkpoint by checkpoint.
+/// Recorded sessions (DESIGN.md §5): the instrument's input and the state hash every N steps,
+/// so that `viscera-sim replay` can run the session again in deterministic mode and prove it
+/// bit-identical, checkpoint by checkpoint.
 ///
-///   {"format": "viscera-trace", "version": 1, "package": path, "manifest_sha256": …,
-///    "duration": s, "body": id, "stiffness": N/m, "checkpoint_interval": steps,
-///    "tips": [[x, y, z], …], "checkpoints": [[step, hash], …], "final_state_hash": …}
+///   {"format": "viscera-trace", "version": 2, "package": path, "manifest_sha256": …,
+///    "duration": s, "body": id, "stiffness": N/m, "perforation_depth": m, "force_warning": N,
+///    "checkpoint_interval": steps,
+///    "script": {viscera-script} or null,
+///    "inputs": [[step, [tip], [axis], [up], inflow, outflow, abort], …],
+///    "checkpoints": [[step, hash], …], "final_state_hash": …, "end_reason": …}
+///
+/// A scripted session stores its script (the input is a function of it); a live session stores
+/// the instrument state at every step where it changed. Version 1 traces ("tips": one tip per
+/// step) are still read.
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
-#include "core/math_types.h"
+#include "simulator/session/instrument_input.h"
 
 namespace viscera::sim {
 
@@ -23,10 +30,18 @@ struct SessionTrace {
   double duration = 0.0;
   std::string body;
   double stiffness = 0.0;
+  double perforation_depth = 0.0;  ///< m, the run's override (0: none)
+  double force_warning = 0.0;      ///< N, the run's override (0: none)
   long long checkpoint_interval = 0;
-  std::vector<core::Vec3> tips;
+  nlohmann::json script;      ///< the viscera-script of a scripted session, or null
+  double optics_angle = 0.0;  ///< ° the script's look_at was resolved with
+  std::vector<std::pair<long long, InstrumentState>> inputs;  ///< (step, state) changes
   std::vector<std::pair<long long, std::string>> checkpoints;
   std::string final_state_hash;
+  std::string end_reason;
+
+  /// The input that replays the session: the script, or the recorded states.
+  std::unique_ptr<InstrumentInput> input() const;
 };
 
 /// SHA-256 of a package's manifest (folder or .vscz); throws core::InputError naming it.

@@ -10,31 +10,61 @@ namespace viscera::sim {
 
 World::World(const core::Scenario& scenario)
     : gravity_(scenario.session.gravity), time_step_(scenario.session.time_step) {
-  if (!(time_step_ > 0.0)) throw core::InputError("session time step must be positive", {"", "/scenario/session/time_step", ""});
+  if (!(time_step_ > 0.0))
+    throw core::InputError("session time step must be positive",
+                           {"", "/scenario/session/time_step", ""});
   for (const auto& object : scenario.objects) {
-    if (object.body_kind != core::BodyKind::TetMesh && object.body_kind != core::BodyKind::MassSpring) continue;
+    if (object.body_kind != core::BodyKind::TetMesh &&
+        object.body_kind != core::BodyKind::MassSpring)
+      continue;
     core::Material material;
     if (!object.material.empty()) {
       const auto it = scenario.materials.find(object.material);
       if (it == scenario.materials.end()) {
-        throw core::InputError("unknown material id \"" + object.material + "\"", {"", "", "object " + object.id});
+        throw core::InputError("unknown material id \"" + object.material + "\"",
+                               {"", "", "object " + object.id});
       }
       material = it->second;
     }
     bodies_.emplace_back(object.id, object.body, material,
-                         object.body_kind == core::BodyKind::MassSpring ? BodyModel::KismoMassSpring : BodyModel::Teschner);
+                         object.body_kind == core::BodyKind::MassSpring ? BodyModel::KismoMassSpring
+                                                                        : BodyModel::Teschner);
   }
   const double contact_stiffness = bodies_.size() > 1 ? scenario.session.contact_stiffness : 0.0;
-  if (contact_stiffness > 0.0) contact_ = std::make_unique<ContactResponse>(bodies_, contact_stiffness);
+  if (contact_stiffness > 0.0)
+    contact_ = std::make_unique<ContactResponse>(bodies_, contact_stiffness);
   double stable = time_step_;
-  for (const auto& body : bodies_) stable = std::min(stable, body.stable_time_step(contact_stiffness));
+  for (const auto& body : bodies_)
+    stable = std::min(stable, body.stable_time_step(contact_stiffness));
   substeps_ = std::max(1, static_cast<int>(std::ceil(time_step_ / stable - 1e-12)));
 }
 
 void World::step() {
   const double h = time_step_ / substeps_;
+  if (asleep_) {
+    // Nothing moves until the instrument touches: only the proxy follows the tip.
+    if (instrument_) {
+      DeformableBody& body = bodies_[static_cast<std::size_t>(instrument_->body)];
+      instrument_->proxy.update(tool_tip_, instrument_->surface, body.positions());
+      instrument_->proxy.recapture(instrument_->surface, body.positions());
+      asleep_ = !instrument_->proxy.in_contact();
+    }
+    if (asleep_) {
+      ++steps_;
+      return;
+    }
+    calm_substeps_ = 0;
+  }
   for (int s = 0; s < substeps_; ++s) {
-    for (auto& body : bodies_) body.compute_forces(gravity_, h);
+    if (instrument_) {
+      DeformableBody& body = bodies_[static_cast<std::size_t>(instrument_->body)];
+      instrument_->proxy.update(tool_tip_, instrument_->surface, body.positions());
+      // The wall may have swung over the tip since the last sub-step (it overshoots when
+      // pushed and springs back): that is a contact the path test alone misses.
+      instrument_->proxy.recapture(instrument_->surface, body.positions());
+    }
+    for (auto& body : bodies_)
+      body.compute_forces(gravity_, h);
     if (contact_) {
       contacts_ = contact_->apply(bodies_);
       max_penetration_ = std::max(max_penetration_, contacts_.max_penetration);
@@ -42,11 +72,12 @@ void World::step() {
     if (instrument_) {
       // The instrument presses on the tissue with the opposite of the force it feels.
       DeformableBody& body = bodies_[static_cast<std::size_t>(instrument_->body)];
-      instrument_->proxy.update(tool_tip_, instrument_->surface, body.positions());
       if (instrument_->proxy.in_contact()) {
         const auto& contact = instrument_->proxy.contact();
-        const auto& triangle = instrument_->surface.faces()[static_cast<std::size_t>(contact.triangle)];
-        for (const auto& [node, force] : distribute_to_triangle(triangle, contact.barycentric, -instrument_->proxy.force())) {
+        const auto& triangle =
+            instrument_->surface.faces()[static_cast<std::size_t>(contact.triangle)];
+        for (const auto& [node, force] :
+             distribute_to_triangle(triangle, contact.barycentric, -instrument_->proxy.force())) {
           body.add_force(node, force);
         }
       }
@@ -61,16 +92,36 @@ void World::step() {
                           e.location());
       }
     }
+    if (sleep_threshold_ > 0.0) update_sleep();
   }
   ++steps_;
+}
+
+void World::update_sleep() {
+  double moved = 0.0;
+  for (const auto& body : bodies_) {
+    const auto& x = body.positions();
+    const auto& previous = body.previous_positions();
+    for (std::size_t n = 0; n < x.size(); ++n)
+      moved = std::max(moved, (x[n] - previous[n]).squaredNorm());
+  }
+  const bool touched = instrument_ && instrument_->proxy.in_contact();
+  calm_substeps_ = std::sqrt(moved) < sleep_threshold_ && !touched ? calm_substeps_ + 1 : 0;
+  if (calm_substeps_ >= kCalmSubstepsToSleep) {
+    // At rest: stop the last sub-nanometre motion so the state stays exactly still.
+    for (auto& body : bodies_)
+      body.previous_positions() = body.positions();
+    asleep_ = true;
+  }
 }
 
 void World::attach_instrument(int body, double stiffness, const core::Vec3& tip) {
   if (body < 0 || body >= static_cast<int>(bodies_.size())) {
     throw core::UsageError("no body " + std::to_string(body) + " to attach the instrument to");
   }
-  instrument_ = std::make_unique<Instrument>(Instrument{body, ProxySurface(bodies_[static_cast<std::size_t>(body)].surface_faces()),
-                                                        HapticProxy(stiffness)});
+  instrument_ = std::make_unique<Instrument>(
+      Instrument{body, ProxySurface(bodies_[static_cast<std::size_t>(body)].surface_faces()),
+                 HapticProxy(stiffness)});
   instrument_->proxy.reset(tip);
   tool_tip_ = tip;
 }

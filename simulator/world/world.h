@@ -3,12 +3,11 @@
 /// (DESIGN.md §5). Single-threaded and in a fixed order, so the same scenario gives the same
 /// state bit for bit (the deterministic mode of sessions and replays).
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "core/scenario/scenario.h"
-#include <memory>
-
 #include "simulator/collision/contact_response.h"
 #include "simulator/haptics/haptic_proxy.h"
 #include "simulator/physics/deformable_body.h"
@@ -44,8 +43,20 @@ class World {
   /// Moves the instrument tip (m); takes effect at the next step.
   void set_instrument_tip(const core::Vec3& tip) { tool_tip_ = tip; }
   /// Force in N that the tissue puts on the instrument (zero without contact or instrument).
-  core::Vec3 instrument_force() const { return instrument_ ? instrument_->proxy.force() : core::Vec3::Zero(); }
+  core::Vec3 instrument_force() const {
+    return instrument_ ? instrument_->proxy.force() : core::Vec3::Zero();
+  }
   bool instrument_in_contact() const { return instrument_ && instrument_->proxy.in_contact(); }
+  /// Where the instrument's proxy touches its body's surface (triangle of surface_faces()).
+  ProxyContact instrument_contact() const {
+    return instrument_ ? instrument_->proxy.contact() : ProxyContact{};
+  }
+  /// The proxy point on the surface (m), or the tip when free.
+  core::Vec3 instrument_proxy() const {
+    return instrument_ ? instrument_->proxy.proxy() : tool_tip_;
+  }
+  /// Index of the body the instrument works on, or −1.
+  int instrument_body() const { return instrument_ ? instrument_->body : -1; }
   /// The tip position the instrument was last moved to, in m.
   const core::Vec3& instrument_tip() const { return tool_tip_; }
 
@@ -56,6 +67,14 @@ class World {
 
   /// Sum of the bodies' energies at the current state.
   BodyEnergies energies() const;
+
+  /// Sleeping (the deactivation of rigid-body engines): once no node has moved more than
+  /// `threshold` m per sub-step for kCalmSubstepsToSleep sub-steps and the instrument touches
+  /// nothing, the world stops integrating (velocities set to zero) until the instrument's
+  /// proxy meets a surface again. 0 disables (the default); sessions enable it.
+  void set_sleep_threshold(double threshold) { sleep_threshold_ = threshold; }
+  bool asleep() const { return asleep_; }
+  static constexpr int kCalmSubstepsToSleep = 200;
 
   /// SHA-256 (hex) of every body's current and previous positions, in body order: equal hashes
   /// mean bit-identical states.
@@ -77,6 +96,11 @@ class World {
   core::Vec3 tool_tip_ = core::Vec3::Zero();
   ContactStatistics contacts_;
   double max_penetration_ = 0.0;
+  double sleep_threshold_ = 0.0;
+  int calm_substeps_ = 0;
+  bool asleep_ = false;
+
+  void update_sleep();
 };
 
 }  // namespace viscera::sim

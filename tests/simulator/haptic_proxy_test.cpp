@@ -10,7 +10,9 @@ namespace viscera::sim {
 namespace {
 
 /// A flat sheet at z = 0 facing +z, 10 cm wide, in 20 × 20 squares.
-viscera::testing::Sheet make_sheet() { return viscera::testing::make_sheet(20, 0.05); }
+viscera::testing::Sheet make_sheet() {
+  return viscera::testing::make_sheet(20, 0.05);
+}
 
 TEST(HapticProxy, stays_on_the_surface_above_the_tip_with_a_spring_force) {
   const viscera::testing::Sheet sheet = make_sheet();
@@ -79,11 +81,33 @@ TEST(HapticProxy, pushed_into_a_sphere_the_proxy_stays_on_it_and_pushes_outward)
   }
 }
 
+TEST(HapticProxy, a_wall_that_swept_over_the_free_tip_recaptures_it_at_the_nearest_point) {
+  const core::SurfaceMesh sphere = core::make_icosphere(0.03, 3);
+  const ProxySurface surface(sphere.triangles);
+  HapticProxy proxy(200.0);
+  // Free just outside the sphere; then the sphere grows by 2 mm around the resting tip.
+  const core::Vec3 tip(0.0312, 0.0004, -0.0002);
+  proxy.reset(tip);
+  proxy.update(tip, surface, sphere.vertices);
+  EXPECT_FALSE(proxy.recapture(surface, sphere.vertices));
+  std::vector<core::Vec3> grown = sphere.vertices;
+  for (auto& v : grown)
+    v *= 0.0320 / 0.03;
+  proxy.update(tip, surface, grown);
+  EXPECT_FALSE(proxy.in_contact());  // the path test sees no crossing: the tip did not move
+  ASSERT_TRUE(proxy.recapture(surface, grown));
+  EXPECT_TRUE(proxy.in_contact());
+  EXPECT_GT(proxy.proxy().norm(), 0.0318);  // on the grown surface (inscribed faces dip a little)
+  EXPECT_GT(proxy.force().dot(tip), 0.0);   // pushing the tool back out
+  EXPECT_FALSE(proxy.recapture(surface, grown));  // in contact already
+}
+
 TEST(HapticProxy, the_reaction_spreads_to_the_triangle_nodes_by_barycentric_weights) {
   const auto parts = distribute_to_triangle({4, 7, 9}, {0.2, 0.3, 0.5}, core::Vec3(0, 0, -1.0));
   EXPECT_EQ(parts[0].first, 4);
   EXPECT_EQ(parts[2].first, 9);
-  EXPECT_TRUE((parts[0].second + parts[1].second + parts[2].second).isApprox(core::Vec3(0, 0, -1.0)));
+  EXPECT_TRUE(
+      (parts[0].second + parts[1].second + parts[2].second).isApprox(core::Vec3(0, 0, -1.0)));
   EXPECT_DOUBLE_EQ(parts[1].second.z(), -0.3);
 }
 

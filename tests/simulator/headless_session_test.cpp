@@ -32,7 +32,8 @@ core::Scenario standing_block(double time_step = 1e-3) {
   }
   scenario.objects.push_back(block);
   scenario.session.time_step = time_step;
-  scenario.session.tasks.push_back({"settle", "settle", "settle", {{"kinetic_energy_below", 2e-8}, {"hold_time", 0.05}}});
+  scenario.session.tasks.push_back(
+      {"settle", "settle", "settle", {{"kinetic_energy_below", 2e-8}, {"hold_time", 0.05}}});
   scenario.session.tasks.push_back({"cut", "cut the block", "cut", {}});
   return scenario;
 }
@@ -50,7 +51,8 @@ TEST(HeadlessSession, clamped_block_sags_and_comes_to_rest_with_decreasing_energ
   // ends well below zero (potential released, dissipated by damping).
   double peak_kinetic = 0.0;
   for (std::size_t i = 1; i < report.samples.size(); ++i) {
-    EXPECT_LE(report.samples[i].total(), report.samples[i - 1].total() + 1e-6) << "at t=" << report.samples[i].time;
+    EXPECT_LE(report.samples[i].total(), report.samples[i - 1].total() + 1e-6)
+        << "at t=" << report.samples[i].time;
     peak_kinetic = std::max(peak_kinetic, report.samples[i].kinetic);
   }
   EXPECT_LT(report.samples.back().total(), -1e-4);
@@ -78,7 +80,8 @@ TEST(HeadlessSession, the_hash_sees_a_one_part_per_million_change) {
   heavier.objects[0].body.node_mass.clear();  // masses follow the density
   core::Scenario reference = standing_block();
   reference.objects[0].body.node_mass.clear();
-  EXPECT_NE(run_headless(reference, options).final_state_hash, run_headless(heavier, options).final_state_hash);
+  EXPECT_NE(run_headless(reference, options).final_state_hash,
+            run_headless(heavier, options).final_state_hash);
 }
 
 TEST(HeadlessSession, report_json_has_the_documented_fields) {
@@ -87,11 +90,12 @@ TEST(HeadlessSession, report_json_has_the_documented_fields) {
   options.package = "block.vscene";
   const auto json = report_to_json(run_headless(standing_block(), options));
   EXPECT_EQ(json["format"], "viscera-session-report");
-  EXPECT_EQ(json["version"], 1);
+  EXPECT_EQ(json["version"], 2);
   EXPECT_EQ(json["steps"], 100);
   EXPECT_NEAR(json["simulated_time"].get<double>(), 0.1, 1e-12);
   EXPECT_EQ(json["package"], "block.vscene");
-  for (const char* series : {"time", "kinetic", "elastic", "gravitational", "total", "max_displacement"}) {
+  for (const char* series :
+       {"time", "kinetic", "elastic", "gravitational", "total", "max_displacement"}) {
     EXPECT_EQ(json["energy"][series].size(), json["energy"]["time"].size()) << series;
   }
   EXPECT_GT(json["energy"]["time"].size(), 5u);
@@ -106,8 +110,10 @@ TEST(World, splits_the_step_when_the_body_needs_it_and_stays_finite) {
   stiff.materials["soft"].volume_stiffness = 3.0e6;
   World world(stiff);
   EXPECT_GT(world.substeps(), 1);
-  for (int s = 0; s < 200; ++s) world.step();
-  for (const auto& p : world.bodies()[0].positions()) ASSERT_TRUE(p.allFinite());
+  for (int s = 0; s < 200; ++s)
+    world.step();
+  for (const auto& p : world.bodies()[0].positions())
+    ASSERT_TRUE(p.allFinite());
   EXPECT_LT(world.bodies()[0].max_displacement(), 0.01);
 }
 
@@ -136,10 +142,12 @@ core::Scenario clamped_beam(core::BodyKind kind) {
   beam.body_kind = kind;
   beam.body = viscera::testing::tet_block(10, 2, 2, 0.01);
   beam.body.fixed.assign(beam.body.nodes.size(), 0);
-  for (std::size_t n = 0; n < beam.body.nodes.size(); ++n) beam.body.fixed[n] = beam.body.nodes[n].x() < 1e-9;
+  for (std::size_t n = 0; n < beam.body.nodes.size(); ++n)
+    beam.body.fixed[n] = beam.body.nodes[n].x() < 1e-9;
   scenario.materials["soft"].distance_stiffness = 2.0e5;
   scenario.materials["soft"].volume_stiffness = 2.0e5;
-  scenario.materials["soft"].distance_damping = 2000.0;  // bending is damped only through edge strain
+  scenario.materials["soft"].distance_damping =
+      2000.0;  // bending is damped only through edge strain
   scenario.session.tasks.clear();
   return scenario;
 }
@@ -160,7 +168,8 @@ TEST_P(ClampedBeam, sags_at_the_free_end_and_comes_to_rest) {
   // The free end (x = 10 cm) hangs lower than the clamped end, which has not moved.
   double tip_drop = 0.0;
   for (std::size_t n = 0; n < body.node_count(); ++n) {
-    if (body.rest_positions()[n].x() > 0.0999) tip_drop = std::max(tip_drop, body.rest_positions()[n].z() - body.positions()[n].z());
+    if (body.rest_positions()[n].x() > 0.0999)
+      tip_drop = std::max(tip_drop, body.rest_positions()[n].z() - body.positions()[n].z());
     if (body.rest_positions()[n].x() < 1e-9) {
       EXPECT_EQ(body.positions()[n], body.rest_positions()[n]);
     }
@@ -174,8 +183,13 @@ TEST_P(ClampedBeam, sags_at_the_free_end_and_comes_to_rest) {
   EXPECT_LT(world.energies().total(), 0.0);
 }
 
-INSTANTIATE_TEST_SUITE_P(Models, ClampedBeam, ::testing::Values(core::BodyKind::TetMesh, core::BodyKind::MassSpring),
-                         [](const auto& kind) { return core::to_string(kind.param) == "tet-mesh" ? std::string("Teschner") : std::string("Kismo"); });
+INSTANTIATE_TEST_SUITE_P(Models, ClampedBeam,
+                         ::testing::Values(core::BodyKind::TetMesh, core::BodyKind::MassSpring),
+                         [](const auto& kind) {
+                           return core::to_string(kind.param) == "tet-mesh"
+                                      ? std::string("Teschner")
+                                      : std::string("Kismo");
+                         });
 
 }  // namespace
 }  // namespace viscera::sim

@@ -24,15 +24,21 @@ core::Scenario block() {
   body.body_kind = core::BodyKind::TetMesh;
   body.body = viscera::testing::tet_block(4, 4, 2, 0.01);
   body.body.fixed.assign(body.body.nodes.size(), 0);
-  for (std::size_t n = 0; n < body.body.nodes.size(); ++n) body.body.fixed[n] = body.body.nodes[n].z() < 1e-9;
+  for (std::size_t n = 0; n < body.body.nodes.size(); ++n)
+    body.body.fixed[n] = body.body.nodes[n].z() < 1e-9;
   scenario.objects.push_back(body);
   return scenario;
 }
 
 nlohmann::json script(const std::vector<std::pair<double, core::Vec3>>& waypoints) {
   nlohmann::json points = nlohmann::json::array();
-  for (const auto& [t, tip] : waypoints) points.push_back({{"t", t}, {"tip", {tip.x(), tip.y(), tip.z()}}});
-  return {{"format", "viscera-script"}, {"version", 1}, {"body", "block"}, {"stiffness", 200.0}, {"waypoints", points}};
+  for (const auto& [t, tip] : waypoints)
+    points.push_back({{"t", t}, {"tip", {tip.x(), tip.y(), tip.z()}}});
+  return {{"format", "viscera-script"},
+          {"version", 1},
+          {"body", "block"},
+          {"stiffness", 200.0},
+          {"waypoints", points}};
 }
 
 SessionReport run_script(const ScriptedTrajectory& trajectory, bool record = false) {
@@ -46,7 +52,8 @@ SessionReport run_script(const ScriptedTrajectory& trajectory, bool record = fal
 }
 
 TEST(ScriptedTrajectory, interpolates_between_waypoints_and_names_bad_ones) {
-  const auto trajectory = ScriptedTrajectory::from_json(script({{0.0, {0, 0, 0.05}}, {1.0, {0, 0, 0.01}}}), "s.json");
+  const auto trajectory =
+      ScriptedTrajectory::from_json(script({{0.0, {0, 0, 0.05}}, {1.0, {0, 0, 0.01}}}), "s.json");
   EXPECT_TRUE(trajectory.tip(0, 0.25).isApprox(core::Vec3(0, 0, 0.04)));
   EXPECT_TRUE(trajectory.tip(0, 7.0).isApprox(core::Vec3(0, 0, 0.01)));
   try {
@@ -60,12 +67,17 @@ TEST(ScriptedTrajectory, interpolates_between_waypoints_and_names_bad_ones) {
 TEST(ScriptedSession, expert_and_novice_separate_on_every_metric) {
   const core::Vec3 above(0.021, 0.019, 0.04), target(0.021, 0.019, 0.016);
   // Expert: straight down to 4 mm depth, hold, straight back out.
-  const auto expert = ScriptedTrajectory::from_json(script({{0.0, above}, {0.4, target}, {0.6, target}, {1.0, above}}), "e");
+  const auto expert = ScriptedTrajectory::from_json(
+      script({{0.0, above}, {0.4, target}, {0.6, target}, {1.0, above}}), "e");
   // Novice: wanders, prods three times, presses deeper.
-  const auto novice = ScriptedTrajectory::from_json(
-      script({{0.0, above + core::Vec3(0.01, 0, 0)}, {0.15, {0.03, 0.01, 0.013}}, {0.3, {0.01, 0.03, 0.03}},
-              {0.45, {0.012, 0.025, 0.012}}, {0.6, {0.03, 0.03, 0.03}}, {0.75, {0.025, 0.012, 0.011}}, {1.0, above}}),
-      "n");
+  const auto novice = ScriptedTrajectory::from_json(script({{0.0, above + core::Vec3(0.01, 0, 0)},
+                                                            {0.15, {0.03, 0.01, 0.013}},
+                                                            {0.3, {0.01, 0.03, 0.03}},
+                                                            {0.45, {0.012, 0.025, 0.012}},
+                                                            {0.6, {0.03, 0.03, 0.03}},
+                                                            {0.75, {0.025, 0.012, 0.011}},
+                                                            {1.0, above}}),
+                                                    "n");
   const SessionReport e = run_script(expert), n = run_script(novice);
   ASSERT_TRUE(e.has_instrument && n.has_instrument);
   EXPECT_LT(e.metrics.path_length(), n.metrics.path_length());
@@ -81,9 +93,12 @@ TEST(ScriptedSession, expert_and_novice_separate_on_every_metric) {
 
 TEST(ScriptedSession, recorded_tips_replay_to_the_same_checkpoints) {
   const core::Vec3 above(0.021, 0.019, 0.04), target(0.021, 0.019, 0.015);
-  const auto trajectory = ScriptedTrajectory::from_json(script({{0.0, above}, {0.3, target}, {0.5, above}}), "s");
+  const auto trajectory =
+      ScriptedTrajectory::from_json(script({{0.0, above}, {0.3, target}, {0.5, above}}), "s");
   const SessionReport recorded = run_script(trajectory, true);
+  // Moving every step: one recorded change per step, from step 0.
   ASSERT_EQ(recorded.inputs.size(), static_cast<std::size_t>(recorded.steps + 1));
+  EXPECT_EQ(recorded.inputs.back().first, recorded.steps);
   ASSERT_FALSE(recorded.checkpoints.empty());
   const RecordedInput input(recorded.inputs);
   HeadlessRunOptions options;
@@ -95,8 +110,8 @@ TEST(ScriptedSession, recorded_tips_replay_to_the_same_checkpoints) {
   EXPECT_EQ(replayed.checkpoints, recorded.checkpoints);
   EXPECT_EQ(replayed.final_state_hash, recorded.final_state_hash);
   // A nanometre on one tip during contact changes the state.
-  std::vector<core::Vec3> nudged = recorded.inputs;
-  nudged[250].z() += 1e-9;
+  auto nudged = recorded.inputs;
+  nudged[250].second.tip.z() += 1e-9;
   const RecordedInput nudged_input(nudged);
   options.instrument = &nudged_input;
   EXPECT_NE(run_headless(block(), options).final_state_hash, recorded.final_state_hash);
@@ -110,15 +125,24 @@ TEST(SessionTrace, round_trips_through_json_exactly) {
   trace.body = "ball";
   trace.stiffness = 200.0;
   trace.checkpoint_interval = 100;
-  trace.tips = {{0.1, 0.2, 0.30000000000000004}, {1e-17, -3.0, 2.5}};
+  InstrumentState a, b;
+  a.tip = {0.1, 0.2, 0.30000000000000004};
+  b.tip = {1e-17, -3.0, 2.5};
+  b.axis = core::Vec3(1.0, 2.0, 3.0).normalized();
+  b.inflow = 0.3;
+  b.abort = true;
+  trace.inputs = {{0, a}, {17, b}};
   trace.checkpoints = {{100, "x"}, {200, "y"}};
   trace.final_state_hash = "z";
-  const SessionTrace back = trace_from_json(nlohmann::json::parse(trace_to_json(trace).dump()), "t.json");
-  EXPECT_EQ(back.tips, trace.tips);
+  const SessionTrace back =
+      trace_from_json(nlohmann::json::parse(trace_to_json(trace).dump()), "t.json");
+  EXPECT_EQ(back.inputs, trace.inputs);
+  EXPECT_EQ(back.input()->state(16, 0.0), a);
+  EXPECT_EQ(back.input()->state(17, 0.0), b);
   EXPECT_EQ(back.checkpoints, trace.checkpoints);
   EXPECT_EQ(back.manifest_sha256, trace.manifest_sha256);
   nlohmann::json broken = trace_to_json(trace);
-  broken.erase("tips");
+  broken.erase("inputs");
   EXPECT_THROW(trace_from_json(broken, "t.json"), core::ValidationError);
 }
 

@@ -205,7 +205,8 @@ TEST(CliContract, recorded_session_replays_identically_and_a_tampered_trace_fail
   EXPECT_NE(result.out.find("replay identical"), std::string::npos) << result.out;
 
   auto tampered = nlohmann::json::parse(read_text(trace));
-  tampered["tips"][250][2] = tampered["tips"][250][2].get<double>() + 1e-9;
+  // A scripted session's trace keeps its script: a nanometre on the pressing waypoint departs.
+  tampered["script"]["waypoints"][1]["tip"][2] = tampered["script"]["waypoints"][1]["tip"][2].get<double>() + 1e-9;
   std::ofstream(dir / "tampered.json") << tampered.dump();
   result = run_program("viscera-sim", "replay " + shell_quote((dir / "tampered.json").string()), dir);
   EXPECT_EQ(result.exit_code, 4) << result.out << result.err;

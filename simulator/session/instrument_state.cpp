@@ -1,0 +1,59 @@
+#include "simulator/session/instrument_state.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace viscera::sim {
+namespace {
+
+double radians(double degrees) {
+  return degrees * std::numbers::pi / 180.0;
+}
+
+core::Vec3 any_perpendicular(const core::Vec3& v) {
+  const core::Vec3 other = std::abs(v.x()) < 0.9 ? core::Vec3::UnitX() : core::Vec3::UnitY();
+  return v.cross(other).normalized();
+}
+
+}  // namespace
+
+core::Vec3 view_direction(const InstrumentState& s, double optics_angle) {
+  const double a = radians(optics_angle);
+  return (std::cos(a) * s.axis + std::sin(a) * s.up).normalized();
+}
+
+void orthonormalise(InstrumentState& s) {
+  s.axis = s.axis.norm() > 0.0 ? core::Vec3(s.axis.normalized()) : core::Vec3::UnitZ();
+  core::Vec3 up = s.up - s.up.dot(s.axis) * s.axis;
+  s.up = up.norm() > 1e-9 ? core::Vec3(up.normalized()) : any_perpendicular(s.axis);
+}
+
+InstrumentState look_at(const core::Vec3& tip, const core::Vec3& target,
+                        const core::Vec3& axis_hint, double optics_angle) {
+  InstrumentState s;
+  s.tip = tip;
+  const core::Vec3 view = (target - tip).normalized();
+  core::Vec3 side = axis_hint - axis_hint.dot(view) * view;  // towards the hint, across the view
+  side = side.norm() > 1e-9 ? core::Vec3(side.normalized()) : any_perpendicular(view);
+  const double a = radians(optics_angle);
+  s.axis = std::cos(a) * view + std::sin(a) * side;
+  // The optics tilt from the axis towards the view: up is the view's component across the axis.
+  s.up = (view - view.dot(s.axis) * s.axis);
+  if (s.up.norm() < 1e-9) s.up = -side;
+  orthonormalise(s);
+  return s;
+}
+
+InstrumentState blend(const InstrumentState& a, const InstrumentState& b, double f) {
+  InstrumentState s;
+  s.tip = (1.0 - f) * a.tip + f * b.tip;
+  s.axis = (1.0 - f) * a.axis + f * b.axis;
+  s.up = (1.0 - f) * a.up + f * b.up;
+  s.inflow = (1.0 - f) * a.inflow + f * b.inflow;
+  s.outflow = (1.0 - f) * a.outflow + f * b.outflow;
+  s.abort = f >= 1.0 && b.abort;
+  orthonormalise(s);
+  return s;
+}
+
+}  // namespace viscera::sim

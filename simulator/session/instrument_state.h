@@ -1,0 +1,40 @@
+#pragma once
+/// What the trainee does with the instrument at one physics step: where the tip is, where the
+/// shaft points, how the angled optics are rolled, the valve states, and whether the trainee
+/// aborts (seed 000 §8.1: the resectoscope's sensors report valve positions and camera angle).
+
+#include "core/math_types.h"
+
+namespace viscera::sim {
+
+/// Instrument pose and controls. Positions in m; `axis` and `up` unit and orthogonal.
+struct InstrumentState {
+  core::Vec3 tip = core::Vec3::Zero();
+  core::Vec3 axis = core::Vec3::UnitZ();  ///< shaft direction, from the handle towards the tip
+  core::Vec3 up = core::Vec3::UnitY();    ///< the side the angled optics look towards
+  double inflow = 0.0;                    ///< inflow valve opening, 0 (closed) … 1 (open)
+  double outflow = 0.0;                   ///< outflow valve opening, 0 … 1
+  bool abort = false;                     ///< the trainee ends the session
+
+  bool operator==(const InstrumentState&) const = default;
+};
+
+/// The optics' viewing direction: the shaft axis tilted by `optics_angle` degrees towards `up`
+/// (a 30° hysteroscope looks 30° off its shaft, on the side its light post marks).
+core::Vec3 view_direction(const InstrumentState& state, double optics_angle);
+
+/// Makes `axis` unit and `up` unit and orthogonal to it (Gram–Schmidt; any perpendicular when
+/// they are parallel).
+void orthonormalise(InstrumentState& state);
+
+/// The pose whose angled optics look from `tip` at `target`: the view direction points at the
+/// target and the shaft axis lies in the plane of that direction and `axis_hint`, tilted by the
+/// optics angle away from the view. Lengths in m, angle in degrees.
+InstrumentState look_at(const core::Vec3& tip, const core::Vec3& target,
+                        const core::Vec3& axis_hint, double optics_angle);
+
+/// Blends two states: positions linearly, directions by normalised linear blend, valves
+/// linearly; `f` in [0, 1]. Abort is taken from `b` once f reaches 1.
+InstrumentState blend(const InstrumentState& a, const InstrumentState& b, double f);
+
+}  // namespace viscera::sim

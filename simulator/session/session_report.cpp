@@ -1,0 +1,132 @@
+#include "simulator/session/session_report.h"
+
+#include <algorithm>
+
+#include "core/json_eigen.h"
+
+namespace viscera::sim {
+
+double period_score(const SessionMetrics& m, double force_warning) {
+  std::vector<double> terms;
+  if (m.tasks_available() > 0)
+    terms.push_back(static_cast<double>(m.tasks_completed()) / m.tasks_available());
+  if (m.path_length() > 0.0) terms.push_back(m.economy());
+  terms.push_back(m.view_quality());
+  if (m.duration() > 0.0)
+    terms.push_back(1.0 - std::clamp(m.contact_time() / m.duration(), 0.0, 1.0));
+  if (force_warning > 0.0)
+    terms.push_back(1.0 - std::clamp(m.max_force() / force_warning, 0.0, 1.0));
+  double sum = 0.0;
+  for (const double t : terms)
+    sum += t;
+  return terms.empty() ? 0.0 : 100.0 * sum / static_cast<double>(terms.size());
+}
+
+namespace {
+
+nlohmann::json energy_json(const SessionReport& r) {
+  nlohmann::json series = {
+      {"time", nlohmann::json::array()},    {"kinetic", nlohmann::json::array()},
+      {"elastic", nlohmann::json::array()}, {"gravitational", nlohmann::json::array()},
+      {"total", nlohmann::json::array()},   {"max_displacement", nlohmann::json::array()}};
+  for (const auto& s : r.samples) {
+    series["time"].push_back(s.time);
+    series["kinetic"].push_back(s.kinetic);
+    series["elastic"].push_back(s.elastic);
+    series["gravitational"].push_back(s.gravitational);
+    series["total"].push_back(s.total());
+    series["max_displacement"].push_back(s.max_displacement);
+  }
+  return series;
+}
+
+nlohmann::json path_json(const SessionReport& r) {
+  nlohmann::json path = {
+      {"time", nlohmann::json::array()},       {"tip", nlohmann::json::array()},
+      {"force", nlohmann::json::array()},      {"wall_distance", nlohmann::json::array()},
+      {"in_contact", nlohmann::json::array()}, {"step", nlohmann::json::array()}};
+  for (const auto& p : r.path) {
+    path["time"].push_back(p.time);
+    path["tip"].push_back(p.tip);
+    path["force"].push_back(p.force);
+    path["wall_distance"].push_back(p.wall_distance);
+    path["in_contact"].push_back(p.in_contact);
+    path["step"].push_back(p.step);
+  }
+  return path;
+}
+
+}  // namespace
+
+nlohmann::json report_to_json(const SessionReport& r) {
+  nlohmann::json contacts = {{"colliding_points", nlohmann::json::array()},
+                             {"max_penetration", nlohmann::json::array()}};
+  for (const auto& s : r.samples) {
+    contacts["colliding_points"].push_back(s.colliding_points);
+    contacts["max_penetration"].push_back(s.max_penetration);
+  }
+  contacts["max_penetration_overall"] = r.max_penetration;
+  contacts["stiffness"] = r.contact_stiffness;
+  nlohmann::json bodies = nlohmann::json::array();
+  for (const auto& b : r.bodies) {
+    bodies.push_back({{"name", b.name},
+                      {"nodes", b.nodes},
+                      {"edges", b.edges},
+                      {"tets", b.tets},
+                      {"surface_triangles", b.surface_triangles},
+                      {"max_displacement", b.max_displacement},
+                      {"centre_of_mass_drop", b.centre_of_mass_drop}});
+  }
+  nlohmann::json tasks = nlohmann::json::array();
+  for (const auto& t : r.tasks) {
+    nlohmann::json task = {{"id", t.id},     {"name", t.name},       {"kind", t.kind},
+                           {"step", t.step}, {"substep", t.substep}, {"status", t.status}};
+    if (t.completed_at >= 0.0) task["completed_at"] = t.completed_at;
+    if (t.best >= 0.0) task["best"] = t.best;
+    if (!t.note.empty()) task["note"] = t.note;
+    tasks.push_back(task);
+  }
+  nlohmann::json steps = nlohmann::json::array();
+  for (const auto& s : r.procedure_steps) {
+    nlohmann::json step = {
+        {"id", s.id}, {"name", s.name}, {"metrics", s.metrics.to_json()}, {"score", s.score}};
+    step["started_at"] =
+        s.started_at >= 0.0 ? nlohmann::json(s.started_at) : nlohmann::json(nullptr);
+    step["ended_at"] = s.ended_at >= 0.0 ? nlohmann::json(s.ended_at) : nlohmann::json(nullptr);
+    steps.push_back(step);
+  }
+  nlohmann::json events = nlohmann::json::array();
+  for (const auto& e : r.events)
+    events.push_back({{"time", e.time}, {"kind", e.kind}, {"message", e.message}});
+  return {{"format", "viscera-session-report"},
+          {"version", 2},
+          {"package", r.package},
+          {"procedure", r.procedure},
+          {"instrument_kind", r.instrument},
+          {"steps", r.steps},
+          {"simulated_time", r.simulated_time},
+          {"wall_time", r.wall_time},
+          {"time_step", r.time_step},
+          {"substeps", r.substeps},
+          {"time_limit", r.time_limit},
+          {"force_warning", r.force_warning},
+          {"real_time_factor", r.wall_time > 0.0 ? r.simulated_time / r.wall_time : 0.0},
+          {"units",
+           {{"time", "s"}, {"energy", "J"}, {"length", "m"}, {"force", "N"}, {"angle", "deg"}}},
+          {"energy", energy_json(r)},
+          {"max_displacement", r.max_displacement},
+          {"contacts", contacts},
+          {"bodies", bodies},
+          {"tasks", tasks},
+          {"procedure_steps", steps},
+          {"instrument", r.has_instrument ? r.metrics.to_json() : nlohmann::json(nullptr)},
+          {"metrics", r.metrics.to_json()},
+          {"score", r.score},
+          {"path", path_json(r)},
+          {"end_reason", r.end_reason},
+          {"events", events},
+          {"checkpoints", r.checkpoints.size()},
+          {"final_state_hash", r.final_state_hash}};
+}
+
+}  // namespace viscera::sim

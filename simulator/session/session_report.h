@@ -1,0 +1,108 @@
+#pragma once
+/// The result of a session (seed 000 §11: "a comprehensive report summarizing the quantitative
+/// metrics"): per step and in total, the tasks, the events, the tool path with its distance to
+/// the wall (seed 000 Fig. 16), the body energies and the state hashes that prove a replay.
+/// As JSON: format "viscera-session-report", version 2, schema docs/session-report.schema.json.
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "simulator/session/instrument_state.h"
+#include "simulator/session/session_metrics.h"
+#include "simulator/session/task_monitor.h"
+
+namespace viscera::sim {
+
+/// Something that happened during a session, at a time in s.
+struct SessionEvent {
+  double time = 0.0;
+  std::string kind;  ///< "perforation", "excessive-force", "time-limit", "abort", "task-completed",
+                     ///< "step-started"
+  std::string message;
+};
+
+/// One energy sample. Energies in J, displacement in m.
+struct EnergySample {
+  double time = 0.0;
+  double kinetic = 0.0;
+  double elastic = 0.0;
+  double gravitational = 0.0;
+  double max_displacement = 0.0;
+  int colliding_points = 0;      ///< vertices inside another body
+  double max_penetration = 0.0;  ///< m, deepest colliding point of the last sub-step
+  double total() const { return kinetic + elastic + gravitational; }
+};
+
+/// The tool at one sample of the session.
+struct PathSample {
+  double time = 0.0;  ///< s
+  core::Vec3 tip = core::Vec3::Zero();
+  double force = 0.0;           ///< N on the instrument
+  double wall_distance = -1.0;  ///< m from the tip to the nearest wall point, −1 without a surface
+  bool in_contact = false;
+  int step = -1;  ///< index of the procedure step under way, −1 without steps
+};
+
+/// One procedure step as the trainee did it.
+struct StepResult {
+  std::string id;
+  std::string name;
+  double started_at = -1.0;  ///< s, −1 when the session ended before it
+  double ended_at = -1.0;    ///< s
+  SessionMetrics metrics;
+  double score = 0.0;  ///< 0…100, see step_score()
+};
+
+/// Per-body summary at the end of the run.
+struct BodySummary {
+  std::string name;
+  std::size_t nodes = 0, edges = 0, tets = 0, surface_triangles = 0;
+  double max_displacement = 0.0;     ///< m
+  double centre_of_mass_drop = 0.0;  ///< m, along gravity
+};
+
+/// The result of a session.
+struct SessionReport {
+  std::string package;
+  std::string procedure;        ///< procedure definition name, or ""
+  std::string instrument;       ///< kind of the simulated instrument
+  long long steps = 0;          ///< physics steps
+  double simulated_time = 0.0;  ///< s
+  double wall_time = 0.0;       ///< s
+  double time_step = 0.0;       ///< s
+  int substeps = 1;
+  double time_limit = 0.0;     ///< s
+  double force_warning = 0.0;  ///< N
+  std::vector<EnergySample> samples;
+  double max_displacement = 0.0;   ///< m, over the whole run
+  double max_penetration = 0.0;    ///< m, deepest body–body contact over every sub-step
+  double contact_stiffness = 0.0;  ///< N/m, 0 when the scene has fewer than two bodies
+  std::vector<BodySummary> bodies;
+  std::vector<TaskResult> tasks;
+  std::vector<StepResult> procedure_steps;
+  std::string final_state_hash;
+  bool has_instrument = false;
+  SessionMetrics metrics;  ///< of the whole session
+  double score = 0.0;      ///< 0…100
+  std::vector<PathSample> path;
+  std::vector<std::pair<long long, std::string>> checkpoints;  ///< (step, state hash)
+  /// The instrument states, as (step, state) at every step where the state changed (when
+  /// recorded): enough to replay the session exactly.
+  std::vector<std::pair<long long, InstrumentState>> inputs;
+  std::vector<SessionEvent> events;
+  std::string end_reason =
+      "duration";  ///< "duration", "time-limit", "completed", "perforation", "abort"
+};
+
+/// Score of a period in [0, 100]: the mean of task completion (completed over available),
+/// economy of movement, view quality, time free of wall contact and force safety (1 − max force
+/// over the warning level, clamped) — equal weights, each in [0, 1]; terms without data (no
+/// tasks, no warning level, no view) are left out.
+double period_score(const SessionMetrics& metrics, double force_warning);
+
+/// The report as JSON (format "viscera-session-report", version 2).
+nlohmann::json report_to_json(const SessionReport& report);
+
+}  // namespace viscera::sim

@@ -1,0 +1,434 @@
+#include "simulator/session/session_runner.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "core/error.h"
+#include "core/json_eigen.h"
+#include "core/mesh/surface_embedding.h"
+#include "core/scenario/procedure.h"
+#include "core/scenario/scenario_json.h"
+
+namespace viscera::sim {
+
+struct SessionRunner::Monitor {
+  TaskMonitor task;
+  int step = -1;  ///< procedure step index, −1 for loose tasks
+};
+
+namespace {
+
+double wall_clock() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+/// The landmarks of a scenario by id. Read through the scenario's JSON, so the session works
+/// with any scenario that carries them ("landmarks": [{"id", "position", "normal"}, …]).
+std::map<std::string, TaskTarget> landmarks_of(const core::Scenario& scenario) {
+  std::map<std::string, TaskTarget> out;
+  const nlohmann::json json = core::scenario_to_json(scenario);
+  for (const auto& mark : json.value("landmarks", nlohmann::json::array())) {
+    TaskTarget target;
+    target.position = mark.at("position").get<core::Vec3>();
+    if (mark.contains("normal")) target.normal = mark["normal"].get<core::Vec3>();
+    out[mark.at("id").get<std::string>()] = target;
+  }
+  return out;
+}
+
+bool needs_target(const std::string& kind) {
+  return kind == "reach" || kind == "centre-target" || kind == "withdraw";
+}
+
+}  // namespace
+
+SessionRunner::SessionRunner(const core::Scenario& scenario, const HeadlessRunOptions& options)
+    : scenario_(scenario),
+      options_(options),
+      world_(scenario),
+      instrument_(scenario.session.instrument) {
+  if (!(options.duration > 0.0)) throw core::UsageError("session duration must be positive");
+  world_.set_sleep_threshold(options.sleep_threshold);
+  started_wall_clock_ = wall_clock();
+  time_limit_ = std::min(options.duration, scenario.session.duration_limit);
+  force_warning_ =
+      options.force_warning > 0.0 ? options.force_warning : scenario.session.force_warning;
+  perforation_depth_ = options.perforation_depth > 0.0 ? options.perforation_depth
+                                                       : scenario.session.perforation_depth;
+  report_.package = options.package;
+  report_.procedure = scenario.session.procedure_definition;
+  report_.instrument = instrument_.kind;
+  report_.time_step = world_.time_step();
+  report_.substeps = world_.substeps();
+  report_.time_limit = time_limit_;
+  report_.force_warning = force_warning_;
+  total_steps_ = static_cast<long long>(std::llround(time_limit_ / world_.time_step()));
+  sample_every_ =
+      std::max<long long>(1, std::llround(options.sample_interval / world_.time_step()));
+  look_every_ = std::max<long long>(1, std::llround(options.camera_interval / world_.time_step()));
+
+  std::string surface_object;
+  if (options.instrument != nullptr) {
+    for (std::size_t b = 0; b < world_.bodies().size(); ++b) {
+      if (options.instrument_body.empty() || world_.bodies()[b].name() == options.instrument_body) {
+        instrument_body_ = static_cast<int>(b);
+        break;
+      }
+    }
+    if (instrument_body_ < 0) {
+      throw core::InputError("the scenario has no simulated object \"" + options.instrument_body +
+                             "\" for the instrument");
+    }
+    state_ = options.instrument->state(0, 0.0);
+    world_.attach_instrument(instrument_body_, options.instrument_stiffness, state_.tip);
+    if (options.record_inputs) report_.inputs.emplace_back(0, state_);
+    report_.metrics.start_at(state_.tip);
+    report_.has_instrument = true;
+    const DeformableBody& body = world_.bodies()[static_cast<std::size_t>(instrument_body_)];
+    surface_object = body.name();
+    wall_ = std::make_unique<SurfaceBvh>(body.surface_faces(), body.rest_positions());
+    thickness_.assign(body.surface_faces().size(), -1.0);
+  }
+
+  // The camera observes the surface the instrument works in, restricted to the region the
+  // first inspect-surface task on it names.
+  std::string region_problem;
+  if (!surface_object.empty()) {
+    const core::SceneObject* object = scenario.find_object(surface_object);
+    std::string attribute;
+    double value = 1.0;
+    for (const core::TaskSpec* task : core::all_tasks(scenario.session)) {
+      if (task->kind == "inspect-surface" &&
+          task->parameters.value("object", surface_object) == surface_object) {
+        attribute = task->parameters.value("region_attribute", std::string());
+        value = task->parameters.value("region_value", 1.0);
+        break;
+      }
+    }
+    core::SurfaceMesh surface;
+    if (object != nullptr && !object->surface.triangles.empty()) {
+      surface = object->surface;
+    } else {
+      const DeformableBody& body = world_.bodies()[static_cast<std::size_t>(instrument_body_)];
+      surface.vertices = body.positions();
+      surface.triangles = body.surface_faces();
+    }
+    try {
+      coverage_ = std::make_unique<SurfaceCoverage>(surface, attribute, value);
+    } catch (const core::InputError& e) {
+      region_problem = e.reason();
+      coverage_ = std::make_unique<SurfaceCoverage>(surface);
+    }
+  }
+
+  // Task monitors: loose tasks first, then the procedure's, step by step.
+  const auto landmarks = landmarks_of(scenario);
+  const auto make_monitor = [&](const core::TaskSpec& task, int step, const std::string& step_id,
+                                const std::string& substep_id) {
+    std::optional<TaskTarget> target;
+    std::string missing;
+    if (task.parameters.contains("position")) {
+      TaskTarget t;
+      t.position = task.parameters["position"].get<core::Vec3>();
+      if (task.parameters.contains("normal"))
+        t.normal = task.parameters["normal"].get<core::Vec3>();
+      target = t;
+    } else if (task.parameters.contains("landmark")) {
+      const std::string id = task.parameters["landmark"].get<std::string>();
+      if (const auto it = landmarks.find(id); it != landmarks.end()) {
+        target = it->second;
+      } else if (needs_target(task.kind)) {
+        missing = "the scenario has no landmark \"" + id + "\"";
+      }
+    } else if (needs_target(task.kind)) {
+      missing = "the task names neither a landmark nor a position";
+    }
+    if (task.kind == "inspect-surface") {
+      if (coverage_ == nullptr)
+        missing = "the session has no instrument camera to inspect with";
+      else if (task.parameters.value("object", surface_object) != surface_object)
+        missing =
+            "only the surface the instrument works in (\"" + surface_object + "\") is observed";
+      else if (!region_problem.empty())
+        missing = region_problem;
+    }
+    if ((task.kind == "touch" || task.kind == "centre-target" || task.kind == "reach" ||
+         task.kind == "withdraw") &&
+        options.instrument == nullptr && missing.empty()) {
+      missing = "the session has no instrument";
+    }
+    monitors_.push_back(
+        {TaskMonitor(task, step_id, substep_id, target, missing, instrument_.kind), step});
+  };
+  for (const auto& task : scenario.session.tasks)
+    make_monitor(task, -1, "", "");
+  for (std::size_t s = 0; s < scenario.session.steps.size(); ++s) {
+    const auto& step = scenario.session.steps[s];
+    report_.procedure_steps.push_back({step.id, step.name, -1.0, -1.0, {}, 0.0});
+    for (const auto& substep : step.substeps) {
+      for (const auto& task : substep.tasks)
+        make_monitor(task, static_cast<int>(s), step.id, substep.id);
+    }
+  }
+  if (!report_.procedure_steps.empty()) open_step(0);
+  sample();
+  if (coverage_ != nullptr && options.instrument != nullptr) look();
+}
+
+SessionRunner::~SessionRunner() = default;
+
+void SessionRunner::open_step(int index) {
+  current_ = index;
+  StepResult& step = report_.procedure_steps[static_cast<std::size_t>(index)];
+  step.started_at = world_.time();
+  step.metrics.start_at(state_.tip);
+  step.metrics.set_coverage(coverage_ ? coverage_->fraction_seen() : 0.0,
+                            coverage_ ? coverage_->fraction_seen() : 0.0);
+  report_.events.push_back(
+      {world_.time(), "step-started", step.name.empty() ? step.id : step.name});
+}
+
+void SessionRunner::close_step(int index) {
+  StepResult& step = report_.procedure_steps[static_cast<std::size_t>(index)];
+  if (step.started_at < 0.0 || step.ended_at >= 0.0) return;
+  step.ended_at = world_.time();
+  int completed = 0, available = 0;
+  for (const auto& m : monitors_) {
+    if (m.step != index) continue;
+    if (m.task.result().status != "unavailable") ++available;
+    if (m.task.result().status == "completed") ++completed;
+  }
+  step.metrics.set_tasks(completed, available);
+  step.score = period_score(step.metrics, force_warning_);
+}
+
+void SessionRunner::advance_steps() {
+  const int count = static_cast<int>(report_.procedure_steps.size());
+  while (current_ >= 0 && current_ < count) {
+    bool all_done = true, later_completed = false;
+    for (const auto& m : monitors_) {
+      if (m.step == current_ && !m.task.done()) all_done = false;
+      if (m.step > current_ && m.task.result().status == "completed") later_completed = true;
+    }
+    if (!all_done && !later_completed) return;
+    const double seen = coverage_ ? coverage_->fraction_seen() : 0.0;
+    auto& metrics = report_.procedure_steps[static_cast<std::size_t>(current_)].metrics;
+    metrics.set_coverage(metrics.coverage_start(), seen);
+    close_step(current_);
+    if (current_ + 1 >= count) {
+      current_ = count;  // the procedure is complete
+      if (options_.end_when_complete) end("completed", "every step of the procedure is done");
+      return;
+    }
+    open_step(current_ + 1);
+  }
+}
+
+double SessionRunner::wall_thickness(int triangle) {
+  if (wall_ == nullptr || triangle < 0) return std::numeric_limits<double>::infinity();
+  double& t = thickness_[static_cast<std::size_t>(triangle)];
+  if (t < 0.0) {
+    // Rest thickness under the triangle: from its centre straight into the tissue to the far side.
+    const auto& tri = wall_->triangles()[static_cast<std::size_t>(triangle)];
+    const auto& p = wall_->positions();
+    const core::Vec3 centre = (p[tri[0]] + p[tri[1]] + p[tri[2]]) / 3.0;
+    const core::Vec3 inward = -(p[tri[1]] - p[tri[0]]).cross(p[tri[2]] - p[tri[0]]).normalized();
+    const RayHit hit = wall_->cast(centre + 1e-7 * inward, inward, 1.0);
+    t = hit.triangle >= 0 ? hit.distance : std::numeric_limits<double>::infinity();
+  }
+  return t;
+}
+
+double SessionRunner::penetration() const {
+  // How deep the tool is in the wall: the proxy–tip distance (the spring's stretch), or how
+  // far the tip lies below the rest position of the touched face, whichever is larger — a soft
+  // wall gives way, but a tool through its rest thickness has gone through it.
+  const double spring = world_.instrument_force().norm() / options_.instrument_stiffness;
+  const ProxyContact contact = world_.instrument_contact();
+  if (wall_ == nullptr || contact.triangle < 0) return spring;
+  const auto& tri = wall_->triangles()[static_cast<std::size_t>(contact.triangle)];
+  const auto& p = wall_->positions();
+  const core::Vec3 rest_point = contact.barycentric[0] * p[tri[0]] +
+                                contact.barycentric[1] * p[tri[1]] +
+                                contact.barycentric[2] * p[tri[2]];
+  const core::Vec3 outward = (p[tri[1]] - p[tri[0]]).cross(p[tri[2]] - p[tri[0]]).normalized();
+  return std::max(spring, (rest_point - state_.tip).dot(outward));
+}
+
+void SessionRunner::step(const InstrumentState& input) {
+  if (finished_) return;
+  const bool has_instrument = options_.instrument != nullptr;
+  if (has_instrument) {
+    if (options_.record_inputs && !(input == state_))
+      report_.inputs.emplace_back(world_.steps() + 1, input);
+    state_ = input;
+    world_.set_instrument_tip(state_.tip);
+  }
+  world_.step();
+  const double now = world_.time();
+  if (has_instrument) {
+    const core::Vec3 force = world_.instrument_force();
+    const bool contact = world_.instrument_in_contact();
+    const double dt = world_.time_step();
+    report_.metrics.record(state_.tip, force, contact, dt, state_.inflow);
+    if (current_ >= 0 && current_ < static_cast<int>(report_.procedure_steps.size())) {
+      report_.procedure_steps[static_cast<std::size_t>(current_)].metrics.record(
+          state_.tip, force, contact, dt, state_.inflow);
+    }
+    if (contact) {
+      const double depth = penetration();
+      const double limit = perforation_depth_ > 0.0
+                               ? perforation_depth_
+                               : wall_thickness(world_.instrument_contact().triangle);
+      if (depth > limit) {
+        end("perforation", "the tool went " + std::to_string(depth * 1000.0) +
+                               " mm into the wall, past its " + std::to_string(limit * 1000.0) +
+                               " mm");
+      }
+    }
+    const bool excessive = force_warning_ > 0.0 && force.norm() > force_warning_;
+    if (excessive && !over_force_) {
+      report_.events.push_back({now, "excessive-force",
+                                "force " + std::to_string(force.norm()) + " N above the " +
+                                    std::to_string(force_warning_) + " N warning level"});
+    }
+    over_force_ = excessive;
+  }
+  const long long s = world_.steps();
+  if (options_.checkpoint_interval > 0 && s % options_.checkpoint_interval == 0) {
+    report_.checkpoints.emplace_back(s, world_.state_hash());
+  }
+  if (coverage_ != nullptr && has_instrument && s % look_every_ == 0) look();
+  if (s % sample_every_ == 0 || s >= total_steps_ || finished_) sample();
+  if (!finished_ && has_instrument && state_.abort) end("abort", "the trainee ended the session");
+  if (!finished_ && s >= total_steps_) {
+    const bool limit = time_limit_ < options_.duration;
+    end(limit ? "time-limit" : "duration",
+        limit ? "the procedure's time limit of " + std::to_string(time_limit_) + " s is reached"
+              : "end of the session");
+  }
+}
+
+void SessionRunner::look() {
+  const DeformableBody& body = world_.bodies()[static_cast<std::size_t>(instrument_body_)];
+  const core::SceneObject* object = scenario_.find_object(body.name());
+  if (body.max_displacement() > 1e-6) {
+    if (object != nullptr && !object->surface.triangles.empty()) {
+      if (!object->embedding.empty()) {
+        coverage_->refit(
+            core::embedded_positions(object->embedding, object->body.tets, body.positions()));
+      }
+    } else {
+      coverage_->refit(body.positions());
+    }
+  }
+  const CameraSample sample = coverage_->observe(state_, instrument_);
+  last_view_distance_ = sample.centre_distance;
+  const bool good = sample.centre_distance >= instrument_.min_view_distance &&
+                    sample.centre_distance <= instrument_.max_view_distance &&
+                    !world_.instrument_in_contact();
+  const double dt = options_.camera_interval;
+  report_.metrics.record_view(good, dt);
+  if (current_ >= 0 && current_ < static_cast<int>(report_.procedure_steps.size())) {
+    report_.procedure_steps[static_cast<std::size_t>(current_)].metrics.record_view(good, dt);
+  }
+}
+
+void SessionRunner::sample() {
+  const BodyEnergies e = world_.energies();
+  double displacement = 0.0;
+  for (const auto& body : world_.bodies())
+    displacement = std::max(displacement, body.max_displacement());
+  report_.samples.push_back({world_.time(), e.kinetic, e.elastic, e.gravitational, displacement,
+                             world_.contacts().colliding_points,
+                             world_.contacts().max_penetration});
+  report_.max_displacement = std::max(report_.max_displacement, displacement);
+  const bool has_instrument = options_.instrument != nullptr;
+  if (has_instrument) {
+    PathSample p;
+    p.time = world_.time();
+    p.tip = state_.tip;
+    p.force = world_.instrument_force().norm();
+    p.in_contact = world_.instrument_in_contact();
+    p.step = current_ < static_cast<int>(report_.procedure_steps.size()) ? current_ : -1;
+    if (coverage_ != nullptr) p.wall_distance = coverage_->bvh().nearest(state_.tip).distance;
+    report_.path.push_back(p);
+  }
+  TaskContext context;
+  context.time = world_.time();
+  context.state = state_;
+  context.view = view_direction(state_, instrument_.optics_angle);
+  context.in_contact = world_.instrument_in_contact();
+  if (context.in_contact)
+    context.contact_object = world_.bodies()[static_cast<std::size_t>(instrument_body_)].name();
+  context.force = world_.instrument_force().norm();
+  context.kinetic_energy = e.kinetic;
+  context.camera = coverage_.get();
+  context.fraction_seen = coverage_ ? coverage_->fraction_seen() : 0.0;
+  for (auto& m : monitors_) {
+    const bool watched = m.step < 0 || m.step == current_ || m.step == current_ + 1;
+    if (!watched || m.task.done()) continue;
+    m.task.update(context);
+    if (m.task.result().status != "completed") continue;
+    const TaskResult& r = m.task.result();
+    report_.events.push_back({r.completed_at, "task-completed", r.name.empty() ? r.id : r.name});
+    report_.metrics.add_milestone(r.completed_tip);
+    if (m.step >= 0)
+      report_.procedure_steps[static_cast<std::size_t>(std::min(m.step, std::max(current_, 0)))]
+          .metrics.add_milestone(r.completed_tip);
+  }
+  if (!finished_) advance_steps();
+}
+
+void SessionRunner::end(const std::string& reason, const std::string& message) {
+  if (finished_) return;
+  finished_ = true;
+  report_.end_reason = reason;
+  if (reason != "duration" && reason != "completed")
+    report_.events.push_back({world_.time(), reason, message});
+}
+
+SessionReport SessionRunner::finish() {
+  if (current_ >= 0 && current_ < static_cast<int>(report_.procedure_steps.size())) {
+    auto& metrics = report_.procedure_steps[static_cast<std::size_t>(current_)].metrics;
+    const double seen = coverage_ ? coverage_->fraction_seen() : 0.0;
+    metrics.set_coverage(metrics.coverage_start(), seen);
+    close_step(current_);
+  }
+  report_.tasks.clear();
+  int completed = 0, available = 0;
+  for (const auto& m : monitors_) {
+    report_.tasks.push_back(m.task.result());
+    if (m.task.result().status != "unavailable") ++available;
+    if (m.task.result().status == "completed") ++completed;
+  }
+  report_.metrics.set_coverage(0.0, coverage_ ? coverage_->fraction_seen() : 0.0);
+  report_.metrics.set_tasks(completed, available);
+  report_.score = period_score(report_.metrics, force_warning_);
+  report_.steps = world_.steps();
+  report_.simulated_time = world_.time();
+  report_.final_state_hash = world_.state_hash();
+  report_.max_penetration = world_.max_penetration();
+  report_.contact_stiffness =
+      world_.bodies().size() > 1 ? scenario_.session.contact_stiffness : 0.0;
+  report_.bodies.clear();
+  for (const auto& body : world_.bodies()) {
+    BodySummary summary;
+    summary.name = body.name();
+    summary.nodes = body.node_count();
+    summary.edges = body.distance_terms().edges.size();
+    summary.tets = body.volume_terms().tets.size();
+    summary.surface_triangles = body.area_terms().triangles.size();
+    summary.max_displacement = body.max_displacement();
+    const core::Vec3 down = world_.gravity().norm() > 0.0
+                                ? core::Vec3(world_.gravity().normalized())
+                                : core::Vec3::Zero();
+    summary.centre_of_mass_drop = down.dot(body.centre_of_mass() - body.rest_centre_of_mass());
+    report_.bodies.push_back(summary);
+  }
+  report_.wall_time = wall_clock() - started_wall_clock_;
+  return report_;
+}
+
+}  // namespace viscera::sim

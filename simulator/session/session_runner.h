@@ -1,0 +1,102 @@
+#pragma once
+/// One training session stepped at the fixed physics step (DESIGN.md §5, seed 000 §11): the
+/// world with its instrument, the procedure's steps and tasks, the metrics of every step, the
+/// complications that end it (perforation, time limit, abort) and the record that replays it.
+/// The headless run and the interactive view both drive a SessionRunner, one step at a time.
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/scenario/scenario.h"
+#include "simulator/camera/surface_coverage.h"
+#include "simulator/session/instrument_input.h"
+#include "simulator/session/session_report.h"
+#include "simulator/world/world.h"
+
+namespace viscera::sim {
+
+/// Options of a session.
+struct HeadlessRunOptions {
+  double duration = 2.0;  ///< s the session may last at most (the scenario's limit also applies)
+  double sample_interval = 0.02;  ///< s between path, energy and task samples
+  double camera_interval = 0.1;   ///< s between looks through the optics for the surface seen
+  std::string package;            ///< package path, recorded in the report
+  /// When set, an instrument whose tip follows this input presses on the body of object
+  /// `instrument_body` (empty: the first simulated body) with a proxy spring of
+  /// `instrument_stiffness` N/m.
+  const InstrumentInput* instrument = nullptr;
+  std::string instrument_body;
+  double instrument_stiffness = 200.0;
+  long long checkpoint_interval = 100;  ///< physics steps between state hashes (for replay)
+  bool record_inputs = false;           ///< keep the instrument states in the report
+  /// Complications: the tool pushed further than this (m) into the wall perforates it and ends
+  /// the session (0: the scenario's perforation depth, or else the local wall thickness).
+  /// Forces above `force_warning` N (0: the scenario's level) are logged, one per episode.
+  double perforation_depth = 0.0;
+  double force_warning = 0.0;
+  bool end_when_complete = true;  ///< end once every step of the procedure is done
+  /// m per sub-step below which a calm world goes to sleep until touched (World); 0: never.
+  double sleep_threshold = 1e-10;
+};
+
+/// A session in progress.
+class SessionRunner {
+ public:
+  /// Builds the world and the task monitors; throws core::InputError for an unknown
+  /// instrument body and core::UsageError for a non-positive duration.
+  SessionRunner(const core::Scenario& scenario, const HeadlessRunOptions& options);
+  ~SessionRunner();
+
+  /// Advances one physics step with the instrument in `state` (ignored without instrument).
+  void step(const InstrumentState& state);
+  /// True once an end condition holds; the report's end_reason says which.
+  bool finished() const { return finished_; }
+  /// Ends the session now with `reason` (e.g. "abort" from a window being closed).
+  void end(const std::string& reason, const std::string& message);
+
+  /// The report so far; final once finished() (wall time and body summaries are filled in).
+  SessionReport finish();
+
+  const World& world() const { return world_; }
+  const SessionReport& report() const { return report_; }
+  const InstrumentState& instrument_state() const { return state_; }
+  const core::InstrumentSpec& instrument() const { return instrument_; }
+  /// Index of the procedure step under way, −1 without steps.
+  int current_step() const { return current_; }
+  /// The camera's coverage of the instrument body's surface, or null without a surface.
+  const SurfaceCoverage* coverage() const { return coverage_.get(); }
+  double time_limit() const { return time_limit_; }
+
+ private:
+  struct Monitor;
+  void sample();
+  void look();
+  void advance_steps();
+  void open_step(int index);
+  void close_step(int index);
+  double wall_thickness(int triangle);
+  double penetration() const;
+
+  const core::Scenario& scenario_;
+  HeadlessRunOptions options_;
+  World world_;
+  core::InstrumentSpec instrument_;
+  SessionReport report_;
+  InstrumentState state_;
+  int instrument_body_ = -1;
+  std::unique_ptr<SurfaceCoverage> coverage_;
+  std::vector<core::Vec3> coverage_rest_;  ///< visual vertices when the surface has no embedding
+  std::vector<Monitor> monitors_;
+  int current_ = -1;
+  double time_limit_ = 0.0, force_warning_ = 0.0, perforation_depth_ = 0.0;
+  long long total_steps_ = 0, sample_every_ = 1, look_every_ = 1;
+  bool finished_ = false, over_force_ = false;
+  double last_view_distance_ = -1.0;
+  std::unique_ptr<SurfaceBvh> wall_;  ///< the instrument body's surface at rest, for wall thickness
+  std::vector<double> thickness_;     ///< per body surface triangle, −1 until measured
+  double started_wall_clock_ = 0.0;
+};
+
+}  // namespace viscera::sim

@@ -1,0 +1,79 @@
+#pragma once
+/// Detects the completion of one procedure task from tool and camera state (seed 000 §11: low-
+/// level activities "are only used to evaluate the completion of a task"). Task kinds and their
+/// parameters are listed in core/scenario/procedure.h.
+
+#include <optional>
+#include <string>
+
+#include "core/scenario/scenario_parts.h"
+#include "simulator/session/instrument_state.h"
+
+namespace viscera::sim {
+
+class SurfaceCoverage;
+
+/// A point a task refers to: a landmark or an explicit position. m, unit normal or zero.
+struct TaskTarget {
+  core::Vec3 position = core::Vec3::Zero();
+  core::Vec3 normal = core::Vec3::Zero();
+};
+
+/// The session as a task sees it at one moment.
+struct TaskContext {
+  double time = 0.0;  ///< s
+  InstrumentState state;
+  core::Vec3 view = core::Vec3::UnitZ();  ///< unit viewing direction of the optics
+  bool in_contact = false;
+  std::string contact_object;               ///< object the tool touches, when in contact
+  double force = 0.0;                       ///< N on the instrument
+  double kinetic_energy = 0.0;              ///< J, all bodies
+  const SurfaceCoverage* camera = nullptr;  ///< for lines of sight, or null
+  /// Fraction of the surface region seen, for inspect-surface tasks (set per task by the session).
+  double fraction_seen = 0.0;
+};
+
+/// What became of a task. Status "completed", "not-completed" or "unavailable".
+struct TaskResult {
+  std::string id;
+  std::string name;
+  std::string kind;
+  std::string step;  ///< id of the step it belongs to, or "" for loose tasks
+  std::string substep;
+  std::string status = "not-completed";
+  double completed_at = -1.0;  ///< s, or −1
+  std::string note;            ///< why unavailable, or how it was judged
+  double best = -1.0;  ///< closest approach: m (reach), ° (centre-target), fraction (inspect)
+  core::Vec3 completed_tip = core::Vec3::Zero();  ///< where the tool was when it completed
+};
+
+/// Watches one task.
+class TaskMonitor {
+ public:
+  /// `target` is the resolved landmark or position (nullopt when the task has none or it
+  /// could not be resolved: `missing` says why, and the task is unavailable). `simulated_tool`
+  /// is the kind of instrument the session simulates.
+  TaskMonitor(const core::TaskSpec& task, std::string step, std::string substep,
+              std::optional<TaskTarget> target, const std::string& missing,
+              const std::string& simulated_tool);
+
+  /// Looks at the session; completes the task when its condition has held long enough.
+  void update(const TaskContext& context);
+
+  const TaskResult& result() const { return result_; }
+  bool done() const { return result_.status != "not-completed"; }
+  const core::TaskSpec& spec() const { return spec_; }
+
+ private:
+  bool holds(const TaskContext& context);
+  void complete(const TaskContext& context, const std::string& note);
+
+  core::TaskSpec spec_;
+  TaskResult result_;
+  std::optional<TaskTarget> target_;
+  double hold_time_ = 0.0;
+  double holding_since_ = -1.0;
+  bool was_inside_ = false;  ///< withdraw: the tool has been past the plane inwards
+};
+
+}  // namespace viscera::sim

@@ -20,8 +20,8 @@ struct Scenario {
   Metadata metadata;
   std::string procedure = "none";
   std::vector<SceneObject> objects;
-  std::map<std::string, Material> materials;   ///< keyed by Material::id
-  std::map<std::string, TextureSpec> textures; ///< keyed by TextureSpec::id
+  std::map<std::string, Material> materials;    ///< keyed by Material::id
+  std::map<std::string, TextureSpec> textures;  ///< keyed by TextureSpec::id
   std::vector<VesselTree> vessel_trees;
   std::vector<ActiveDeformation> active_deformations;
   std::vector<Pathology> pathologies;
@@ -29,6 +29,9 @@ struct Scenario {
   FluidSpec fluid;
   SessionSpec session;
   std::vector<VariabilityRule> variability;
+  std::vector<Landmark> landmarks;                   ///< named points tasks refer to
+  std::vector<CellTissueSpec> cell_tissues;          ///< one per cell-agent object
+  std::vector<UrethraLatticeSpec> urethra_lattices;  ///< one per urethra-lattice object
   Provenance provenance;
 
   /// The object with this id, or nullptr.

@@ -1,6 +1,7 @@
 #pragma once
 /// One object of a scene: an organ, pathology, vessel, fixture or instrument (DESIGN.md §3).
 
+#include <map>
 #include <string>
 
 #include "core/mesh/surface_embedding.h"
@@ -12,7 +13,7 @@ namespace viscera::core {
 /// What an object is to the clinician and the simulator.
 enum class ObjectRole { Organ, Pathology, Vessel, Fixture, Instrument };
 /// How an object is simulated.
-enum class BodyKind { None, TetMesh, MassSpring, CellAgent };
+enum class BodyKind { None, TetMesh, MassSpring, CellAgent, UrethraLattice };
 
 std::string to_string(ObjectRole role);
 std::string to_string(BodyKind kind);
@@ -23,7 +24,7 @@ BodyKind body_kind_from_string(const std::string& name);
 /// A scene object with its meshes held in memory. In a package the meshes live in
 /// objects/<id>/surface.vtp and objects/<id>/body.vtu (DESIGN.md §4).
 struct SceneObject {
-  std::string id;      ///< unique within the scenario; [a-z0-9_-]+
+  std::string id;  ///< unique within the scenario; [a-z0-9_-]+
   std::string name;
   ObjectRole role = ObjectRole::Organ;
   std::string material;  ///< id in Scenario::materials, or empty
@@ -31,8 +32,11 @@ struct SceneObject {
   std::string group;     ///< organ group name, or empty
   BodyKind body_kind = BodyKind::None;
   SurfaceMesh surface;
-  TetMesh body;                 ///< nodes, tets, masses and fixed flags when body_kind is TetMesh
-  SurfaceEmbedding embedding;   ///< surface vertices in body tets
+  TetMesh body;                ///< nodes, tets, masses and fixed flags when body_kind is TetMesh
+  SurfaceEmbedding embedding;  ///< surface vertices in body tets
+  /// Material of the tets carrying each tet label (wall layers, e.g. 1 endometrium,
+  /// 2 myometrium); tets whose label is not listed use `material`.
+  std::map<int, std::string> layer_materials;
 
   bool operator==(const SceneObject&) const = default;
 };

@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "core/version.h"
 #include "templates/ball_template.h"
+#include "templates/hysteroscopy/hysteroscopy_template.h"
 
 namespace viscera::templates {
 
@@ -13,6 +14,7 @@ const std::vector<std::unique_ptr<ScenarioTemplate>>& template_catalog() {
   static const std::vector<std::unique_ptr<ScenarioTemplate>> catalog = [] {
     std::vector<std::unique_ptr<ScenarioTemplate>> list;
     list.push_back(std::make_unique<BallTemplate>());
+    list.push_back(std::make_unique<HysteroscopyTemplate>());
     return list;
   }();
   return catalog;
@@ -31,13 +33,14 @@ ParameterValues resolve_parameters(const ScenarioTemplate& scenario_template,
                                    const std::map<std::string, std::string>& overrides) {
   ParameterValues values;
   const auto parameters = scenario_template.parameters();
-  for (const auto& p : parameters) values[p.name] = p.default_value;
+  for (const auto& p : parameters)
+    values[p.name] = p.default_value;
   for (const auto& [name, text] : overrides) {
     const auto it = std::find_if(parameters.begin(), parameters.end(),
                                  [&](const TemplateParameter& p) { return p.name == name; });
     if (it == parameters.end()) {
-      throw core::UsageError("template \"" + scenario_template.name() +
-                             "\" has no parameter \"" + name + "\"");
+      throw core::UsageError("template \"" + scenario_template.name() + "\" has no parameter \"" +
+                             name + "\"");
     }
     double value = 0.0;
     const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
@@ -90,6 +93,7 @@ core::Scenario build_from_template(const std::string& name,
   scenario.provenance.seed = seed;
   scenario.provenance.parameters = nlohmann::json(values);
   scenario.provenance.tool_versions = core::tool_versions();
+  if (scenario.variability.empty()) scenario.variability = scenario_template.default_variability();
   return scenario;
 }
 

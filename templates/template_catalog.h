@@ -39,6 +39,9 @@ class ScenarioTemplate {
   /// The procedure the built scenario is set up for (see core::kProcedures).
   virtual std::string procedure() const = 0;
   virtual std::vector<TemplateParameter> parameters() const = 0;
+  /// The template's own variability rules (variability/parameter_distribution.h): what a batch
+  /// of patients varies by default. Parameters without a rule keep their default.
+  virtual std::vector<core::VariabilityRule> default_variability() const { return {}; }
 
   /// Builds a scenario from fully resolved parameters; the same (parameters, seed) give the
   /// same scenario. Throws core::Error subclasses; CancelledError through `progress`.

@@ -21,6 +21,7 @@ std::string to_string(BodyKind kind) {
     case BodyKind::TetMesh: return "tet-mesh";
     case BodyKind::MassSpring: return "mass-spring";
     case BodyKind::CellAgent: return "cell-agent";
+    case BodyKind::UrethraLattice: return "urethra-lattice";
   }
   return "none";
 }
@@ -35,7 +36,8 @@ ObjectRole object_role_from_string(const std::string& name) {
 
 BodyKind body_kind_from_string(const std::string& name) {
   for (const auto kind :
-       {BodyKind::None, BodyKind::TetMesh, BodyKind::MassSpring, BodyKind::CellAgent}) {
+       {BodyKind::None, BodyKind::TetMesh, BodyKind::MassSpring, BodyKind::CellAgent,
+        BodyKind::UrethraLattice}) {
     if (to_string(kind) == name) return kind;
   }
   throw InputError("unknown body kind \"" + name + "\"");

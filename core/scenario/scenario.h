@@ -29,6 +29,9 @@ struct Scenario {
   FluidSpec fluid;
   SessionSpec session;
   std::vector<VariabilityRule> variability;
+  std::vector<Landmark> landmarks;                   ///< named points tasks refer to
+  std::vector<CellTissueSpec> cell_tissues;          ///< one per cell-agent object
+  std::vector<UrethraLatticeSpec> urethra_lattices;  ///< one per urethra-lattice object
   Provenance provenance;
 
   /// The object with this id, or nullptr.

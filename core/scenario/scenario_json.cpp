@@ -262,6 +262,86 @@ void from_json(const nlohmann::json& j, VariabilityRule& r) {
   read_optional(j, "arguments", r.arguments);
 }
 
+void to_json(nlohmann::json& j, const Landmark& l) {
+  j = {{"id", l.id}, {"name", l.name}, {"object", l.object}, {"position", l.position}, {"normal", l.normal}};
+}
+void from_json(const nlohmann::json& j, Landmark& l) {
+  j.at("id").get_to(l.id);
+  read_optional(j, "name", l.name);
+  read_optional(j, "object", l.object);
+  j.at("position").get_to(l.position);
+  read_optional(j, "normal", l.normal);
+}
+
+void to_json(nlohmann::json& j, const CellTypeSpec& t) {
+  j = {{"id", t.id},
+       {"mass", t.mass},
+       {"radius", t.radius},
+       {"home_stiffness", t.home_stiffness},
+       {"connection_stiffness", t.connection_stiffness},
+       {"damping", t.damping},
+       {"collision_efficiency", t.collision_efficiency},
+       {"tear_strain", t.tear_strain},
+       {"yield_strain", t.yield_strain}};
+}
+void from_json(const nlohmann::json& j, CellTypeSpec& t) {
+  j.at("id").get_to(t.id);
+  read_optional(j, "mass", t.mass);
+  read_optional(j, "radius", t.radius);
+  read_optional(j, "home_stiffness", t.home_stiffness);
+  read_optional(j, "connection_stiffness", t.connection_stiffness);
+  read_optional(j, "damping", t.damping);
+  read_optional(j, "collision_efficiency", t.collision_efficiency);
+  read_optional(j, "tear_strain", t.tear_strain);
+  read_optional(j, "yield_strain", t.yield_strain);
+}
+
+void to_json(nlohmann::json& j, const CellTissueSpec& c) {
+  j = {{"object", c.object},
+       {"types", c.types},
+       {"cell_types", c.cell_types},
+       {"neighbour_radius", c.neighbour_radius},
+       {"max_neighbours", c.max_neighbours},
+       {"planar", c.planar}};
+}
+void from_json(const nlohmann::json& j, CellTissueSpec& c) {
+  j.at("object").get_to(c.object);
+  read_optional(j, "types", c.types);
+  read_optional(j, "cell_types", c.cell_types);
+  read_optional(j, "neighbour_radius", c.neighbour_radius);
+  read_optional(j, "max_neighbours", c.max_neighbours);
+  read_optional(j, "planar", c.planar);
+}
+
+void to_json(nlohmann::json& j, const UrethraLatticeSpec& u) {
+  j = {{"object", u.object},
+       {"curvature", u.curvature},
+       {"length", u.length},
+       {"radius", u.radius},
+       {"points_per_section", u.points_per_section},
+       {"sections", u.sections},
+       {"endoscope_radius", u.endoscope_radius},
+       {"spring_stiffness", u.spring_stiffness},
+       {"friction", u.friction},
+       {"viscous_friction", u.viscous_friction},
+       {"break_force", u.break_force},
+       {"break_torque", u.break_torque}};
+}
+void from_json(const nlohmann::json& j, UrethraLatticeSpec& u) {
+  j.at("object").get_to(u.object);
+  read_optional(j, "curvature", u.curvature);
+  read_optional(j, "length", u.length);
+  read_optional(j, "radius", u.radius);
+  read_optional(j, "points_per_section", u.points_per_section);
+  read_optional(j, "sections", u.sections);
+  read_optional(j, "endoscope_radius", u.endoscope_radius);
+  read_optional(j, "spring_stiffness", u.spring_stiffness);
+  read_optional(j, "friction", u.friction);
+  read_optional(j, "viscous_friction", u.viscous_friction);
+  read_optional(j, "break_force", u.break_force);
+  read_optional(j, "break_torque", u.break_torque);
+}
+
 void to_json(nlohmann::json& j, const Provenance& p) {
   j = {{"template", p.template_name}, {"template_version", p.template_version}, {"seed", p.seed},
        {"parameters", p.parameters}, {"tool_versions", p.tool_versions}};
@@ -298,6 +378,11 @@ nlohmann::json scenario_to_json(const Scenario& s) {
                              {"body_kind", to_string(o.body_kind)},
                              {"surface", surface_file_of(o.id)}};
     if (o.body_kind != BodyKind::None) object["body"] = body_file_of(o.id);
+    if (!o.layer_materials.empty()) {
+      nlohmann::json layers = nlohmann::json::object();
+      for (const auto& [label, material] : o.layer_materials) layers[std::to_string(label)] = material;
+      object["layer_materials"] = layers;
+    }
     objects.push_back(std::move(object));
   }
   return {{"metadata", s.metadata},
@@ -312,6 +397,9 @@ nlohmann::json scenario_to_json(const Scenario& s) {
           {"fluid", s.fluid},
           {"session", s.session},
           {"variability", s.variability},
+          {"landmarks", s.landmarks},
+          {"cell_tissues", s.cell_tissues},
+          {"urethra_lattices", s.urethra_lattices},
           {"provenance", s.provenance}};
 }
 
@@ -350,6 +438,9 @@ Scenario scenario_from_json(const nlohmann::json& j, const std::string& file,
   convert_member(j, "fluid", s.fluid, file, pointer_prefix);
   convert_member(j, "session", s.session, file, pointer_prefix);
   convert_member(j, "variability", s.variability, file, pointer_prefix);
+  convert_member(j, "landmarks", s.landmarks, file, pointer_prefix);
+  convert_member(j, "cell_tissues", s.cell_tissues, file, pointer_prefix);
+  convert_member(j, "urethra_lattices", s.urethra_lattices, file, pointer_prefix);
   convert_member(j, "provenance", s.provenance, file, pointer_prefix);
 
   const auto objects = j.find("objects");
@@ -364,6 +455,10 @@ Scenario scenario_from_json(const nlohmann::json& j, const std::string& file,
       object.material = o.value("material", std::string());
       object.texture = o.value("texture", std::string());
       object.group = o.value("group", std::string());
+      const nlohmann::json layers = o.value("layer_materials", nlohmann::json::object());
+      for (const auto& [label, material] : layers.items()) {
+        object.layer_materials[std::stoi(label)] = material.get<std::string>();
+      }
     } catch (const nlohmann::json::exception& e) {
       throw ValidationError(std::string("cannot read object: ") + e.what(), {file, pointer, ""});
     }

@@ -174,6 +174,67 @@ struct SessionSpec {
   bool operator==(const SessionSpec&) const = default;
 };
 
+/// A named anatomical point that procedures and tasks refer to (e.g. "identify the right tubal
+/// orifice", seed 000 §11): where it is and from which side it is seen.
+struct Landmark {
+  std::string id;      ///< e.g. "tubal-orifice-right", "cervix-internal-os", "fundus"
+  std::string name;
+  std::string object;  ///< the object whose surface it lies on
+  Vec3 position = Vec3::Zero();  ///< m
+  Vec3 normal = Vec3::Zero();    ///< unit, pointing away from the tissue (where a camera looks from), or zero
+
+  bool operator==(const Landmark&) const = default;
+};
+
+/// One kind of cell of an agent-based tissue (seed 003 §V, the ten state constants).
+struct CellTypeSpec {
+  std::string id;
+  double mass = 1e-4;                  ///< kg
+  double radius = 0.001;               ///< m, for collisions
+  double home_stiffness = 0.5;         ///< N/m, spring to the home position
+  double connection_stiffness = 20.0;  ///< N/m, spring to each neighbour
+  double damping = 0.05;               ///< fraction of velocity removed per step (0–1)
+  double collision_efficiency = 0.5;   ///< k_collision
+  double tear_strain = 1.0;            ///< connections stretched beyond this break
+  double yield_strain = 0.5;           ///< beyond this rest lengths grow (plasticity)
+
+  bool operator==(const CellTypeSpec&) const = default;
+};
+
+/// Cell-agent tissue laid out as data (seed 003 §V): the object's body nodes are the cells (their
+/// home positions, masses and fixed flags); this says which type each cell is and how cells find
+/// their neighbours at start-up.
+struct CellTissueSpec {
+  std::string object;
+  std::vector<CellTypeSpec> types;
+  std::vector<int> cell_types;    ///< index into types, one per body node
+  double neighbour_radius = 0.0;  ///< m
+  int max_neighbours = 4;         ///< seed 003: four in a sheet
+  bool planar = true;             ///< cells stay in their z plane
+
+  bool operator==(const CellTissueSpec&) const = default;
+};
+
+/// The urethra lattice of the NTUA trainer (seed 002 §3.1, §5): w circular sections of n points
+/// on the centre line y = a z², and its force-model constants. The object's body nodes are the
+/// lattice points, section by section; the bladder-entrance section is fixed.
+struct UrethraLatticeSpec {
+  std::string object;
+  double curvature = 13.0;          ///< a, 1/m (seed 002: 0.13 per cm)
+  double length = 0.16;             ///< m along z from the meatus to the bladder entrance
+  double radius = 0.001;            ///< undeformed lumen radius, m
+  int points_per_section = 9;       ///< n
+  int sections = 26;                ///< w
+  double endoscope_radius = 0.004;  ///< m
+  double spring_stiffness = 15.0;   ///< N/m per wall spring
+  double friction = 0.3;            ///< Coulomb μ
+  double viscous_friction = 2.0;    ///< N·s/m
+  double break_force = 4.0;         ///< N
+  double break_torque = 0.08;       ///< N·m
+
+  bool operator==(const UrethraLatticeSpec&) const = default;
+};
+
 /// A distribution attached to a template parameter (variability rules).
 struct VariabilityRule {
   std::string parameter;

@@ -1,6 +1,7 @@
 #pragma once
 /// One object of a scene: an organ, pathology, vessel, fixture or instrument (DESIGN.md §3).
 
+#include <map>
 #include <string>
 
 #include "core/mesh/surface_embedding.h"
@@ -12,7 +13,7 @@ namespace viscera::core {
 /// What an object is to the clinician and the simulator.
 enum class ObjectRole { Organ, Pathology, Vessel, Fixture, Instrument };
 /// How an object is simulated.
-enum class BodyKind { None, TetMesh, MassSpring, CellAgent };
+enum class BodyKind { None, TetMesh, MassSpring, CellAgent, UrethraLattice };
 
 std::string to_string(ObjectRole role);
 std::string to_string(BodyKind kind);
@@ -33,6 +34,9 @@ struct SceneObject {
   SurfaceMesh surface;
   TetMesh body;                 ///< nodes, tets, masses and fixed flags when body_kind is TetMesh
   SurfaceEmbedding embedding;   ///< surface vertices in body tets
+  /// Material of the tets carrying each tet label (wall layers, e.g. 1 endometrium,
+  /// 2 myometrium); tets whose label is not listed use `material`.
+  std::map<int, std::string> layer_materials;
 
   bool operator==(const SceneObject&) const = default;
 };

@@ -1,0 +1,51 @@
+#pragma once
+/// Pathologies of the uterine cavity for the hysteroscopy template (seed 000 §1.1, §12):
+/// submucosal (sessile) myomas, intramural myomas, pedunculated myomas, endometrial polyps and
+/// adhesions (synechiae). Each is its own closed surface placed at a random point of the cavity
+/// wall and seated on it — vertices that would enter the wall are set onto it at a small gap —
+/// so it touches the wall without overlapping it; an intramural myoma lies inside the wall
+/// instead and becomes a hole in the uterus body. Positions are drawn so that no two
+/// pathologies overlap and none covers a tubal orifice or the internal os. Lengths in m.
+
+#include <string>
+#include <vector>
+
+#include "core/random.h"
+#include "core/scenario/scenario_parts.h"
+#include "templates/geometry/surface_queries.h"
+#include "templates/hysteroscopy/uterus_shape.h"
+
+namespace viscera::templates {
+
+/// How many of each kind, and their mean sizes (each pathology's own size is drawn ±25 %).
+struct PathologyRequest {
+  int submucosal_myomas = 0;
+  int intramural_myomas = 0;
+  int pedunculated_myomas = 0;
+  int polyps = 0;
+  int adhesions = 0;
+  double myoma_diameter = 0.008;
+  double polyp_length = 0.008;
+  double adhesion_radius = 0.0008;
+  double gap = 2e-4;            ///< clearance between a seated pathology and the wall
+  double edge_length = 0.0015;  ///< target triangle edge of pathology surfaces
+};
+
+/// One placed pathology: its record for Scenario::pathologies and its surface.
+struct PlacedPathology {
+  core::Pathology record;  ///< id, kind, host "uterus", object id, position (base), size
+  core::SurfaceMesh surface;
+  bool in_wall = false;   ///< intramural: a hole in the uterus body, not in the cavity
+  std::vector<int> base;  ///< surface vertices that rest on the wall (seated) or line the hole
+  core::Vec3 axis_start = core::Vec3::Zero(), axis_end = core::Vec3::Zero();  ///< bounding capsule
+  double capsule_radius = 0.0;
+};
+
+/// Places every requested pathology. `tissue` answers queries on `uterus.surface`. Throws
+/// core::InputError ("cannot place …") when a pathology finds no free spot in 200 tries — the
+/// variant generator counts that draw as invalid and draws again.
+std::vector<PlacedPathology> place_pathologies(const UterusShape& uterus,
+                                               const SurfaceQueries& tissue,
+                                               const PathologyRequest& request, core::Rng& rng);
+
+}  // namespace viscera::templates

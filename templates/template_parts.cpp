@@ -1,0 +1,91 @@
+#include "templates/template_parts.h"
+
+#include "core/error.h"
+#include "core/meshing/tet_mesher.h"
+#include "core/modelling/layered_body.h"
+#include "core/modelling/object_connectivity.h"
+
+namespace viscera::templates {
+
+void add_material(core::Scenario& scenario, const std::string& id, const std::string& name,
+                  double density, double stiffness, const std::string& source) {
+  core::Material m;
+  m.id = id;
+  m.name = name;
+  m.density = density;
+  m.distance_stiffness = stiffness;
+  m.volume_stiffness = stiffness;
+  m.area_stiffness = 0.0;
+  m.distance_damping = 2e-4 * stiffness;
+  m.source = source;
+  scenario.materials[id] = m;
+}
+
+void add_texture(core::Scenario& scenario, const std::string& id, const std::string& preset,
+                 std::uint64_t seed, int size) {
+  core::TextureSpec spec;
+  spec.id = id;
+  spec.preset = preset;
+  spec.seed = seed;
+  spec.width = spec.height = size;
+  scenario.textures[id] = spec;
+}
+
+core::SceneObject& add_tet_object(core::Scenario& scenario, const std::string& id,
+                                  const std::string& name, core::ObjectRole role,
+                                  const std::string& material, const std::string& texture,
+                                  const core::SurfaceMesh& surface, double density,
+                                  core::Progress& progress) {
+  core::SceneObject object;
+  object.id = id;
+  object.name = name;
+  object.role = role;
+  object.material = material;
+  object.texture = texture;
+  object.body_kind = core::BodyKind::TetMesh;
+  object.surface = surface;
+  try {
+    object.body = core::mesh_closed_surface(surface, {}, progress);
+  } catch (const core::InputError& e) {
+    throw core::InputError("object " + id + ": " + e.reason());
+  }
+  object.body.node_mass = core::lumped_node_masses(object.body, density);
+  object.body.fixed.assign(object.body.nodes.size(), 0);
+  object.embedding = core::embed_leading_nodes(object.body, surface.vertices.size());
+  scenario.objects.push_back(std::move(object));
+  return scenario.objects.back();
+}
+
+void attach(core::Scenario& scenario, const std::string& host, const std::string& part,
+            const std::vector<int>& part_nodes, double within, double stiffness) {
+  const core::SceneObject* host_object = scenario.find_object(host);
+  core::SceneObject* part_object = nullptr;
+  for (auto& object : scenario.objects) {
+    if (object.id == part) part_object = &object;
+  }
+  if (host_object == nullptr || part_object == nullptr)
+    throw core::UsageError("attach: unknown object " + host + " or " + part);
+  std::vector<core::Vec3> base;
+  for (const int n : part_nodes)
+    base.push_back(part_object->body.nodes.at(static_cast<std::size_t>(n)));
+  core::Connection connection;
+  connection.id = host + "-" + part;
+  connection.object_a = host;
+  connection.object_b = part;
+  connection.stiffness = stiffness;
+  for (const auto& [h, b] : core::nearest_knot_pairs(host_object->body.nodes, base, within)) {
+    connection.node_pairs.push_back({h, part_nodes[static_cast<std::size_t>(b)]});
+  }
+  if (connection.node_pairs.size() < 3) {
+    throw core::InputError(part + " is not attached to " + host + ": " +
+                           std::to_string(connection.node_pairs.size()) + " knot pairs within " +
+                           std::to_string(within * 1000.0) + " mm");
+  }
+  if (part_object->body.fixed.empty())
+    part_object->body.fixed.assign(part_object->body.nodes.size(), 0);
+  for (const auto& pair : connection.node_pairs)
+    part_object->body.fixed[static_cast<std::size_t>(pair[1])] = 1;
+  scenario.connections.push_back(std::move(connection));
+}
+
+}  // namespace viscera::templates

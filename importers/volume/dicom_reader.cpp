@@ -11,6 +11,8 @@
 
 #include <cmath>
 #include <cstring>
+#include <fstream>
+#include <iterator>
 
 #include "core/error.h"
 #include "importers/volume/dicom_series.h"
@@ -111,11 +113,53 @@ void store_value(core::ImageVolume& volume, std::size_t index, double value) {
   }
 }
 
+/// The bytes a file holds after the start of its (native) Pixel Data value: the first element
+/// tagged (7FE0,0010) whose declared length is at least `expected` (an icon's pixel data comes
+/// earlier and is smaller). Little- and big-endian, explicit and implicit VR. The file size
+/// when no such element is found (GDCM then decides).
+std::uint64_t native_pixel_bytes(const fs::path& path, std::uint64_t expected) {
+  std::ifstream in(path, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto u32 = [&](std::size_t at, bool big) {
+    std::uint32_t value = 0;
+    for (int b = 0; b < 4; ++b) {
+      const auto byte = static_cast<unsigned char>(bytes[at + (big ? b : 3 - b)]);
+      value = (value << 8) | byte;
+    }
+    return value;
+  };
+  for (const bool big : {false, true}) {
+    const std::string tag =
+        big ? std::string("\x7f\xe0\x00\x10", 4) : std::string("\xe0\x7f\x10\x00", 4);
+    for (auto at = bytes.find(tag); at != std::string::npos; at = bytes.find(tag, at + 1)) {
+      if (at + 12 > bytes.size()) break;
+      const std::string vr = bytes.substr(at + 4, 2);
+      const bool explicit_vr = vr == "OB" || vr == "OW";
+      const std::size_t value = at + (explicit_vr ? 12 : 8);
+      const std::uint32_t length = u32(explicit_vr ? at + 8 : at + 4, big);
+      if (length != 0xffffffffu && length >= expected) return bytes.size() - value;
+    }
+  }
+  return bytes.size();
+}
+
+/// Refuses, naming the file, what GDCM 3.0 cannot read without failing an assertion.
+void check_readable(const DicomHeader& header) {
+  const std::string file = header.file.string();
+  if (header.modality == "RTDOSE" && !header.has_number_of_frames) {
+    throw core::InputError(
+        "RT Dose file without Number of Frames (0028,0008), which GDCM 3.0 "
+        "needs to read it",
+        {file, "", ""});
+  }
+}
+
 /// Decodes one file and writes its frames into `volume` from voxel `first` on, each value as
 /// slope·value + intercept. Throws naming the file when GDCM cannot read or decode it.
 void decode_into(const fs::path& path, const DicomHeader& header, double slope, double intercept,
                  core::ImageVolume& volume, std::size_t first) {
   const std::string file = path.string();
+  check_readable(header);
   gdcm::ImageReader reader;
   reader.SetFileName(file.c_str());
   if (!reader.Read()) {
@@ -135,6 +179,26 @@ void decode_into(const fs::path& path, const DicomHeader& header, double slope, 
   const bool single_bit = format.GetScalarType() == gdcm::PixelFormat::SINGLEBIT;
   const std::size_t expected =
       single_bit ? (pixels * samples + 7) / 8 : pixels * format.GetPixelSize();
+  const auto photometric = image.GetPhotometricInterpretation();
+  if (photometric == gdcm::PhotometricInterpretation::YBR_FULL_422 ||
+      photometric == gdcm::PhotometricInterpretation::YBR_PARTIAL_422 ||
+      photometric == gdcm::PhotometricInterpretation::YBR_PARTIAL_420) {
+    if (!image.GetTransferSyntax().IsEncapsulated()) {
+      throw core::InputError(std::string("uncompressed chroma-subsampled colour (") +
+                                 photometric.GetString() + ") is not supported",
+                             {file, "", ""});
+    }
+  }
+  // Native pixel data that ends before the image does: GDCM would pad it silently.
+  if (!image.GetTransferSyntax().IsEncapsulated() && !header.deflated && !single_bit) {
+    const std::uint64_t present = native_pixel_bytes(path, expected);
+    if (present < expected) {
+      throw core::InputError("pixel data is truncated: the image needs " +
+                                 std::to_string(expected) + " bytes, the file holds " +
+                                 std::to_string(present),
+                             {file, "", ""});
+    }
+  }
   std::vector<char> buffer(image.GetBufferLength());
   if (buffer.size() < expected || !image.GetBuffer(buffer.data())) {
     throw core::InputError(std::string("GDCM cannot decode the pixel data (transfer syntax ") +
@@ -162,7 +226,6 @@ void decode_into(const fs::path& path, const DicomHeader& header, double slope, 
     return;
   }
   // Colour: Rec. 601 luminance of RGB; the Y of YBR is that luminance already.
-  const auto photometric = image.GetPhotometricInterpretation();
   const bool ybr = photometric != gdcm::PhotometricInterpretation::RGB;
   const bool planar = image.GetPlanarConfiguration() == 1;
   const std::size_t frame_pixels = columns * rows;
@@ -187,7 +250,9 @@ std::int64_t output_bytes(const DicomHeader& header) {
 }
 
 /// The decoded pixel format of `file` without its pixel data: GDCM reads the header only.
-gdcm::PixelFormat pixel_format_of(const fs::path& path) {
+gdcm::PixelFormat pixel_format_of(const DicomHeader& header) {
+  check_readable(header);
+  const fs::path& path = header.file;
   gdcm::ImageReader reader;
   reader.SetFileName(path.string().c_str());
   if (!reader.Read()) {
@@ -212,9 +277,8 @@ void assemble(const std::vector<DicomHeader>& slices, double slice_spacing_mm,
   }
   core::ImageVolume& volume = loaded.volume;
   volume.dims = {first.columns, first.rows, static_cast<int>(depth)};
-  volume.scalar_type = uniform_rescale
-                           ? output_type(pixel_format_of(first.file), first.file.string())
-                           : core::ScalarType::Float32;
+  volume.scalar_type = uniform_rescale ? output_type(pixel_format_of(first), first.file.string())
+                                       : core::ScalarType::Float32;
   volume.allocate();
   const std::size_t per_file = static_cast<std::size_t>(first.columns) * first.rows * first.frames;
   for (std::size_t s = 0; s < slices.size(); ++s) {
@@ -238,7 +302,8 @@ void assemble(const std::vector<DicomHeader>& slices, double slice_spacing_mm,
       loaded.notes.push_back("frames carry no spacing; 1 mm assumed between them");
     }
   }
-  if (!first.has_pixel_spacing) loaded.notes.push_back("file gives no Pixel Spacing; 1 mm assumed");
+  if (!first.has_pixel_spacing && image.GetSpacing(0) == 1.0 && image.GetSpacing(1) == 1.0)
+    loaded.notes.push_back("file gives no Pixel Spacing; 1 mm assumed");
   if (!first.has_orientation || !first.has_position) {
     loaded.notes.push_back(
         "file gives no Image Position/Orientation (Patient); axes taken as "

@@ -72,6 +72,9 @@ bool read_dicom_header(const fs::path& file, DicomHeader& header) {
   const gdcm::DataSet& data = reader.GetFile().GetDataSet();
   header = DicomHeader{};
   header.file = file;
+  header.deflated = reader.GetFile().GetHeader().GetDataSetTransferSyntax() ==
+                    gdcm::TransferSyntax::DeflatedExplicitVRLittleEndian;
+  header.has_number_of_frames = data.FindDataElement(gdcm::Tag(0x0028, 0x0008));
   header.rows = unsigned_short_of<0x0028, 0x0010>(data);
   header.columns = unsigned_short_of<0x0028, 0x0011>(data);
   if (header.rows <= 0 || header.columns <= 0) return false;  // not an image (report, plan, …)

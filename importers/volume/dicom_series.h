@@ -3,6 +3,7 @@
 /// and the order and spacing of a series' slices along the normal of their planes. Internal to
 /// viscera_importers (dicom_reader.cpp decodes the pixels).
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -18,7 +19,9 @@ struct DicomHeader {
   std::string series_uid, description, modality;
   int rows = 0, columns = 0, frames = 1, samples = 1, bits_allocated = 0, instance = 0;
   bool has_position = false, has_orientation = false, has_pixel_spacing = false;
-  double slope = 1.0, intercept = 0.0;       ///< Rescale Slope/Intercept (modality LUT)
+  double slope = 1.0, intercept = 0.0;  ///< Rescale Slope/Intercept (modality LUT)
+  bool has_number_of_frames = false;
+  bool deflated = false;                     ///< Deflated Explicit VR: offsets are not file offsets
   core::Vec3 position = core::Vec3::Zero();  ///< Image Position (Patient), mm
   core::Vec3 row_direction = core::Vec3::UnitX(), column_direction = core::Vec3::UnitY();
 };

@@ -12,6 +12,7 @@
 #include "studio/cli/template_commands.h"
 #include "studio/cli/texture_commands.h"
 #include "studio/cli/vessel_commands.h"
+#include "studio/cli/volume_commands.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"Viscera: virtual patients for surgical simulators", "viscera"};
@@ -25,6 +26,7 @@ int main(int argc, char** argv) {
   viscera::cli::add_vessel_commands(app);
   viscera::cli::add_mesh_commands(app);
   viscera::cli::add_export_commands(app);
+  viscera::cli::add_volume_commands(app);
 
   return viscera::cli::run_command_line(app, argc, argv, exit_code);
 }

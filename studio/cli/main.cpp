@@ -9,6 +9,7 @@
 #include "studio/cli/export_commands.h"
 #include "studio/cli/mesh_commands.h"
 #include "studio/cli/package_commands.h"
+#include "studio/cli/segment_commands.h"
 #include "studio/cli/template_commands.h"
 #include "studio/cli/texture_commands.h"
 #include "studio/cli/vessel_commands.h"
@@ -27,6 +28,7 @@ int main(int argc, char** argv) {
   viscera::cli::add_mesh_commands(app);
   viscera::cli::add_export_commands(app);
   viscera::cli::add_volume_commands(app);
+  viscera::cli::add_segment_commands(app);
 
   return viscera::cli::run_command_line(app, argc, argv, exit_code);
 }

@@ -311,8 +311,13 @@ void assemble(const std::vector<DicomHeader>& slices, double slice_spacing_mm,
   }
   const core::Vec3 normal = first.row_direction.cross(first.column_direction).normalized();
   core::Mat3 axes;
-  axes.col(0) = first.row_direction * image.GetSpacing(0);
-  axes.col(1) = first.column_direction * image.GetSpacing(1);
+  // Pixel Spacing as the file states it; GDCM ignores it for some storage classes (NM, SC)
+  // but finds it in functional groups of enhanced objects.
+  const core::Vec2 pixel = first.has_pixel_spacing
+                               ? first.pixel_spacing
+                               : core::Vec2(image.GetSpacing(0), image.GetSpacing(1));
+  axes.col(0) = first.row_direction * pixel.x();
+  axes.col(1) = first.column_direction * pixel.y();
   axes.col(2) = normal * frame_step;
   set_geometry_mm(volume, axes, first.position, false, where);
 }

@@ -83,8 +83,12 @@ bool read_dicom_header(const fs::path& file, DicomHeader& header) {
   header.series_uid = text_of(data, gdcm::Tag(0x0020, 0x000e));
   header.description = text_of(data, gdcm::Tag(0x0008, 0x103e));
   header.modality = text_of(data, gdcm::Tag(0x0008, 0x0060));
-  header.has_pixel_spacing = !text_of(data, gdcm::Tag(0x0028, 0x0030)).empty() ||
-                             !text_of(data, gdcm::Tag(0x0018, 0x1164)).empty();
+  auto spacing = numbers_of(text_of(data, gdcm::Tag(0x0028, 0x0030)));
+  if (spacing.size() != 2) spacing = numbers_of(text_of(data, gdcm::Tag(0x0018, 0x1164)));
+  if (spacing.size() == 2 && spacing[0] > 0 && spacing[1] > 0) {
+    header.pixel_spacing = core::Vec2(spacing[1], spacing[0]);  // (between columns, between rows)
+  }
+  header.has_pixel_spacing = header.pixel_spacing.x() > 0;
   if (const auto slope = numbers_of(text_of(data, gdcm::Tag(0x0028, 0x1053))); slope.size() == 1) {
     header.slope = slope[0];
   }

@@ -21,6 +21,7 @@ struct DicomHeader {
   bool has_position = false, has_orientation = false, has_pixel_spacing = false;
   double slope = 1.0, intercept = 0.0;  ///< Rescale Slope/Intercept (modality LUT)
   bool has_number_of_frames = false;
+  core::Vec2 pixel_spacing = core::Vec2::Zero();  ///< Pixel Spacing (x, y) in mm, 0 if absent
   bool deflated = false;                     ///< Deflated Explicit VR: offsets are not file offsets
   core::Vec3 position = core::Vec3::Zero();  ///< Image Position (Patient), mm
   core::Vec3 row_direction = core::Vec3::UnitX(), column_direction = core::Vec3::UnitY();

@@ -82,10 +82,10 @@ TEST(ModelCommand, ball_flat_and_branching_pipe_become_a_package_the_simulator_r
       "--rows 4 --cols 4 --open --steps 4 -o sheet.json",
       dir);
   viscera_ok(
-      "model new pipe --id vessel --point 0.05,-0.03,0.02 --point 0.05,0,0.02 "
-      "--point 0.05,0.03,0.02 --radius 0.004 --ring-segments 12 -o pipe.json",
+      "model new pipe --id vessel --role vessel --point 0.05,-0.03,0.02 --point 0.05,0,0.02 "
+      "--point 0.05,0.03,0.02 --radius 0.006 --ring-segments 8 -o pipe.json",
       dir);
-  viscera_ok("model branch pipe.json --parent 0 --attach 0.5 --point 0.075,0,0.03 --radius 0.003",
+  viscera_ok("model branch pipe.json --parent 0 --attach 0.5 --point 0.08,0,0.03 --radius 0.004",
              dir);
   EXPECT_EQ(viscera_json("model points pipe.json", dir)["points"].size(), 4u);
 
@@ -107,21 +107,27 @@ TEST(ModelCommand, ball_flat_and_branching_pipe_become_a_package_the_simulator_r
   // The sheet's middle control point lifted 4 mm.
   viscera_ok("model move-point sheet.json --point 5 --to=-0.0133333,-0.0133333,0.004", dir);
 
-  // Layers into bodies: gmsh shells for the ball and the pipe, KisMo's springs for the sheet.
+  // Layers into bodies: a gmsh shell for the ball, KisMo's springs for the sheet and the pipe.
   viscera_ok("model layer ball.json --layers 1 --thickness 0.006", dir);
   viscera_ok("model layer sheet.json --layers 1 --thickness 0.003 --body mass-spring", dir);
-  viscera_ok("model layer pipe.json --layers 1 --thickness 0.001", dir);
+  viscera_ok("model layer pipe.json --layers 1 --thickness 0.002 --body mass-spring", dir);
   const auto sheet_mesh = viscera_json("model mesh sheet.json -o sheet.vtp --body sheet.vtu", dir);
   EXPECT_EQ(sheet_mesh["body"], "mass-spring");
   EXPECT_GT(sheet_mesh["body_tets"].get<int>(), 0);
 
-  // Materials: fitted (through the library), shipped, and from the fitted file.
+  // Materials: fitted (through the library), shipped, and a shipped one written to a file.
   viscera_ok("model material ball.json --from-library test-tissue" + lib, dir);
   viscera_ok("model material sheet.json --shipped myometrium", dir);
-  viscera_ok("model material pipe.json --file tissue.json", dir);
+  viscera_ok("material get vein -o vein.json", dir);
+  viscera_ok("model material pipe.json --file vein.json", dir);
   viscera_ok("model fix sheet.json --center=-0.04,-0.04,0 --radius 0.015", dir);
   viscera_ok("model fix sheet.json --center 0.04,0.04,0 --radius 0.015", dir);
-  viscera_ok("model fix pipe.json --center 0.05,-0.03,0.02 --radius 0.006", dir);
+  viscera_ok("model fix sheet.json --center=-0.04,0.04,0 --radius 0.015", dir);
+  viscera_ok("model fix sheet.json --center=0.04,-0.04,0 --radius 0.015", dir);
+  viscera_ok("model fix pipe.json --center 0.05,-0.03,0.02 --radius 0.008", dir);
+  viscera_ok("model fix pipe.json --center 0.05,0.03,0.02 --radius 0.008", dir);
+  viscera_ok("model fix pipe.json --center 0.08,0,0.03 --radius 0.006", dir);  // the branch's end
+  viscera_ok("model fix ball.json --center 0,0,0.05 --radius 0.008", dir);
 
   // Connected at the nearest knots, in one organ group.
   const auto connected =
@@ -140,9 +146,9 @@ TEST(ModelCommand, ball_flat_and_branching_pipe_become_a_package_the_simulator_r
       "model package ball-from-library.json sheet.json pipe.json --name pelvis -o scene.vscene",
       dir);
   ASSERT_EQ(package["objects"].size(), 3u);
-  EXPECT_EQ(package["objects"][0]["body"], "TetMesh");
-  EXPECT_EQ(package["objects"][1]["body"], "MassSpring");
-  EXPECT_EQ(package["objects"][2]["body"], "TetMesh");
+  EXPECT_EQ(package["objects"][0]["body"], "tet-mesh");
+  EXPECT_EQ(package["objects"][1]["body"], "mass-spring");
+  EXPECT_EQ(package["objects"][2]["body"], "mass-spring");
   for (const auto& object : package["objects"]) {
     EXPECT_TRUE(object["closed"].get<bool>() || object["id"] == "sheet") << object["id"];
     EXPECT_GT(object["body_volume"].get<double>(), 0.0) << object["id"];
@@ -160,7 +166,7 @@ TEST(ModelCommand, ball_flat_and_branching_pipe_become_a_package_the_simulator_r
   ASSERT_EQ(report["bodies"].size(), 3u);
   const double displacement = report["max_displacement"].get<double>();
   EXPECT_TRUE(std::isfinite(displacement));
-  // Held and connected, nothing falls: a free fall would drop 1.2 m in 0.5 s.
+  // Held in place, nothing falls: a free fall would drop 1.2 m in 0.5 s.
   EXPECT_LT(displacement, 0.05);
   for (const auto& value : report["energy"]["total"])
     EXPECT_TRUE(std::isfinite(value.get<double>()));

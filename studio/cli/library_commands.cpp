@@ -8,12 +8,14 @@
 #include "core/error.h"
 #include "core/library/asset_entry_file.h"
 #include "core/library/asset_library.h"
+#include "core/modelling/model_scene.h"
 #include "core/package/scenario_package.h"
 #include "core/sha256.h"
 #include "core/version.h"
 #include "studio/cli/cli_files.h"
 #include "studio/cli/command_output.h"
 #include "textures/png_io.h"
+#include "textures/surface_thumbnail.h"
 
 namespace viscera::cli {
 namespace {
@@ -26,6 +28,7 @@ struct LibraryOptions {
   std::vector<std::string> tags;
   int version = 0;
   bool all_versions = false;
+  bool no_thumbnail = false;
   bool json = false;
 };
 
@@ -116,7 +119,15 @@ void add(const LibraryOptions& o) {
                                   {"added_by", "viscera " + core::viscera_version()}}
                        .dump();
   }
-  if (!o.thumbnail.empty()) entry.thumbnail = read_file_bytes(o.thumbnail);
+  if (!o.thumbnail.empty()) {
+    entry.thumbnail = read_file_bytes(o.thumbnail);
+  } else if (!o.no_thumbnail && s.type == core::AssetType::Model && ext == "json") {
+    // A model document gets a picture of its tessellation.
+    const core::ModelDocument model =
+        core::model_from_json(nlohmann::json::parse(entry.payload), path.string());
+    entry.thumbnail = textures::encode_png(
+        textures::render_surface_thumbnail(core::tessellate_model(model), 128));
+  }
   core::AssetLibrary library(core::resolve_library_path(o.library));
   const core::AssetSummary added = library.add(entry);
   if (o.json) {
@@ -233,7 +244,9 @@ void add_library_commands(CLI::App& app) {
   add_command->add_option("--tags", o->tags, "Tags, comma separated")->delimiter(',');
   add_command->add_option("--provenance", o->provenance,
                           "Where it came from (default: file and checksum)");
-  add_command->add_option("--thumbnail", o->thumbnail, "PNG thumbnail");
+  add_command->add_option("--thumbnail", o->thumbnail,
+                          "PNG thumbnail (default for a model JSON: a rendering of it)");
+  add_command->add_flag("--no-thumbnail", o->no_thumbnail, "Store no thumbnail");
   add_command->add_flag("--json", o->json, "Print JSON");
   add_command->callback([o] { add(*o); });
 

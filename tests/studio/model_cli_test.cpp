@@ -139,7 +139,11 @@ TEST(ModelCommand, ball_flat_and_branching_pipe_become_a_package_the_simulator_r
 
   // The ball model goes into the library and comes back byte for byte.
   viscera_ok("library add ball.json --tags organ" + lib, dir);
-  viscera_ok("library get ball -o ball-from-library.json" + lib, dir);
+  viscera_ok("library get ball -o ball-from-library.json --thumbnail ball.png" + lib, dir);
+  const std::string png = read_bytes(dir / "ball.png");  // rendered when the model was added
+  ASSERT_GT(png.size(), 24u);
+  EXPECT_EQ(png.substr(1, 3), "PNG");
+  EXPECT_EQ(static_cast<unsigned char>(png[19]), 128u);  // IHDR width, big-endian
   EXPECT_EQ(read_bytes(dir / "ball-from-library.json"), read_bytes(dir / "ball.json"));
 
   const auto package = viscera_json(

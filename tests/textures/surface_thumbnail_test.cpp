@@ -1,0 +1,55 @@
+#include "textures/surface_thumbnail.h"
+
+#include <gtest/gtest.h>
+
+#include <numbers>
+
+#include "core/error.h"
+#include "core/primitives/flat_primitive.h"
+#include "core/primitives/icosphere.h"
+
+namespace viscera::textures {
+namespace {
+
+bool is_background(const Image8& image, int x, int y) {
+  const std::uint8_t* p = image.row(y) + 3 * x;
+  return p[0] == 40 && p[1] == 44 && p[2] == 52;
+}
+
+TEST(SurfaceThumbnail, sphere_fills_its_disc_lit_at_the_centre_and_dark_at_the_rim) {
+  const int size = 128;
+  const Image8 image = render_surface_thumbnail(core::make_icosphere(0.03, 4), size);
+  ASSERT_EQ(image.width, size);
+  ASSERT_EQ(image.channels, 3);
+  int covered = 0;
+  for (int y = 0; y < size; ++y)
+    for (int x = 0; x < size; ++x)
+      covered += !is_background(image, x, y);
+  // The disc of radius 0.45 · size: π 0.45² of the pixels (the polyhedron is 0.1 % smaller).
+  const double expected = std::numbers::pi * 0.45 * 0.45 * size * size;
+  EXPECT_NEAR(covered, expected, 0.02 * expected);
+  EXPECT_TRUE(is_background(image, 0, 0));
+  EXPECT_TRUE(is_background(image, size - 1, size - 1));
+  const std::uint8_t centre = image.row(size / 2)[3 * (size / 2)];
+  const std::uint8_t rim = image.row(size / 2)[3 * (size / 2 + 56)];
+  EXPECT_GE(centre, 215);  // facing the headlight: nearly the full tissue colour 222
+  EXPECT_LT(rim, centre - 60);
+  EXPECT_EQ(render_surface_thumbnail(core::make_icosphere(0.03, 4), size), image);
+}
+
+TEST(SurfaceThumbnail, open_sheet_is_drawn_from_either_side_and_bad_input_is_refused) {
+  core::FlatPrimitive flat =
+      core::make_flat(core::Vec3::Zero(), core::Vec3(0.05, 0, 0), core::Vec3(0, 0.05, 0), 3, 3);
+  flat.open = true;
+  core::SurfaceMesh sheet = core::tessellate_flat(flat);
+  const Image8 front = render_surface_thumbnail(sheet, 64);
+  for (auto& t : sheet.triangles)
+    std::swap(t[1], t[2]);
+  EXPECT_EQ(render_surface_thumbnail(sheet, 64), front);  // both sides shaded alike
+  EXPECT_FALSE(is_background(front, 32, 32));
+  EXPECT_THROW(render_surface_thumbnail(sheet, 8), core::UsageError);
+  EXPECT_THROW(render_surface_thumbnail(core::SurfaceMesh{}, 64), core::UsageError);
+}
+
+}  // namespace
+}  // namespace viscera::textures

@@ -1,0 +1,91 @@
+#include "textures/surface_thumbnail.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/error.h"
+
+namespace viscera::textures {
+namespace {
+
+constexpr std::uint8_t kBackground[3] = {40, 44, 52};
+constexpr double kTissue[3] = {222.0, 140.0, 140.0};
+
+}  // namespace
+
+Image8 render_surface_thumbnail(const core::SurfaceMesh& surface, int size) {
+  if (size < 16 || size > 1024)
+    throw core::UsageError("a thumbnail is 16 to 1024 pixels wide, not " + std::to_string(size));
+  if (surface.vertices.empty() || surface.triangles.empty())
+    throw core::UsageError("cannot draw a thumbnail of an empty surface");
+  core::Vec3 low = surface.vertices.front(), high = low;
+  for (const auto& v : surface.vertices) {
+    if (!v.allFinite()) throw core::UsageError("cannot draw a thumbnail of a non-finite surface");
+    low = low.cwiseMin(v);
+    high = high.cwiseMax(v);
+  }
+  const core::Vec3 centre = 0.5 * (low + high);
+  double radius = 0.0;
+  for (const auto& v : surface.vertices)
+    radius = std::max(radius, (v - centre).norm());
+  if (!(radius > 0.0)) radius = 1.0;
+
+  // Camera frame: looking along −view, z up on the image where possible.
+  const core::Vec3 view = core::Vec3(1.0, -1.5, 1.0).normalized();  // towards the viewer
+  const core::Vec3 right = core::Vec3::UnitZ().cross(view).normalized();
+  const core::Vec3 up = view.cross(right);
+  const double scale = 0.45 * size / radius;  // the bounding sphere spans 90 % of the width
+  const double half = 0.5 * size;
+
+  Image8 image(size, size, 3);
+  for (std::size_t i = 0; i < image.pixels.size(); ++i)
+    image.pixels[i] = kBackground[i % 3];
+  std::vector<double> depth(static_cast<std::size_t>(size) * size,
+                            -std::numeric_limits<double>::infinity());
+  std::vector<core::Vec3> screen;  // x, y in pixels (y down), z towards the viewer
+  screen.reserve(surface.vertices.size());
+  for (const auto& v : surface.vertices) {
+    const core::Vec3 d = v - centre;
+    screen.emplace_back(half + scale * d.dot(right), half - scale * d.dot(up), d.dot(view));
+  }
+  for (const auto& t : surface.triangles) {
+    const core::Vec3& a = screen[static_cast<std::size_t>(t[0])];
+    const core::Vec3& b = screen[static_cast<std::size_t>(t[1])];
+    const core::Vec3& c = screen[static_cast<std::size_t>(t[2])];
+    const core::Vec3 normal = (surface.vertices[static_cast<std::size_t>(t[1])] -
+                               surface.vertices[static_cast<std::size_t>(t[0])])
+                                  .cross(surface.vertices[static_cast<std::size_t>(t[2])] -
+                                         surface.vertices[static_cast<std::size_t>(t[0])]);
+    const double length = normal.norm();
+    if (!(length > 0.0)) continue;
+    // A headlight on both sides, plus ambient light.
+    const double shade = 0.25 + 0.75 * std::abs(normal.dot(view)) / length;
+    const double area = (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
+    if (std::abs(area) < 1e-12) continue;
+    const int x0 = std::max(0, static_cast<int>(std::floor(std::min({a.x(), b.x(), c.x()}))));
+    const int x1 = std::min(size - 1, static_cast<int>(std::ceil(std::max({a.x(), b.x(), c.x()}))));
+    const int y0 = std::max(0, static_cast<int>(std::floor(std::min({a.y(), b.y(), c.y()}))));
+    const int y1 = std::min(size - 1, static_cast<int>(std::ceil(std::max({a.y(), b.y(), c.y()}))));
+    for (int y = y0; y <= y1; ++y) {
+      for (int x = x0; x <= x1; ++x) {
+        const double px = x + 0.5, py = y + 0.5;
+        // Barycentric weights from edge functions; the sign of `area` covers both windings.
+        const double w0 = ((b.x() - px) * (c.y() - py) - (b.y() - py) * (c.x() - px)) / area;
+        const double w1 = ((c.x() - px) * (a.y() - py) - (c.y() - py) * (a.x() - px)) / area;
+        const double w2 = 1.0 - w0 - w1;
+        if (w0 < 0.0 || w1 < 0.0 || w2 < 0.0) continue;
+        const double z = w0 * a.z() + w1 * b.z() + w2 * c.z();
+        double& stored = depth[static_cast<std::size_t>(y) * size + x];
+        if (z <= stored) continue;
+        stored = z;
+        std::uint8_t* pixel = image.row(y) + 3 * x;
+        for (int k = 0; k < 3; ++k)
+          pixel[k] = static_cast<std::uint8_t>(std::lround(std::min(255.0, kTissue[k] * shade)));
+      }
+    }
+  }
+  return image;
+}
+
+}  // namespace viscera::textures

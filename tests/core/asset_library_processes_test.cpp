@@ -1,7 +1,8 @@
-// Processes sharing the asset library. It survives a writer killed in the middle of a write (issue 4, point 8): a
-// child process adds entries in a loop, each one transaction, and reports every commit through
-// a pipe; the parent kills it with SIGKILL at once or a little after a report, so the kill
-// lands inside the next transaction, then checks the database.
+// Processes sharing the asset library (issue 4, point 8). It survives a writer killed in the
+// middle of a write: a child process adds entries in a loop, each one transaction, and reports
+// every commit through a pipe; the parent kills it with SIGKILL at once or a little after a
+// report, so the kill lands inside the next transaction, then checks the database. Two
+// writers at once each get their own versions.
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sqlite3.h>

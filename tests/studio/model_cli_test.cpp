@@ -176,6 +176,24 @@ TEST(ModelCommand, ball_flat_and_branching_pipe_become_a_package_the_simulator_r
     EXPECT_TRUE(std::isfinite(value.get<double>()));
 }
 
+TEST(ModelCommand, every_new_command_has_help_and_a_package_is_the_same_bytes_twice) {
+  const fs::path dir = testing::scratch_dir();
+  fs::current_path(dir);
+  for (const char* command :
+       {"model", "model new", "model move-point", "model branch", "model layer", "model connect",
+        "model package", "material fit", "library", "library add", "library get"}) {
+    const auto result = run_program("viscera", std::string(command) + " --help", dir);
+    EXPECT_EQ(result.exit_code, 0) << command;
+    EXPECT_NE(result.out.find("Usage"), std::string::npos) << command;
+  }
+  viscera_ok("model new ball --id b --radius 0.02 --subdivisions 2 -o b.json", dir);
+  viscera_ok("model layer b.json --layers 2 --thickness 0.004 --mode scale", dir);
+  viscera_ok("model package b.json -o one.vscene", dir);
+  viscera_ok("model package b.json -o two.vscene", dir);
+  for (const char* file : {"manifest.json", "objects/b/surface.vtp", "objects/b/body.vtu"})
+    EXPECT_EQ(read_bytes(dir / "one.vscene" / file), read_bytes(dir / "two.vscene" / file)) << file;
+}
+
 TEST(ModelCommand, bad_edits_have_typed_exit_codes_and_leave_the_model_alone) {
   const fs::path dir = testing::scratch_dir();
   fs::current_path(dir);  // the programs run where the test runs; relative names are in dir

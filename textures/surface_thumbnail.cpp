@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <opencv2/imgproc.hpp>
 
 #include "core/error.h"
 
@@ -86,6 +87,25 @@ Image8 render_surface_thumbnail(const core::SurfaceMesh& surface, int size) {
     }
   }
   return image;
+}
+
+Image8 image_thumbnail(const Image8& image, int size) {
+  if (size < 16 || size > 1024)
+    throw core::UsageError("a thumbnail is 16 to 1024 pixels wide, not " + std::to_string(size));
+  if (image.empty() || image.width <= 0 || image.height <= 0)
+    throw core::UsageError("cannot make a thumbnail of an empty image");
+  const double scale = static_cast<double>(size) / std::max(image.width, image.height);
+  const int width = std::max(1, static_cast<int>(std::lround(image.width * scale)));
+  const int height = std::max(1, static_cast<int>(std::lround(image.height * scale)));
+  const cv::Mat source(image.height, image.width, image.channels == 1 ? CV_8UC1 : CV_8UC3,
+                       const_cast<std::uint8_t*>(image.pixels.data()));
+  cv::Mat scaled;
+  cv::resize(source, scaled, cv::Size(width, height), 0.0, 0.0, cv::INTER_AREA);
+  if (image.channels == 1) cv::cvtColor(scaled, scaled, cv::COLOR_GRAY2RGB);
+  Image8 result(width, height, 3);
+  for (int y = 0; y < height; ++y)
+    std::copy_n(scaled.ptr<std::uint8_t>(y), 3 * width, result.row(y));
+  return result;
 }
 
 }  // namespace viscera::textures

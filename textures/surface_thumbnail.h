@@ -16,4 +16,8 @@ namespace viscera::textures {
 /// non-finite surface.
 Image8 render_surface_thumbnail(const core::SurfaceMesh& surface, int size = 128);
 
+/// `image` scaled (area averaging) to fit `size` × `size` pixels with its aspect ratio kept, in
+/// RGB. Throws core::UsageError for a size outside [16, 1024] or an empty image.
+Image8 image_thumbnail(const Image8& image, int size = 128);
+
 }  // namespace viscera::textures

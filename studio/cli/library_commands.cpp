@@ -127,6 +127,22 @@ void add(const LibraryOptions& o) {
         core::model_from_json(nlohmann::json::parse(entry.payload), path.string());
     entry.thumbnail = textures::encode_png(
         textures::render_surface_thumbnail(core::tessellate_model(model), 128));
+  } else if (!o.no_thumbnail && s.type == core::AssetType::Texture) {
+    entry.thumbnail = textures::encode_png(
+        textures::image_thumbnail(textures::decode_image(entry.payload, path.string()), 128));
+  } else if (!o.no_thumbnail && s.type == core::AssetType::Template && ext == "vscz") {
+    // A scenario package: all its objects' surfaces in one picture.
+    const core::Scenario scenario = core::read_package(path);
+    core::SurfaceMesh all;
+    for (const auto& object : scenario.objects) {
+      const auto offset = static_cast<int>(all.vertices.size());
+      all.vertices.insert(all.vertices.end(), object.surface.vertices.begin(),
+                          object.surface.vertices.end());
+      for (const auto& t : object.surface.triangles)
+        all.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+    }
+    if (!all.triangles.empty())
+      entry.thumbnail = textures::encode_png(textures::render_surface_thumbnail(all, 128));
   }
   core::AssetLibrary library(core::resolve_library_path(o.library));
   const core::AssetSummary added = library.add(entry);
@@ -244,8 +260,9 @@ void add_library_commands(CLI::App& app) {
   add_command->add_option("--tags", o->tags, "Tags, comma separated")->delimiter(',');
   add_command->add_option("--provenance", o->provenance,
                           "Where it came from (default: file and checksum)");
-  add_command->add_option("--thumbnail", o->thumbnail,
-                          "PNG thumbnail (default for a model JSON: a rendering of it)");
+  add_command->add_option(
+      "--thumbnail", o->thumbnail,
+      "PNG thumbnail (default: a rendering of a model or package, a scaled texture)");
   add_command->add_flag("--no-thumbnail", o->no_thumbnail, "Store no thumbnail");
   add_command->add_flag("--json", o->json, "Print JSON");
   add_command->callback([o] { add(*o); });

@@ -51,5 +51,26 @@ TEST(SurfaceThumbnail, open_sheet_is_drawn_from_either_side_and_bad_input_is_ref
   EXPECT_THROW(render_surface_thumbnail(core::SurfaceMesh{}, 64), core::UsageError);
 }
 
+TEST(SurfaceThumbnail, image_thumbnail_keeps_the_aspect_and_the_mean_colour) {
+  Image8 image(300, 150, 3);
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      std::uint8_t* p = image.row(y) + 3 * x;
+      p[0] = x < 150 ? 200 : 0;  // left half red, right half blue
+      p[2] = x < 150 ? 0 : 200;
+    }
+  const Image8 small = image_thumbnail(image, 100);
+  ASSERT_EQ(small.width, 100);
+  ASSERT_EQ(small.height, 50);
+  EXPECT_EQ(small.row(25)[0], 200);           // left stays red
+  EXPECT_EQ(small.row(25)[3 * 99 + 2], 200);  // right stays blue
+  Image8 grey(40, 80, 1);
+  const Image8 tall = image_thumbnail(grey, 32);
+  EXPECT_EQ(tall.width, 16);
+  EXPECT_EQ(tall.height, 32);
+  EXPECT_EQ(tall.channels, 3);
+  EXPECT_THROW(image_thumbnail(Image8{}, 32), core::UsageError);
+}
+
 }  // namespace
 }  // namespace viscera::textures

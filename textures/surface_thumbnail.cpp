@@ -108,4 +108,59 @@ Image8 image_thumbnail(const Image8& image, int size) {
   return result;
 }
 
+Image8 render_stress_strain_thumbnail(const core::StressStrainCurve& curve, int size) {
+  if (size < 16 || size > 1024)
+    throw core::UsageError("a thumbnail is 16 to 1024 pixels wide, not " + std::to_string(size));
+  if (curve.cubic.size() != 4) throw core::UsageError("the stress-strain curve has no cubic fit");
+  const auto sigma = [&](double e) {
+    return curve.cubic[1] * e + curve.cubic[2] * e * std::abs(e) + curve.cubic[3] * e * e * e;
+  };
+  double max_strain = 0.0, max_stress = 0.0;
+  for (const double e : curve.strain)
+    max_strain = std::max(max_strain, std::abs(e));
+  if (!(max_strain > 0.0)) max_strain = 0.3;
+  for (const double s : curve.stress)
+    max_stress = std::max(max_stress, s);
+  const int margin = size / 10, span = size - 2 * margin;
+  for (int i = 0; i <= span; ++i)
+    max_stress = std::max(max_stress, sigma(max_strain * i / span));
+  if (!(max_stress > 0.0) || !std::isfinite(max_stress)) max_stress = 1.0;
+  const auto column = [&](double e) { return margin + e / max_strain * span; };
+  const auto row = [&](double s) { return size - 1 - margin - s / max_stress * span; };
+
+  Image8 image(size, size, 3);
+  for (std::size_t i = 0; i < image.pixels.size(); ++i)
+    image.pixels[i] = kBackground[i % 3];
+  const auto put = [&](int x, int y, std::uint8_t r, std::uint8_t g, std::uint8_t b) {
+    if (x < 0 || y < 0 || x >= size || y >= size) return;
+    std::uint8_t* p = image.row(y) + 3 * x;
+    p[0] = r;
+    p[1] = g;
+    p[2] = b;
+  };
+  for (int i = 0; i <= span; ++i) {  // axes through the origin
+    put(margin + i, size - 1 - margin, 140, 140, 150);
+    put(margin, size - 1 - margin - i, 140, 140, 150);
+  }
+  // The cubic, one pixel column at a time, joined vertically so steep parts stay connected.
+  int previous = static_cast<int>(std::lround(row(0.0)));
+  for (int i = 0; i <= span; ++i) {
+    const int y = static_cast<int>(std::lround(
+        std::clamp(row(sigma(max_strain * i / span)), -1.0, static_cast<double>(size))));
+    for (int v = std::min(previous, y); v <= std::max(previous, y); ++v)
+      put(margin + i, v, static_cast<std::uint8_t>(kTissue[0]),
+          static_cast<std::uint8_t>(kTissue[1]), static_cast<std::uint8_t>(kTissue[2]));
+    previous = y;
+  }
+  for (std::size_t k = 0; k < curve.strain.size() && k < curve.stress.size(); ++k) {
+    if (curve.strain[k] < 0.0 || curve.stress[k] < 0.0) continue;  // the plot shows tension
+    const int x = static_cast<int>(std::lround(column(curve.strain[k])));
+    const int y = static_cast<int>(std::lround(row(curve.stress[k])));
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx)
+        put(x + dx, y + dy, 235, 235, 235);
+  }
+  return image;
+}
+
 }  // namespace viscera::textures

@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "core/library/asset_entry_file.h"
 #include "core/library/asset_library.h"
+#include "core/materials/material_file.h"
 #include "core/modelling/model_scene.h"
 #include "core/package/scenario_package.h"
 #include "core/sha256.h"
@@ -127,6 +128,13 @@ void add(const LibraryOptions& o) {
         core::model_from_json(nlohmann::json::parse(entry.payload), path.string());
     entry.thumbnail = textures::encode_png(
         textures::render_surface_thumbnail(core::tessellate_model(model), 128));
+  } else if (!o.no_thumbnail && s.type == core::AssetType::Material && ext == "json") {
+    // A material with a measured or catalogued curve: a plot of it.
+    const core::Material material =
+        core::material_from_file_json(nlohmann::json::parse(entry.payload), path.string());
+    if (material.stress_strain && material.stress_strain->cubic.size() == 4)
+      entry.thumbnail = textures::encode_png(
+          textures::render_stress_strain_thumbnail(*material.stress_strain, 128));
   } else if (!o.no_thumbnail && s.type == core::AssetType::Texture) {
     entry.thumbnail = textures::encode_png(
         textures::image_thumbnail(textures::decode_image(entry.payload, path.string()), 128));
@@ -260,9 +268,9 @@ void add_library_commands(CLI::App& app) {
   add_command->add_option("--tags", o->tags, "Tags, comma separated")->delimiter(',');
   add_command->add_option("--provenance", o->provenance,
                           "Where it came from (default: file and checksum)");
-  add_command->add_option(
-      "--thumbnail", o->thumbnail,
-      "PNG thumbnail (default: a rendering of a model or package, a scaled texture)");
+  add_command->add_option("--thumbnail", o->thumbnail,
+                          "PNG thumbnail (default: a rendering of a model or package, a material's "
+                          "curve, a scaled texture)");
   add_command->add_flag("--no-thumbnail", o->no_thumbnail, "Store no thumbnail");
   add_command->add_flag("--json", o->json, "Print JSON");
   add_command->callback([o] { add(*o); });

@@ -71,7 +71,8 @@ TEST(ModelCommand, ball_flat_and_branching_pipe_become_a_package_the_simulator_r
   EXPECT_NEAR(fit["fit"]["cubic"][3].get<double>(), 300.0e3, 20.0);
   EXPECT_LT(fit["fit"]["rms_error"].get<double>(), 1.0);  // Pa, on stresses up to 17 kPa
   EXPECT_GT(fit["distance_stiffness"].get<double>(), 0.0);
-  viscera_ok("library add tissue.json --tags measured" + lib, dir);
+  // In the library it gets a plot of its curve as thumbnail.
+  EXPECT_TRUE(viscera_json("library add tissue.json --tags measured" + lib, dir)["thumbnail"]);
 
   // The three object types.
   viscera_ok(

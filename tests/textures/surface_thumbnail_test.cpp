@@ -72,5 +72,22 @@ TEST(SurfaceThumbnail, image_thumbnail_keeps_the_aspect_and_the_mean_colour) {
   EXPECT_THROW(image_thumbnail(Image8{}, 32), core::UsageError);
 }
 
+TEST(SurfaceThumbnail, stress_strain_plot_draws_the_cubic_through_its_samples) {
+  core::StressStrainCurve linear;
+  linear.cubic = {0.0, 1000.0, 0.0, 0.0};  // a straight line: the plot's diagonal
+  const Image8 line = render_stress_strain_thumbnail(linear, 100);
+  // Margins of 10 px: (ε, σ) = (0.15, 150 Pa) is halfway, at column 50 and row 99 − 10 − 40.
+  EXPECT_EQ(line.row(49)[3 * 50], 222);
+  EXPECT_EQ(line.row(20)[3 * 50], 40);  // background above the line
+  core::StressStrainCurve measured;
+  measured.strain = {0.0, 0.1, 0.2};
+  measured.stress = {0.0, 100.0, 800.0};
+  measured.cubic = {0.0, 0.0, 0.0, 1.0e5};  // σ = 1e5 ε³: 100 Pa at 0.1, 800 Pa at 0.2
+  const Image8 plot = render_stress_strain_thumbnail(measured, 100);
+  EXPECT_EQ(plot.row(10)[3 * 90], 235);  // the last sample's dot at the top right corner
+  EXPECT_EQ(render_stress_strain_thumbnail(measured, 100), plot);
+  EXPECT_THROW(render_stress_strain_thumbnail(core::StressStrainCurve{}, 100), core::UsageError);
+}
+
 }  // namespace
 }  // namespace viscera::textures

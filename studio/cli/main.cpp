@@ -12,9 +12,11 @@
 #include "studio/cli/mesh_commands.h"
 #include "studio/cli/model_commands.h"
 #include "studio/cli/package_commands.h"
+#include "studio/cli/segment_commands.h"
 #include "studio/cli/template_commands.h"
 #include "studio/cli/texture_commands.h"
 #include "studio/cli/vessel_commands.h"
+#include "studio/cli/volume_commands.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"Viscera: virtual patients for surgical simulators", "viscera"};
@@ -28,6 +30,8 @@ int main(int argc, char** argv) {
   viscera::cli::add_vessel_commands(app);
   viscera::cli::add_mesh_commands(app);
   viscera::cli::add_export_commands(app);
+  viscera::cli::add_volume_commands(app);
+  viscera::cli::add_segment_commands(app);
   viscera::cli::add_library_commands(app);
   viscera::cli::add_material_commands(app);
   viscera::cli::add_model_commands(app);

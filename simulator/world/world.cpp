@@ -33,9 +33,13 @@ World::World(const core::Scenario& scenario)
   const double contact_stiffness = bodies_.size() > 1 ? scenario.session.contact_stiffness : 0.0;
   if (contact_stiffness > 0.0)
     contact_ = std::make_unique<ContactResponse>(bodies_, contact_stiffness);
+  connections_ = ConnectionSprings(scenario, bodies_);
+  // A connected node may meet contacts too: its stable step allows for both. A spring to another
+  // body's node adds k to the diagonal of M⁻¹K's row and k off it: 2k in the Gershgorin bound.
+  const double extra_stiffness = contact_stiffness + 2.0 * connections_.max_node_stiffness();
   double stable = time_step_;
   for (const auto& body : bodies_)
-    stable = std::min(stable, body.stable_time_step(contact_stiffness));
+    stable = std::min(stable, body.stable_time_step(extra_stiffness));
   substeps_ = std::max(1, static_cast<int>(std::ceil(time_step_ / stable - 1e-12)));
 }
 
@@ -65,6 +69,7 @@ void World::step() {
     }
     for (auto& body : bodies_)
       body.compute_forces(gravity_, h);
+    connections_.apply(bodies_);
     if (contact_) {
       contacts_ = contact_->apply(bodies_);
       max_penetration_ = std::max(max_penetration_, contacts_.max_penetration);
@@ -135,6 +140,7 @@ BodyEnergies World::energies() const {
     sum.elastic += e.elastic;
     sum.gravitational += e.gravitational;
   }
+  sum.elastic += connections_.energy(bodies_);
   return sum;
 }
 

@@ -10,6 +10,7 @@
 #include "core/scenario/scenario.h"
 #include "simulator/collision/contact_response.h"
 #include "simulator/haptics/haptic_proxy.h"
+#include "simulator/physics/connection_springs.h"
 #include "simulator/physics/deformable_body.h"
 
 namespace viscera::sim {
@@ -22,7 +23,9 @@ class World {
   /// default Material when it names none). The physics step is scenario.session.time_step,
   /// split into equal sub-steps when a body needs a smaller step to stay stable. With two or
   /// more bodies, contacts between them get penalty forces of scenario.session.contact_stiffness.
-  /// Throws core::InputError for a missing material or an invalid body.
+  /// The scenario's connections hold their objects together with springs (ConnectionSprings).
+  /// Throws core::InputError for a missing material, an invalid body or a connection that
+  /// names an object without a body or a node it does not have.
   explicit World(const core::Scenario& scenario);
 
   /// Advances by one physics step (time_step() seconds).
@@ -65,7 +68,10 @@ class World {
   /// Largest penetration in m seen in any sub-step so far.
   double max_penetration() const { return max_penetration_; }
 
-  /// Sum of the bodies' energies at the current state.
+  /// Springs of the scenario's connections between bodies.
+  const ConnectionSprings& connections() const { return connections_; }
+
+  /// Sum of the bodies' energies at the current state; connection springs count as elastic.
   BodyEnergies energies() const;
 
   /// Sleeping (the deactivation of rigid-body engines): once no node has moved more than
@@ -87,6 +93,7 @@ class World {
   int substeps_ = 1;
   long long steps_ = 0;
   std::unique_ptr<ContactResponse> contact_;
+  ConnectionSprings connections_;
   struct Instrument {
     int body;
     ProxySurface surface;

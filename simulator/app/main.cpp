@@ -36,6 +36,7 @@ struct RunOptions {
   double snapshot_time = -1.0;  ///< s; negative: after the run
   int width = 1280, height = 720;
   bool plain_optics = false;  ///< no distortion, depth of field or field stop
+  double optics = -1.0;       ///< ° of the angled optics; negative: the script's or scenario's
   bool html = false;          ///< also write report.html with its plots (needs X)
   std::string reference;      ///< an expert's report.json to compare against
 };
@@ -155,7 +156,15 @@ int run(const RunOptions& options) {
     throw viscera::core::UsageError(
         "--snapshot renders the endoscopic view, which a --headless session never opens");
   }
-  const viscera::core::Scenario scenario = viscera::core::read_package(options.package);
+  viscera::core::Scenario scenario = viscera::core::read_package(options.package);
+  // The optics: --optics, else the script's "optics_angle", else the scenario's instrument.
+  if (options.optics >= 0.0) {
+    scenario.session.instrument.optics_angle = options.optics;
+  } else if (!options.script.empty()) {
+    const nlohmann::json stated = read_json_file(options.script);
+    if (stated.is_object() && stated.contains("optics_angle") && stated["optics_angle"].is_number())
+      scenario.session.instrument.optics_angle = stated["optics_angle"].get<double>();
+  }
   viscera::sim::HeadlessRunOptions run;
   run.package = fs::absolute(options.package).string();
   run.duration = options.duration > 0.0 ? options.duration : scenario.session.duration_limit;
@@ -215,7 +224,8 @@ int replay(const std::string& trace_path, const std::string& report_dir, bool as
     throw viscera::core::ValidationError("the package changed since the session was recorded",
                                          {trace.package, "", ""});
   }
-  const viscera::core::Scenario scenario = viscera::core::read_package(trace.package);
+  viscera::core::Scenario scenario = viscera::core::read_package(trace.package);
+  scenario.session.instrument.optics_angle = trace.optics_angle;
   const std::unique_ptr<viscera::sim::InstrumentInput> input = trace.input();
   viscera::sim::HeadlessRunOptions run;
   run.package = trace.package;
@@ -296,6 +306,11 @@ int main(int argc, char** argv) {
       ->add_option("--reference", options.reference,
                    "An expert's report.json the HTML report compares against")
       ->needs(run_command->get_option("--html"));
+  run_command
+      ->add_option("--optics", options.optics,
+                   "Angle of the optics in degrees (0, 12, 30; default: the script's, else the "
+                   "scenario's)")
+      ->check(CLI::Range(0.0, 90.0));
   run_command->add_flag("--plain-optics", options.plain_optics,
                         "No barrel distortion, depth of field or round field stop");
   run_command->callback([&] { exit_code = run(options); });

@@ -60,15 +60,11 @@ const char* kBody = R"(
   vec4 sum = texture(colour, uv);
   float weight = 1.0;
   if (radius > 0.5) {
-    // Two rings of eight taps over the circle of confusion.
-    for (int ring = 1; ring <= 2; ++ring) {
-      float rr = radius * float(ring) * 0.5;
-      for (int i = 0; i < 8; ++i) {
-        float a = (float(i) + 0.5 * float(ring)) * 0.785398;
-        vec2 tap = uv + rr * vec2(cos(a), sin(a)) * pixel;
-        sum += texture(colour, tap);
-        weight += 1.0;
-      }
+    // One ring of eight taps at three quarters of the circle of confusion.
+    for (int i = 0; i < 8; ++i) {
+      float a = float(i) * 0.785398;
+      sum += texture(colour, uv + 0.75 * radius * vec2(cos(a), sin(a)) * pixel);
+      weight += 1.0;
     }
   }
   vec3 rgb = sum.rgb / weight;

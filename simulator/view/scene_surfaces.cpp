@@ -192,7 +192,7 @@ SceneSurfaces::SceneSurfaces(const core::Scenario& scenario,
         texture->SetInputData(surface.texture);
         texture->InterpolateOn();
         texture->RepeatOn();
-        texture->MipmapOn();
+        texture->MipmapOff();
         surface.actor->SetTexture(texture);
         property->SetColor(1.0, 1.0, 1.0);
       } else {

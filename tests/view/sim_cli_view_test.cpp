@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <vtkImageData.h>
 
+#include <chrono>
 #include <fstream>
 #include <sstream>
 
@@ -126,6 +127,25 @@ TEST(SimCliView, replay_renders_an_ogg_theora_video_and_stays_identical) {
   EXPECT_EQ(frames, 11);
   EXPECT_EQ(packets, frames + 3) << pages << " pages";
   EXPECT_FALSE(std::filesystem::exists(dir / "replay.ogv.partial"));
+}
+
+TEST(SimCliView, a_window_session_runs_in_real_time_and_its_trace_replays) {
+  const auto& patient = testing::hysteroscopy_patient();
+  const auto dir = testing::scratch_dir();
+  const auto trace = dir / "window.json";
+  const auto start = std::chrono::steady_clock::now();
+  auto result = run_program("viscera-sim", "run " + shell_quote(patient.package.string()) +
+                                               " --duration 0.5 --width 320 --height 240 --record " +
+                                               shell_quote(trace.string()),
+                            dir);
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_NE(result.out.find("ended: duration"), std::string::npos) << result.out;
+  EXPECT_GE(wall, 0.5) << "the window paces the session at real time";
+  // The manual control's states (the resting starting pose) are in the trace.
+  result = run_program("viscera-sim", "replay " + shell_quote(trace.string()), dir);
+  EXPECT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_NE(result.out.find("replay identical"), std::string::npos) << result.out;
 }
 
 }  // namespace

@@ -290,8 +290,9 @@ int main(int argc, char** argv) {
   run_command->add_option("--record", options.record, "Write the session's trace here for replay");
   run_command->add_option("--report", options.report_dir, "Folder for report.json");
   run_command->add_flag("--json", options.json, "Print the report as JSON");
-  run_command->add_option("--snapshot", options.snapshot,
-                          "Render the endoscopic view offscreen into this PNG (needs X, e.g. Xvfb)");
+  run_command->add_option(
+      "--snapshot", options.snapshot,
+      "Render the endoscopic view offscreen into this PNG (needs X, e.g. Xvfb)");
   run_command->add_option("--snapshot-time", options.snapshot_time,
                           "Simulated second of the snapshot (default: after the run)");
   run_command->add_option("--width", options.width, "View width in pixels")
@@ -339,8 +340,8 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(64, 2160));
   replay_command->add_option("--report", replay_report, "Folder for report.json");
   replay_command->add_flag("--json", replay_json, "Print the report as JSON");
-  replay_command->callback([&] { exit_code = replay(trace, replay_report, replay_json, video, fps, video_options);
-  });
+  replay_command->callback(
+      [&] { exit_code = replay(trace, replay_report, replay_json, video, fps, video_options); });
 
   std::string report_json;
   std::string report_reference;
@@ -350,7 +351,8 @@ int main(int argc, char** argv) {
   report_command->add_option("report", report_json, "report.json of a session")->required();
   report_command->add_option("--reference", report_reference,
                              "An expert's report.json to compare against");
-  report_command->add_option("--out", report_out, "Folder of the page (default: beside the report)");
+  report_command->add_option("--out", report_out,
+                             "Folder of the page (default: beside the report)");
   report_command->callback([&] {
     const nlohmann::json json = read_json_file(report_json);
     if (!json.is_object() || json.value("format", std::string()) != "viscera-session-report")

@@ -18,11 +18,20 @@ std::string escape(const std::string& text) {
   std::string out;
   for (const char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -79,7 +88,8 @@ std::string compare_metric(const MetricSpec& metric, double trainee, double refe
 std::vector<std::filesystem::path> write_html_report(const json& report, const json* reference,
                                                      const std::filesystem::path& folder) {
   if (!report.is_object() || report.value("format", std::string()) != "viscera-session-report")
-    throw core::InputError("is not a viscera session report", {(folder / "report.json").string(), "", ""});
+    throw core::InputError("is not a viscera session report",
+                           {(folder / "report.json").string(), "", ""});
   std::vector<std::filesystem::path> written;
   const std::filesystem::path page = folder / "report.html";
   written.push_back(page);
@@ -92,13 +102,15 @@ std::vector<std::filesystem::path> write_html_report(const json& report, const j
 
   std::ostringstream html;
   html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
-       << "<title>Viscera session report</title>\n" << kStyle << "</head><body>\n"
+       << "<title>Viscera session report</title>\n"
+       << kStyle << "</head><body>\n"
        << "<h1>Session report</h1>\n<table>\n"
        << "<tr><td>Package</td><td>" << escape(text_of(report, "package")) << "</td></tr>\n"
        << "<tr><td>Procedure</td><td>" << escape(text_of(report, "procedure")) << "</td></tr>\n"
-       << "<tr><td>Instrument</td><td>" << escape(text_of(report, "instrument_kind")) << "</td></tr>\n"
-       << "<tr><td>Simulated time</td><td>" << number(report.value("simulated_time", json()), 1.0, 4)
-       << " s</td></tr>\n"
+       << "<tr><td>Instrument</td><td>" << escape(text_of(report, "instrument_kind"))
+       << "</td></tr>\n"
+       << "<tr><td>Simulated time</td><td>"
+       << number(report.value("simulated_time", json()), 1.0, 4) << " s</td></tr>\n"
        << "<tr><td>Ended by</td><td>" << escape(text_of(report, "end_reason")) << "</td></tr>\n"
        << "<tr><td>Score</td><td>" << number(report.value("score", json())) << " / 100</td></tr>\n";
   if (reference != nullptr)
@@ -110,11 +122,12 @@ std::vector<std::filesystem::path> write_html_report(const json& report, const j
   if (reference != nullptr) html << "<th>Reference</th><th>Trainee vs reference</th>";
   html << "</tr>\n";
   const json metrics = report.value("metrics", json::object());
-  const json expert = reference != nullptr ? reference->value("metrics", json::object()) : json::object();
+  const json expert =
+      reference != nullptr ? reference->value("metrics", json::object()) : json::object();
   for (const MetricSpec& m : report_metrics()) {
     const json value = metrics.value(m.key, json());
-    html << "<tr><td>" << escape(m.label) << (m.unit.empty() ? "" : " (" + m.unit + ")") << "</td><td>"
-         << number(value, m.scale) << "</td>";
+    html << "<tr><td>" << escape(m.label) << (m.unit.empty() ? "" : " (" + m.unit + ")")
+         << "</td><td>" << number(value, m.scale) << "</td>";
     if (reference != nullptr) {
       const json other = expert.value(m.key, json());
       html << "<td>" << number(other, m.scale) << "</td>";
@@ -131,7 +144,8 @@ std::vector<std::filesystem::path> write_html_report(const json& report, const j
 
   html << "<h2>Plots</h2>\n<div class=\"plots\">\n"
        << "<figure><img src=\"path_xy.png\" alt=\"tool path from above\"><figcaption>Tool path "
-          "from above, coloured by the distance to the wall (red: at the wall).</figcaption></figure>\n"
+          "from above, coloured by the distance to the wall (red: at the "
+          "wall).</figcaption></figure>\n"
        << "<figure><img src=\"path_xz.png\" alt=\"tool path from the side\"><figcaption>Tool path "
           "from the side.</figcaption></figure>\n"
        << "<figure><img src=\"force.png\" alt=\"force over time\"><figcaption>Force on the "
@@ -144,23 +158,27 @@ std::vector<std::filesystem::path> write_html_report(const json& report, const j
           "<th>Score</th></tr>\n";
   for (const auto& step : report.value("procedure_steps", json::array())) {
     const json m = step.value("metrics", json::object());
-    html << "<tr><td>" << escape(text_of(step, "name").empty() ? text_of(step, "id") : text_of(step, "name"))
+    html << "<tr><td>"
+         << escape(text_of(step, "name").empty() ? text_of(step, "id") : text_of(step, "name"))
          << "</td><td>" << number(step.value("started_at", json())) << "</td><td>"
          << number(step.value("ended_at", json())) << "</td><td>"
          << number(m.value("path_length", json()), 1000.0) << "</td><td>"
-         << number(m.value("contacts", json())) << "</td><td>" << number(m.value("max_force", json()))
-         << "</td><td>" << number(m.value("surface_seen", json()), 100.0) << "</td><td>"
+         << number(m.value("contacts", json())) << "</td><td>"
+         << number(m.value("max_force", json())) << "</td><td>"
+         << number(m.value("surface_seen", json()), 100.0) << "</td><td>"
          << number(step.value("score", json())) << "</td></tr>\n";
   }
   html << "</table>\n<h2>Tasks</h2>\n<table>\n<tr><th>Task</th><th>Status</th><th>Completed at (s)"
           "</th><th>Note</th></tr>\n";
   for (const auto& task : report.value("tasks", json::array())) {
-    html << "<tr><td>" << escape(text_of(task, "name").empty() ? text_of(task, "id") : text_of(task, "name"))
+    html << "<tr><td>"
+         << escape(text_of(task, "name").empty() ? text_of(task, "id") : text_of(task, "name"))
          << "</td><td>" << escape(text_of(task, "status")) << "</td><td>"
-         << number(task.value("completed_at", json())) << "</td><td>" << escape(text_of(task, "note"))
-         << "</td></tr>\n";
+         << number(task.value("completed_at", json())) << "</td><td>"
+         << escape(text_of(task, "note")) << "</td></tr>\n";
   }
-  html << "</table>\n<h2>Events</h2>\n<table>\n<tr><th>Time (s)</th><th>Event</th><th>Message</th></tr>\n";
+  html << "</table>\n<h2>Events</h2>\n<table>\n<tr><th>Time "
+          "(s)</th><th>Event</th><th>Message</th></tr>\n";
   for (const auto& event : report.value("events", json::array())) {
     html << "<tr><td>" << number(event.value("time", json()), 1.0, 4) << "</td><td>"
          << escape(text_of(event, "kind")) << "</td><td>" << escape(text_of(event, "message"))

@@ -14,10 +14,10 @@ namespace viscera::report {
 
 /// A metric of the report and which way is better.
 struct MetricSpec {
-  std::string key;    ///< member of "metrics" in report.json
-  std::string label;  ///< for the reader
-  std::string unit;   ///< shown after the value ("" for a plain number)
-  double scale = 1.0;         ///< value × scale is shown (e.g. 100 for fractions in %)
+  std::string key;     ///< member of "metrics" in report.json
+  std::string label;   ///< for the reader
+  std::string unit;    ///< shown after the value ("" for a plain number)
+  double scale = 1.0;  ///< value × scale is shown (e.g. 100 for fractions in %)
   bool higher_is_better = false;
 };
 

@@ -37,13 +37,15 @@ const json& member(const json& object, const std::string& key, const std::string
 }
 
 /// A table of named double columns of equal length.
-vtkSmartPointer<vtkTable> table(const std::vector<std::pair<std::string, std::vector<double>>>& columns) {
+vtkSmartPointer<vtkTable> table(
+    const std::vector<std::pair<std::string, std::vector<double>>>& columns) {
   auto out = vtkSmartPointer<vtkTable>::New();
   for (const auto& [name, values] : columns) {
     vtkNew<vtkDoubleArray> array;
     array->SetName(name.c_str());
     array->SetNumberOfValues(static_cast<vtkIdType>(values.size()));
-    for (std::size_t i = 0; i < values.size(); ++i) array->SetValue(static_cast<vtkIdType>(i), values[i]);
+    for (std::size_t i = 0; i < values.size(); ++i)
+      array->SetValue(static_cast<vtkIdType>(i), values[i]);
     out->AddColumn(array);
   }
   return out;
@@ -88,7 +90,9 @@ constexpr unsigned char kTrainee[3] = {200, 40, 40};
 constexpr unsigned char kReference[3] = {150, 150, 150};
 constexpr unsigned char kWarning[3] = {240, 160, 0};
 
-int axis_of(char c) { return c == 'x' ? 0 : c == 'y' ? 1 : 2; }
+int axis_of(char c) {
+  return c == 'x' ? 0 : c == 'y' ? 1 : 2;
+}
 
 }  // namespace
 
@@ -156,8 +160,9 @@ void plot_force(const json& report, const json* reference, const std::filesystem
   series(report, "trainee", kTrainee, 2.0f);
   const double warning = report.value("force_warning", 0.0);
   if (warning > 0.0 && end > 0.0) {
-    vtkPlot* level = chart.line(table({{"time (s)", {0.0, end}}, {"warning level", {warning, warning}}}),
-                                0, 1, kWarning, 1.5f);
+    vtkPlot* level =
+        chart.line(table({{"time (s)", {0.0, end}}, {"warning level", {warning, warning}}}), 0, 1,
+                   kWarning, 1.5f);
     level->GetPen()->SetLineType(vtkPen::DASH_LINE);
   }
   chart.render(png);
@@ -170,14 +175,16 @@ void plot_step_scores(const json& report, const json* reference, const std::file
   std::vector<double> scores;
   for (const auto& step : member(report, "procedure_steps", "/procedure_steps")) {
     labels.push_back(step.value("name", std::string()).empty() ? step.value("id", std::string("?"))
-                                                                : step["name"].get<std::string>());
+                                                               : step["name"].get<std::string>());
     scores.push_back(step.value("score", 0.0));
   }
   labels.push_back("whole session");
   scores.push_back(member(report, "score", "/score").get<double>());
   std::vector<double> x(scores.size());
-  for (std::size_t i = 0; i < x.size(); ++i) x[i] = static_cast<double>(i + 1);
-  std::vector<std::pair<std::string, std::vector<double>>> columns = {{"step", x}, {"trainee", scores}};
+  for (std::size_t i = 0; i < x.size(); ++i)
+    x[i] = static_cast<double>(i + 1);
+  std::vector<std::pair<std::string, std::vector<double>>> columns = {{"step", x},
+                                                                      {"trainee", scores}};
   if (reference != nullptr) {
     std::vector<double> expert;
     for (const auto& step : member(*reference, "procedure_steps", "/procedure_steps"))

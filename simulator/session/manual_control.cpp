@@ -21,14 +21,14 @@ ManualControl::ManualControl(const InstrumentState& start, ManualRates rates)
 
 std::optional<ManualCommand> ManualControl::command_for_key(const std::string& key) {
   static const std::map<std::string, ManualCommand> keys = {
-      {"w", ManualCommand::Advance},        {"Up", ManualCommand::Advance},
-      {"s", ManualCommand::Withdraw},       {"Down", ManualCommand::Withdraw},
-      {"a", ManualCommand::SwingLeft},      {"Left", ManualCommand::SwingLeft},
-      {"d", ManualCommand::SwingRight},     {"Right", ManualCommand::SwingRight},
-      {"r", ManualCommand::SwingUp},        {"f", ManualCommand::SwingDown},
-      {"q", ManualCommand::RollLeft},       {"e", ManualCommand::RollRight},
-      {"i", ManualCommand::ToggleInflow},   {"o", ManualCommand::ToggleOutflow},
-      {"Escape", ManualCommand::Abort},     {"x", ManualCommand::Abort}};
+      {"w", ManualCommand::Advance},      {"Up", ManualCommand::Advance},
+      {"s", ManualCommand::Withdraw},     {"Down", ManualCommand::Withdraw},
+      {"a", ManualCommand::SwingLeft},    {"Left", ManualCommand::SwingLeft},
+      {"d", ManualCommand::SwingRight},   {"Right", ManualCommand::SwingRight},
+      {"r", ManualCommand::SwingUp},      {"f", ManualCommand::SwingDown},
+      {"q", ManualCommand::RollLeft},     {"e", ManualCommand::RollRight},
+      {"i", ManualCommand::ToggleInflow}, {"o", ManualCommand::ToggleOutflow},
+      {"Escape", ManualCommand::Abort},   {"x", ManualCommand::Abort}};
   const auto it = keys.find(key);
   if (it == keys.end()) return std::nullopt;
   return it->second;
@@ -56,9 +56,13 @@ void ManualControl::release(ManualCommand command) {
   if (const int index = held_index(command); index >= 0) held_[index] = false;
 }
 
-void ManualControl::drag(double dx, double dy) { swing(-dx * rates_.mouse, dy * rates_.mouse); }
+void ManualControl::drag(double dx, double dy) {
+  swing(-dx * rates_.mouse, dy * rates_.mouse);
+}
 
-void ManualControl::wheel(int notches) { state_.tip += notches * rates_.wheel * state_.axis; }
+void ManualControl::wheel(int notches) {
+  state_.tip += notches * rates_.wheel * state_.axis;
+}
 
 void ManualControl::swing(double yaw, double pitch) {
   const core::Vec3 side = state_.axis.cross(state_.up).normalized();

@@ -15,13 +15,13 @@ namespace viscera::sim {
 
 /// What a key or button asks for.
 enum class ManualCommand {
-  Advance,        ///< tip forward along the shaft
-  Withdraw,       ///< tip backward along the shaft
-  SwingLeft,      ///< shaft yaw about the image's up
+  Advance,    ///< tip forward along the shaft
+  Withdraw,   ///< tip backward along the shaft
+  SwingLeft,  ///< shaft yaw about the image's up
   SwingRight,
-  SwingUp,        ///< shaft pitch towards the image's up
+  SwingUp,  ///< shaft pitch towards the image's up
   SwingDown,
-  RollLeft,       ///< optics rolled about the shaft (the 30° view sweeps round)
+  RollLeft,  ///< optics rolled about the shaft (the 30° view sweeps round)
   RollRight,
   ToggleInflow,   ///< inflow valve open ↔ closed
   ToggleOutflow,  ///< outflow valve open ↔ closed

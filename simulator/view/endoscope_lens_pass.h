@@ -27,8 +27,8 @@ class EndoscopeLensPass : public vtkDepthImageProcessingPass {
   static EndoscopeLensPass* New();
   vtkTypeMacro(EndoscopeLensPass, vtkDepthImageProcessingPass)
 
-  /// Radial distortion coefficient k (dimensionless, ≥ 0; 0 is a pinhole camera).
-  double distortion = 0.2;
+      /// Radial distortion coefficient k (dimensionless, ≥ 0; 0 is a pinhole camera).
+      double distortion = 0.2;
   /// Distance of sharpest focus in m (InstrumentSpec::focus_distance).
   double focus_distance = 0.015;
   /// Blur radius in pixels per dioptre (1/m) of defocus |1/z − 1/f|; 0 disables depth of field.

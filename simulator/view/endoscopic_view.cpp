@@ -22,8 +22,8 @@ constexpr double kNearPlane = 0.0005;  // m: the optics see from half a millimet
 constexpr double kFarPlane = 0.3;      // m
 }  // namespace
 
-EndoscopicView::EndoscopicView(const core::Scenario& scenario,
-                               const std::filesystem::path& package, const ViewOptions& options)
+EndoscopicView::EndoscopicView(const core::Scenario& scenario, const std::filesystem::path& package,
+                               const ViewOptions& options)
     : scenario_(scenario), options_(options) {
   surfaces_ = std::make_unique<SceneSurfaces>(scenario, package);
   overlay_ = std::make_unique<SessionOverlay>(options.bindings);
@@ -122,7 +122,9 @@ void EndoscopicView::update(const sim::SessionRunner& runner) {
   overlay_->update(state);
 }
 
-void EndoscopicView::render() { window_->Render(); }
+void EndoscopicView::render() {
+  window_->Render();
+}
 
 vtkSmartPointer<vtkImageData> EndoscopicView::capture() {
   render();

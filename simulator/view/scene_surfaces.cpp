@@ -56,8 +56,10 @@ std::array<double, 3> mean_colour(vtkImageData* image) {
   vtkDataArray* scalars = image->GetPointData()->GetScalars();
   const vtkIdType n = scalars->GetNumberOfTuples();
   for (vtkIdType i = 0; i < n; ++i)
-    for (int c = 0; c < 3; ++c) sum[static_cast<std::size_t>(c)] += scalars->GetComponent(i, c);
-  for (double& s : sum) s /= static_cast<double>(std::max<vtkIdType>(1, n));
+    for (int c = 0; c < 3; ++c)
+      sum[static_cast<std::size_t>(c)] += scalars->GetComponent(i, c);
+  for (double& s : sum)
+    s /= static_cast<double>(std::max<vtkIdType>(1, n));
   return sum;
 }
 
@@ -98,9 +100,11 @@ void set_geometry(vtkPolyData* mesh, const std::vector<core::Vec3>& points,
   positions->Modified();
   std::vector<core::Vec3> normals(points.size(), core::Vec3::Zero());
   for (const core::Triangle& t : triangles) {
-    const core::Vec3 n = (points[static_cast<std::size_t>(t[1])] - points[static_cast<std::size_t>(t[0])])
-                             .cross(points[static_cast<std::size_t>(t[2])] - points[static_cast<std::size_t>(t[0])]);
-    for (int v : t) normals[static_cast<std::size_t>(weld[static_cast<std::size_t>(v)])] += n;
+    const core::Vec3 n =
+        (points[static_cast<std::size_t>(t[1])] - points[static_cast<std::size_t>(t[0])])
+            .cross(points[static_cast<std::size_t>(t[2])] - points[static_cast<std::size_t>(t[0])]);
+    for (int v : t)
+      normals[static_cast<std::size_t>(weld[static_cast<std::size_t>(v)])] += n;
   }
   for (std::size_t i = 0; i < normals.size(); ++i)
     normals[i] = normals[static_cast<std::size_t>(weld[i])];
@@ -146,8 +150,7 @@ vtkSmartPointer<vtkPolyData> make_mesh(const std::vector<core::Vec3>& points,
 
 }  // namespace
 
-SceneSurfaces::SceneSurfaces(const core::Scenario& scenario,
-                             const std::filesystem::path& package) {
+SceneSurfaces::SceneSurfaces(const core::Scenario& scenario, const std::filesystem::path& package) {
   for (const core::SceneObject& object : scenario.objects) {
     if (object.role == core::ObjectRole::Instrument) continue;
     const bool simulated = object.body_kind == core::BodyKind::TetMesh ||
@@ -207,7 +210,8 @@ SceneSurfaces::SceneSurfaces(const core::Scenario& scenario,
 SceneSurfaces::~SceneSurfaces() = default;
 
 void SceneSurfaces::add_to(vtkRenderer* renderer) const {
-  for (const Surface& surface : surfaces_) renderer->AddActor(surface.actor);
+  for (const Surface& surface : surfaces_)
+    renderer->AddActor(surface.actor);
 }
 
 void SceneSurfaces::update(const sim::World& world) {

@@ -25,7 +25,8 @@ namespace {
 constexpr double kBarLeft = 0.885, kBarWidth = 0.018, kBarGap = 0.008;
 constexpr double kBarBottom = 0.12, kBarHeight = 0.55;
 // Seed 002 §5.2's colours: green, blue, yellow, red.
-constexpr unsigned char kColours[4][3] = {{60, 200, 80}, {70, 120, 240}, {235, 210, 50}, {230, 50, 40}};
+constexpr unsigned char kColours[4][3] = {
+    {60, 200, 80}, {70, 120, 240}, {235, 210, 50}, {230, 50, 40}};
 
 vtkSmartPointer<vtkTextActor> text(double x, double y, int size, double r, double g, double b) {
   auto actor = vtkSmartPointer<vtkTextActor>::New();
@@ -157,7 +158,11 @@ void SessionOverlay::update(const OverlayState& state) {
   }
 }
 
-std::string SessionOverlay::info_text() const { return info_->GetInput(); }
-std::string SessionOverlay::warning_text() const { return warning_->GetInput(); }
+std::string SessionOverlay::info_text() const {
+  return info_->GetInput();
+}
+std::string SessionOverlay::warning_text() const {
+  return warning_->GetInput();
+}
 
 }  // namespace viscera::view

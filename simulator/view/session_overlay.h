@@ -19,8 +19,8 @@ namespace viscera::view {
 
 /// What the overlay shows at one frame.
 struct OverlayState {
-  double elapsed = 0.0;     ///< s since the session started
-  double time_limit = 0.0;  ///< s
+  double elapsed = 0.0;                   ///< s since the session started
+  double time_limit = 0.0;                ///< s
   core::Vec3 force = core::Vec3::Zero();  ///< N on the instrument
   double force_warning = 0.0;             ///< N, 0: no warning level
   core::Vec3 tip = core::Vec3::Zero();    ///< m

@@ -35,8 +35,7 @@ class ManualInput final : public sim::InstrumentInput {
 class ManualStyle : public vtkInteractorStyle {
  public:
   static ManualStyle* New();
-  vtkTypeMacro(ManualStyle, vtkInteractorStyle)
-  sim::ManualControl* manual = nullptr;
+  vtkTypeMacro(ManualStyle, vtkInteractorStyle) sim::ManualControl* manual = nullptr;
   bool abort_requested = false;
 
   void OnKeyPress() override {
@@ -104,14 +103,15 @@ struct WindowLoop {
     // At most a quarter second of simulation per frame, so a slow machine slows down the
     // session instead of freezing the window.
     const long long budget = std::llround(0.25 / dt);
-    for (long long n = 0; n < budget && !runner->finished() && runner->world().time() + 0.5 * dt < wall;
-         ++n) {
+    for (long long n = 0;
+         n < budget && !runner->finished() && runner->world().time() + 0.5 * dt < wall; ++n) {
       if (style->abort_requested) {
         runner->end("abort", "the trainee ended the session");
         break;
       }
-      runner->step(manual != nullptr && options->instrument == nullptr ? manual->advance(dt)
-                                                                       : scripted_state(*options, *runner));
+      runner->step(manual != nullptr && options->instrument == nullptr
+                       ? manual->advance(dt)
+                       : scripted_state(*options, *runner));
     }
     view->update(*runner);
     view->render();
@@ -143,8 +143,13 @@ sim::SessionReport run_in_window(const core::Scenario& scenario,
   interactor->SetInteractorStyle(style);
   interactor->Initialize();
 
-  WindowLoop loop{&run, &runner, &view, options.instrument == nullptr ? manual : nullptr,
-                  style, interactor, std::chrono::steady_clock::now()};
+  WindowLoop loop{&run,
+                  &runner,
+                  &view,
+                  options.instrument == nullptr ? manual : nullptr,
+                  style,
+                  interactor,
+                  std::chrono::steady_clock::now()};
   vtkNew<vtkCallbackCommand> timer;
   timer->SetCallback(on_timer);
   timer->SetClientData(&loop);
@@ -223,7 +228,8 @@ sim::SessionReport run_to_video(const core::Scenario& scenario,
     throw core::OutputError("the video encoder failed", {ogv.string(), "", ""});
   }
   std::filesystem::rename(partial, ogv, error);
-  if (error) throw core::OutputError("cannot move the finished video into place", {ogv.string(), "", ""});
+  if (error)
+    throw core::OutputError("cannot move the finished video into place", {ogv.string(), "", ""});
   return report;
 }
 

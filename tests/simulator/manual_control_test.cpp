@@ -18,7 +18,8 @@ TEST(ManualControl, held_keys_move_the_tip_along_the_shaft_at_the_set_rate) {
   rates.advance = 0.02;
   ManualControl control(start, rates);
   control.press(*ManualControl::command_for_key("w"));
-  for (int i = 0; i < 500; ++i) control.advance(1e-3);  // 0.5 s
+  for (int i = 0; i < 500; ++i)
+    control.advance(1e-3);  // 0.5 s
   EXPECT_NEAR(control.state().tip.x(), 0.01 + 0.02 * 0.5, 1e-12);
   control.release(ManualCommand::Advance);
   control.advance(1.0);

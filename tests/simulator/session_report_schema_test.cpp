@@ -30,13 +30,15 @@ nlohmann::json scripted_report(const nlohmann::json& script) {
 
 std::string describe(const std::vector<core::SchemaViolation>& violations) {
   std::string out;
-  for (const auto& v : violations) out += v.pointer + ": " + v.message + "\n";
+  for (const auto& v : violations)
+    out += v.pointer + ": " + v.message + "\n";
   return out;
 }
 
 TEST(SessionReportSchema, expert_and_novice_reports_validate) {
   const auto schema = report_schema();
-  for (const auto& script : {viscera::testing::expert_cavity_script(), viscera::testing::novice_cavity_script()}) {
+  for (const auto& script :
+       {viscera::testing::expert_cavity_script(), viscera::testing::novice_cavity_script()}) {
     const nlohmann::json report = scripted_report(script);
     ASSERT_FALSE(report["procedure_steps"].empty());
     ASSERT_FALSE(report["path"]["tip"].empty());

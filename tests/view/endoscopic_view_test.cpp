@@ -2,6 +2,8 @@
 // textured organ is in the picture, angled optics look elsewhere, the lens pass distorts and
 // stops the field, and the overlay warns about force as seed 002 §5.2 says.
 
+#include "simulator/view/endoscopic_view.h"
+
 #include <gtest/gtest.h>
 #include <vtkImageData.h>
 #include <vtkPointData.h>
@@ -11,7 +13,6 @@
 
 #include "core/package/scenario_package.h"
 #include "simulator/session/manual_control.h"
-#include "simulator/view/endoscopic_view.h"
 #include "simulator/view/scene_surfaces.h"
 #include "tests/support/command_runner.h"
 #include "tests/support/test_paths.h"
@@ -20,8 +21,8 @@
 namespace viscera {
 namespace {
 
-using testing::FrameStatistics;
 using testing::frame_statistics;
+using testing::FrameStatistics;
 
 view::ViewOptions offscreen(bool lens) {
   view::ViewOptions options;
@@ -56,8 +57,8 @@ TEST(EndoscopicView, shows_the_textured_organ_from_the_starting_pose) {
   const auto texture = view::mean_colour(albedo);
   const double texture_sum = texture[0] + texture[1] + texture[2];
   for (int c = 0; c < 3; ++c) {
-    EXPECT_NEAR(stats.chromaticity[static_cast<std::size_t>(c)], texture[static_cast<std::size_t>(c)] / texture_sum,
-                0.06)
+    EXPECT_NEAR(stats.chromaticity[static_cast<std::size_t>(c)],
+                texture[static_cast<std::size_t>(c)] / texture_sum, 0.06)
         << "channel " << c;
   }
 }
@@ -117,7 +118,8 @@ TEST(SessionOverlay, force_bars_fill_and_warn_as_the_force_nears_the_limit) {
   EXPECT_NEAR(overlay.bar_fill()[3], 0.5 / 1.5, 1e-12);
   EXPECT_EQ(overlay.warning_text(), "");
   EXPECT_NE(overlay.info_text().find("12.5 s"), std::string::npos) << overlay.info_text();
-  EXPECT_NE(overlay.info_text().find("+1.0   +2.0   +3.0 mm"), std::string::npos) << overlay.info_text();
+  EXPECT_NE(overlay.info_text().find("+1.0   +2.0   +3.0 mm"), std::string::npos)
+      << overlay.info_text();
   state.force = core::Vec3(0.0, 0.0, 1.3);
   overlay.update(state);
   EXPECT_NE(overlay.warning_text().find("EXCESSIVE"), std::string::npos);

@@ -93,7 +93,8 @@ TEST(HtmlReport, novice_page_against_the_expert_references_existing_plots) {
 
 TEST(HtmlReport, refuses_what_is_not_a_session_report) {
   const auto dir = viscera::testing::scratch_dir();
-  EXPECT_THROW(write_html_report(nlohmann::json{{"format", "other"}}, nullptr, dir), core::InputError);
+  EXPECT_THROW(write_html_report(nlohmann::json{{"format", "other"}}, nullptr, dir),
+               core::InputError);
   EXPECT_FALSE(std::filesystem::exists(dir / "report.html"));
 }
 

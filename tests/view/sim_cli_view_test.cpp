@@ -59,7 +59,10 @@ std::filesystem::path write_script(const std::filesystem::path& dir) {
       {"version", 2},
       {"waypoints",
        {{{"t", 0.0}, {"tip", start.tip}, {"axis", start.axis}, {"up", start.up}},
-        {{"t", 1.0}, {"tip", core::Vec3(start.tip + 0.004 * view)}, {"axis", start.axis}, {"up", start.up}}}}};
+        {{"t", 1.0},
+         {"tip", core::Vec3(start.tip + 0.004 * view)},
+         {"axis", start.axis},
+         {"up", start.up}}}}};
   const auto path = dir / "script.json";
   std::ofstream(path) << script.dump(2);
   return path;
@@ -69,11 +72,12 @@ TEST(SimCliView, run_writes_a_snapshot_of_the_endoscopic_view) {
   const auto& patient = testing::hysteroscopy_patient();
   const auto dir = testing::scratch_dir();
   const auto png = dir / "view.png";
-  const auto result = run_program(
-      "viscera-sim", "run " + shell_quote(patient.package.string()) + " --script " +
-                         shell_quote(write_script(dir).string()) + " --snapshot " +
-                         shell_quote(png.string()) + " --snapshot-time 0.5 --width 640 --height 360",
-      dir);
+  const auto result =
+      run_program("viscera-sim",
+                  "run " + shell_quote(patient.package.string()) + " --script " +
+                      shell_quote(write_script(dir).string()) + " --snapshot " +
+                      shell_quote(png.string()) + " --snapshot-time 0.5 --width 640 --height 360",
+                  dir);
   ASSERT_EQ(result.exit_code, 0) << result.err;
   EXPECT_NE(result.out.find("snapshot "), std::string::npos) << result.out;
   const auto frame = view::decode_png(read_bytes(png), png.string());
@@ -90,8 +94,9 @@ TEST(SimCliView, run_writes_a_snapshot_of_the_endoscopic_view) {
 TEST(SimCliView, headless_runs_refuse_to_render_with_exit_2) {
   const auto& patient = testing::hysteroscopy_patient();
   const auto dir = testing::scratch_dir();
-  const auto result = run_program("viscera-sim", "run " + shell_quote(patient.package.string()) +
-                                                     " --headless --snapshot x.png --duration 0.01",
+  const auto result = run_program("viscera-sim",
+                                  "run " + shell_quote(patient.package.string()) +
+                                      " --headless --snapshot x.png --duration 0.01",
                                   dir);
   EXPECT_EQ(result.exit_code, 2) << result.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "x.png"));
@@ -101,16 +106,16 @@ TEST(SimCliView, replay_renders_an_ogg_theora_video_and_stays_identical) {
   const auto& patient = testing::hysteroscopy_patient();
   const auto dir = testing::scratch_dir();
   const auto trace = dir / "trace.json";
-  auto result = run_program("viscera-sim", "run " + shell_quote(patient.package.string()) +
-                                               " --headless --script " +
-                                               shell_quote(write_script(dir).string()) +
-                                               " --record " + shell_quote(trace.string()),
+  auto result = run_program("viscera-sim",
+                            "run " + shell_quote(patient.package.string()) +
+                                " --headless --script " + shell_quote(write_script(dir).string()) +
+                                " --record " + shell_quote(trace.string()),
                             dir);
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const auto video = dir / "replay.ogv";
-  result = run_program("viscera-sim", "replay " + shell_quote(trace.string()) + " --video " +
-                                          shell_quote(video.string()) +
-                                          " --fps 10 --width 320 --height 240",
+  result = run_program("viscera-sim",
+                       "replay " + shell_quote(trace.string()) + " --video " +
+                           shell_quote(video.string()) + " --fps 10 --width 320 --height 240",
                        dir);
   ASSERT_EQ(result.exit_code, 0) << result.err;
   EXPECT_NE(result.out.find("replay identical"), std::string::npos) << result.out;
@@ -134,11 +139,13 @@ TEST(SimCliView, a_window_session_runs_in_real_time_and_its_trace_replays) {
   const auto dir = testing::scratch_dir();
   const auto trace = dir / "window.json";
   const auto start = std::chrono::steady_clock::now();
-  auto result = run_program("viscera-sim", "run " + shell_quote(patient.package.string()) +
-                                               " --duration 0.5 --width 320 --height 240 --record " +
-                                               shell_quote(trace.string()),
+  auto result = run_program("viscera-sim",
+                            "run " + shell_quote(patient.package.string()) +
+                                " --duration 0.5 --width 320 --height 240 --record " +
+                                shell_quote(trace.string()),
                             dir);
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   ASSERT_EQ(result.exit_code, 0) << result.err;
   EXPECT_NE(result.out.find("ended: duration"), std::string::npos) << result.out;
   EXPECT_GE(wall, 0.5) << "the window paces the session at real time";

@@ -13,7 +13,9 @@ namespace viscera::testing {
 
 namespace {
 
-double luminance(const unsigned char* p) { return 0.299 * p[0] + 0.587 * p[1] + 0.114 * p[2]; }
+double luminance(const unsigned char* p) {
+  return 0.299 * p[0] + 0.587 * p[1] + 0.114 * p[2];
+}
 
 template <typename F>
 void for_pixels(vtkImageData* frame, double field, F&& visit) {
@@ -46,8 +48,9 @@ const Patient& hysteroscopy_patient() {
       auto result = run_program(
           "viscera", "new --template hysteroscopy --seed 7 -o " + shell_quote(raw.string()), dir);
       if (result.exit_code != 0) ADD_FAILURE() << "viscera new failed: " << result.err;
-      result = run_program("viscera", "bake " + shell_quote(raw.string()) + " -o " +
-                                           shell_quote(p.package.string()), dir);
+      result = run_program(
+          "viscera", "bake " + shell_quote(raw.string()) + " -o " + shell_quote(p.package.string()),
+          dir);
       if (result.exit_code != 0) ADD_FAILURE() << "viscera bake failed: " << result.err;
     }
     p.scenario = core::read_package(p.package);
@@ -67,17 +70,19 @@ FrameStatistics frame_statistics(vtkImageData* frame, double field) {
     ++count;
     if (l > 8.0) {
       ++lit;
-      for (int c = 0; c < 3; ++c) rgb[c] += p[c];
+      for (int c = 0; c < 3; ++c)
+        rgb[c] += p[c];
     }
   });
   if (count == 0) return stats;
   stats.lit_fraction = static_cast<double>(lit) / static_cast<double>(count);
   stats.mean_luminance = sum / static_cast<double>(count);
-  stats.luminance_stddev =
-      std::sqrt(std::max(0.0, sum2 / static_cast<double>(count) - stats.mean_luminance * stats.mean_luminance));
+  stats.luminance_stddev = std::sqrt(std::max(
+      0.0, sum2 / static_cast<double>(count) - stats.mean_luminance * stats.mean_luminance));
   const double total = rgb[0] + rgb[1] + rgb[2];
   if (total > 0.0)
-    for (int c = 0; c < 3; ++c) stats.chromaticity[static_cast<std::size_t>(c)] = rgb[c] / total;
+    for (int c = 0; c < 3; ++c)
+      stats.chromaticity[static_cast<std::size_t>(c)] = rgb[c] / total;
   return stats;
 }
 
@@ -89,7 +94,8 @@ double mean_abs_difference(vtkImageData* a, vtkImageData* b, double field) {
   long long count = 0;
   for_pixels(a, field, [&](const unsigned char* p, int, int) {
     const std::ptrdiff_t offset = p - base;
-    for (int c = 0; c < 3; ++c) sum += std::abs(static_cast<int>(p[c]) - static_cast<int>(other[offset + c]));
+    for (int c = 0; c < 3; ++c)
+      sum += std::abs(static_cast<int>(p[c]) - static_cast<int>(other[offset + c]));
     count += 3;
   });
   (void)channels;

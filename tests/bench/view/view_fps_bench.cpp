@@ -27,8 +27,10 @@ const std::pair<fs::path, viscera::core::Scenario>& patient() {
       fs::create_directories(dir);
       const std::string bin = std::string(VISCERA_BINARY_DIR) + "/bin/viscera";
       const std::string raw = (dir / "raw.vscene").string();
-      if (std::system((bin + " new --template hysteroscopy -o '" + raw + "' > /dev/null").c_str()) != 0 ||
-          std::system((bin + " bake '" + raw + "' -o '" + package.string() + "' > /dev/null").c_str()) != 0)
+      if (std::system(
+              (bin + " new --template hysteroscopy -o '" + raw + "' > /dev/null").c_str()) != 0 ||
+          std::system(
+              (bin + " bake '" + raw + "' -o '" + package.string() + "' > /dev/null").c_str()) != 0)
         std::abort();
     }
     return std::make_pair(package, viscera::core::read_package(package));
@@ -55,8 +57,8 @@ void BM_EndoscopicViewFrame(benchmark::State& state) {
     view.render();
     view.window()->WaitForCompletion();
   }
-  state.counters["fps"] = benchmark::Counter(static_cast<double>(state.iterations()),
-                                             benchmark::Counter::kIsRate);
+  state.counters["fps"] =
+      benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_EndoscopicViewFrame)
     ->Args({1280, 720, 1})

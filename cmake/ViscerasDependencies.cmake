@@ -26,7 +26,7 @@ find_package(VTK 9.1 REQUIRED COMPONENTS
   FiltersCore FiltersGeneral FiltersGeometry
   ImagingCore ImagingGeneral ImagingMorphological ImagingSources IOMINC
   GUISupportQt RenderingCore RenderingOpenGL2 RenderingVolumeOpenGL2 InteractionStyle
-  ChartsCore ViewsContext2D RenderingContextOpenGL2 IOOggTheora)
+  ChartsCore ViewsContext2D RenderingContextOpenGL2 IOOggTheora RenderingFreeType RenderingContext2D)
 
 # DICOM through GDCM's VTK reader (BUILD_NOTES.md). GDCMConfig.cmake does not load the
 # GDCM::vtkgdcm target itself; its file sits beside the config and needs VTK found first.

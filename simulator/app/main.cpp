@@ -7,12 +7,16 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <optional>
 
 #include "core/error.h"
 #include "core/package/scenario_package.h"
+#include "simulator/report/html_report.h"
 #include "simulator/session/headless_session.h"
+#include "simulator/session/manual_control.h"
 #include "simulator/session/session_trace.h"
+#include "simulator/view/view_session.h"
 #include "studio/cli/command_line.h"
 
 namespace {
@@ -28,6 +32,13 @@ struct RunOptions {
   std::string script;
   std::string record;
   bool json = false;
+  std::string snapshot;         ///< PNG of the endoscopic view (offscreen)
+  double snapshot_time = -1.0;  ///< s; negative: after the run
+  int width = 1280, height = 720;
+  bool plain_optics = false;  ///< no distortion, depth of field or field stop
+  double optics = -1.0;       ///< ° of the angled optics; negative: the script's or scenario's
+  bool html = false;          ///< also write report.html with its plots (needs X)
+  std::string reference;      ///< an expert's report.json to compare against
 };
 
 /// Writes `text` to `path` through a temporary sibling, so a reader never sees half a report.
@@ -55,13 +66,29 @@ nlohmann::json read_json_file(const std::string& path) {
 }
 
 /// Writes report.json into `report_dir` (if given) and prints the summary or the JSON.
-void publish(const SessionReport& report, const std::string& report_dir, bool as_json) {
+/// Writes report.html and its plots into `folder` (offscreen VTK charts: needs an X server).
+std::string write_html(const nlohmann::json& json, const std::string& reference,
+                       const fs::path& folder) {
+  nlohmann::json expert;
+  if (!reference.empty()) {
+    expert = read_json_file(reference);
+    if (!expert.is_object() || expert.value("format", std::string()) != "viscera-session-report")
+      throw viscera::core::InputError("is not a viscera session report", {reference, "", ""});
+  }
+  const auto written =
+      viscera::report::write_html_report(json, reference.empty() ? nullptr : &expert, folder);
+  return written.front().string();
+}
+
+void publish(const SessionReport& report, const std::string& report_dir, bool as_json,
+             bool html = false, const std::string& reference = "") {
   const nlohmann::json json = viscera::sim::report_to_json(report);
   std::string report_path;
   if (!report_dir.empty()) {
     const fs::path path = fs::absolute(report_dir) / "report.json";
     write_atomically(path, json.dump(2) + "\n");
     report_path = path.string();
+    if (html) report_path += "\nhtml " + write_html(json, reference, path.parent_path());
   }
   if (as_json) {
     std::cout << json.dump(2) << "\n";
@@ -110,13 +137,34 @@ viscera::sim::SessionTrace make_trace(const RunOptions& options,
   return trace;
 }
 
+/// The view of a session, offscreen for snapshots and videos.
+std::unique_ptr<viscera::view::EndoscopicView> make_view(const viscera::core::Scenario& scenario,
+                                                         const std::string& package,
+                                                         const RunOptions& options,
+                                                         bool offscreen) {
+  viscera::view::ViewOptions view;
+  view.width = options.width;
+  view.height = options.height;
+  view.offscreen = offscreen;
+  view.lens_effects = !options.plain_optics;
+  if (!offscreen) view.bindings = viscera::sim::ManualControl::bindings_text();
+  return std::make_unique<viscera::view::EndoscopicView>(scenario, package, view);
+}
+
 int run(const RunOptions& options) {
-  if (!options.headless) {
-    // The endoscopic view comes with the rendering module; until then every session is
-    // headless, and saying so beats opening an empty window.
-    std::cerr << "viscera-sim: no view module in this build; running headless\n";
+  if (options.headless && !options.snapshot.empty()) {
+    throw viscera::core::UsageError(
+        "--snapshot renders the endoscopic view, which a --headless session never opens");
   }
-  const viscera::core::Scenario scenario = viscera::core::read_package(options.package);
+  viscera::core::Scenario scenario = viscera::core::read_package(options.package);
+  // The optics: --optics, else the script's "optics_angle", else the scenario's instrument.
+  if (options.optics >= 0.0) {
+    scenario.session.instrument.optics_angle = options.optics;
+  } else if (!options.script.empty()) {
+    const nlohmann::json stated = read_json_file(options.script);
+    if (stated.is_object() && stated.contains("optics_angle") && stated["optics_angle"].is_number())
+      scenario.session.instrument.optics_angle = stated["optics_angle"].get<double>();
+  }
   viscera::sim::HeadlessRunOptions run;
   run.package = fs::absolute(options.package).string();
   run.duration = options.duration > 0.0 ? options.duration : scenario.session.duration_limit;
@@ -133,25 +181,51 @@ int run(const RunOptions& options) {
     run.force_warning = script->force_warning();
     if (options.duration <= 0.0) run.duration = script->duration();
   }
-  run.record_inputs = !options.record.empty() || !options.report_dir.empty();
-  const SessionReport report = viscera::sim::run_headless(scenario, run);
+  run.record_inputs = !options.record.empty() || !options.report_dir.empty() || !options.headless;
+  SessionReport report;
+  if (options.headless) {
+    report = viscera::sim::run_headless(scenario, run);
+  } else if (!options.snapshot.empty()) {
+    // Without a script the instrument rests at the starting pose, where the trainee would
+    // begin.
+    std::optional<viscera::sim::RecordedInput> resting;
+    if (!script) {
+      resting.emplace(std::vector<std::pair<long long, viscera::sim::InstrumentState>>{
+          {0, viscera::sim::starting_pose(scenario, optics_angle)}});
+      run.instrument = &*resting;
+    }
+    auto view = make_view(scenario, run.package, options, true);
+    report = viscera::view::run_with_snapshot(scenario, run, *view, options.snapshot,
+                                              options.snapshot_time);
+  } else {
+    // The trainee drives the instrument from the keyboard and mouse, starting where the
+    // scenario's first landmark can be seen, unless a script drives it.
+    auto view = make_view(scenario, run.package, options, false);
+    std::optional<viscera::sim::ManualControl> manual;
+    if (!script) manual.emplace(viscera::sim::starting_pose(scenario, optics_angle));
+    report = viscera::view::run_in_window(scenario, run, *view, manual ? &*manual : nullptr);
+  }
   const viscera::sim::SessionTrace trace =
       make_trace(options, run, script_json, optics_angle, report);
   if (!options.record.empty()) viscera::sim::write_trace(trace, options.record);
   if (!options.report_dir.empty())
     viscera::sim::write_trace(trace, fs::path(options.report_dir) / "trace.json");
-  publish(report, options.report_dir, options.json);
+  publish(report, options.report_dir, options.json, options.html, options.reference);
+  if (!options.snapshot.empty() && !options.json)
+    std::cout << "snapshot " << fs::absolute(options.snapshot).string() << "\n";
   return 0;
 }
 
 /// Runs the recorded session again and compares every checkpoint hash.
-int replay(const std::string& trace_path, const std::string& report_dir, bool as_json) {
+int replay(const std::string& trace_path, const std::string& report_dir, bool as_json,
+           const std::string& video, int fps, const RunOptions& view_options) {
   const viscera::sim::SessionTrace trace = viscera::sim::read_trace(trace_path);
   if (viscera::sim::package_manifest_sha256(trace.package) != trace.manifest_sha256) {
     throw viscera::core::ValidationError("the package changed since the session was recorded",
                                          {trace.package, "", ""});
   }
-  const viscera::core::Scenario scenario = viscera::core::read_package(trace.package);
+  viscera::core::Scenario scenario = viscera::core::read_package(trace.package);
+  scenario.session.instrument.optics_angle = trace.optics_angle;
   const std::unique_ptr<viscera::sim::InstrumentInput> input = trace.input();
   viscera::sim::HeadlessRunOptions run;
   run.package = trace.package;
@@ -164,7 +238,14 @@ int replay(const std::string& trace_path, const std::string& report_dir, bool as
     run.instrument_body = trace.body;
     run.instrument_stiffness = trace.stiffness;
   }
-  const SessionReport report = viscera::sim::run_headless(scenario, run);
+  SessionReport report;
+  long long frames = 0;
+  if (video.empty()) {
+    report = viscera::sim::run_headless(scenario, run);
+  } else {
+    auto view = make_view(scenario, run.package, view_options, true);
+    report = viscera::view::run_to_video(scenario, run, *view, video, fps, frames);
+  }
   for (std::size_t i = 0; i < trace.checkpoints.size(); ++i) {
     if (i >= report.checkpoints.size() || report.checkpoints[i] != trace.checkpoints[i]) {
       throw viscera::core::ValidationError(
@@ -176,8 +257,12 @@ int replay(const std::string& trace_path, const std::string& report_dir, bool as
     throw viscera::core::ValidationError("replay ends in a different state", {trace_path, "", ""});
   }
   publish(report, report_dir, as_json);
-  if (!as_json)
+  if (!as_json) {
     std::cout << "replay identical: " << trace.checkpoints.size() << " checkpoints match\n";
+    if (!video.empty())
+      std::cout << "video " << fs::absolute(video).string() << " (" << frames << " frames at "
+                << fps << " fps)\n";
+  }
   return 0;
 }
 
@@ -193,7 +278,9 @@ int main(int argc, char** argv) {
   auto* run_command = app.add_subcommand("run", "Run a session on a scenario package");
   run_command->add_option("package", options.package, "Package (.vscene folder or .vscz)")
       ->required();
-  run_command->add_flag("--headless", options.headless, "Run without a window");
+  run_command->add_flag("--headless", options.headless,
+                        "Run without a window (default: the endoscopic view, driven by the "
+                        "script or by the keyboard and mouse)");
   run_command
       ->add_option("--duration", options.duration,
                    "Simulated seconds (default: the script's length or the scenario's limit)")
@@ -203,6 +290,30 @@ int main(int argc, char** argv) {
   run_command->add_option("--record", options.record, "Write the session's trace here for replay");
   run_command->add_option("--report", options.report_dir, "Folder for report.json");
   run_command->add_flag("--json", options.json, "Print the report as JSON");
+  run_command->add_option(
+      "--snapshot", options.snapshot,
+      "Render the endoscopic view offscreen into this PNG (needs X, e.g. Xvfb)");
+  run_command->add_option("--snapshot-time", options.snapshot_time,
+                          "Simulated second of the snapshot (default: after the run)");
+  run_command->add_option("--width", options.width, "View width in pixels")
+      ->check(CLI::Range(64, 7680));
+  run_command->add_option("--height", options.height, "View height in pixels")
+      ->check(CLI::Range(64, 4320));
+  run_command
+      ->add_flag("--html", options.html,
+                 "With --report: also write report.html and its plots (needs X, e.g. Xvfb)")
+      ->needs(run_command->get_option("--report"));
+  run_command
+      ->add_option("--reference", options.reference,
+                   "An expert's report.json the HTML report compares against")
+      ->needs(run_command->get_option("--html"));
+  run_command
+      ->add_option("--optics", options.optics,
+                   "Angle of the optics in degrees (0, 12, 30; default: the script's, else the "
+                   "scenario's)")
+      ->check(CLI::Range(0.0, 90.0));
+  run_command->add_flag("--plain-optics", options.plain_optics,
+                        "No barrel distortion, depth of field or round field stop");
   run_command->callback([&] { exit_code = run(options); });
 
   std::string trace;
@@ -213,10 +324,44 @@ int main(int argc, char** argv) {
       app.add_subcommand("replay", "Replay a recorded session and check it is bit-identical");
   replay_command->add_option("trace", trace, "Trace written by run --record")->required();
   replay_command->add_flag("--headless", replay_headless,
-                           "Run without a window (the only mode of this build)");
+                           "Run without a window (a replay never opens one; kept for scripts)");
+  std::string video;
+  int fps = 25;
+  RunOptions video_options;
+  video_options.width = 640;
+  video_options.height = 360;
+  replay_command->add_option("--video", video,
+                             "Render the replay into an Ogg Theora video (needs X, e.g. Xvfb)");
+  replay_command->add_option("--fps", fps, "Video frames per simulated second")
+      ->check(CLI::Range(1, 120));
+  replay_command->add_option("--width", video_options.width, "Video width in pixels")
+      ->check(CLI::Range(64, 3840));
+  replay_command->add_option("--height", video_options.height, "Video height in pixels")
+      ->check(CLI::Range(64, 2160));
   replay_command->add_option("--report", replay_report, "Folder for report.json");
   replay_command->add_flag("--json", replay_json, "Print the report as JSON");
-  replay_command->callback([&] { exit_code = replay(trace, replay_report, replay_json); });
+  replay_command->callback(
+      [&] { exit_code = replay(trace, replay_report, replay_json, video, fps, video_options); });
+
+  std::string report_json;
+  std::string report_reference;
+  std::string report_out;
+  auto* report_command = app.add_subcommand(
+      "report", "Write the HTML page and plots of a session's report.json (needs X, e.g. Xvfb)");
+  report_command->add_option("report", report_json, "report.json of a session")->required();
+  report_command->add_option("--reference", report_reference,
+                             "An expert's report.json to compare against");
+  report_command->add_option("--out", report_out,
+                             "Folder of the page (default: beside the report)");
+  report_command->callback([&] {
+    const nlohmann::json json = read_json_file(report_json);
+    if (!json.is_object() || json.value("format", std::string()) != "viscera-session-report")
+      throw viscera::core::InputError("is not a viscera session report", {report_json, "", ""});
+    const fs::path folder =
+        report_out.empty() ? fs::absolute(report_json).parent_path() : fs::path(report_out);
+    std::cout << "html " << write_html(json, report_reference, folder) << "\n";
+    exit_code = 0;
+  });
 
   return viscera::cli::run_command_line(app, argc, argv, exit_code);
 }

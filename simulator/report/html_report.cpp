@@ -1,0 +1,205 @@
+#include "simulator/report/html_report.h"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "core/error.h"
+#include "simulator/report/report_plots.h"
+#include "simulator/view/image_files.h"
+
+namespace viscera::report {
+
+namespace {
+
+using nlohmann::json;
+
+std::string escape(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
+
+std::string number(const json& value, double scale = 1.0, int digits = 3) {
+  if (!value.is_number()) return "&ndash;";
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.*g", digits, value.get<double>() * scale);
+  return buffer;
+}
+
+std::string text_of(const json& object, const std::string& key) {
+  return object.contains(key) && object[key].is_string() ? object[key].get<std::string>() : "";
+}
+
+const char* kStyle = R"(<style>
+body { font-family: sans-serif; margin: 2em; color: #222; max-width: 70em; }
+table { border-collapse: collapse; margin: 1em 0; }
+th, td { border: 1px solid #bbb; padding: 0.3em 0.7em; text-align: right; }
+th:first-child, td:first-child { text-align: left; }
+.better { color: #176b24; font-weight: bold; } .worse { color: #b0201b; font-weight: bold; }
+img { max-width: 100%; border: 1px solid #ddd; margin: 0.5em 0; }
+.plots { display: grid; grid-template-columns: 1fr 1fr; gap: 1em; }
+</style>
+)";
+
+}  // namespace
+
+const std::vector<MetricSpec>& report_metrics() {
+  static const std::vector<MetricSpec> metrics = {
+      {"duration", "Duration", "s", 1.0, false},
+      {"path_length", "Path length", "mm", 1000.0, false},
+      {"economy_of_movement", "Economy of movement", "%", 100.0, true},
+      {"contacts", "Tool-wall collisions", "", 1.0, false},
+      {"contact_time", "Wall contact time", "s", 1.0, false},
+      {"max_force", "Maximum force", "N", 1.0, false},
+      {"mean_contact_force", "Mean contact force", "N", 1.0, false},
+      {"surface_seen", "Cavity surface seen", "%", 100.0, true},
+      {"view_quality", "View quality (target centred, in range)", "%", 100.0, true},
+      {"inflow_open_time", "Inflow valve open", "s", 1.0, false},
+      {"distension_fluid_used", "Distension fluid used", "ml", 1.0e6, false},
+      {"tasks_completed", "Tasks completed", "", 1.0, true},
+  };
+  return metrics;
+}
+
+std::string compare_metric(const MetricSpec& metric, double trainee, double reference) {
+  const double tolerance = 1e-9 * std::max({1.0, std::abs(trainee), std::abs(reference)});
+  if (std::abs(trainee - reference) <= tolerance) return "equal";
+  return (trainee > reference) == metric.higher_is_better ? "better" : "worse";
+}
+
+std::vector<std::filesystem::path> write_html_report(const json& report, const json* reference,
+                                                     const std::filesystem::path& folder) {
+  if (!report.is_object() || report.value("format", std::string()) != "viscera-session-report")
+    throw core::InputError("is not a viscera session report",
+                           {(folder / "report.json").string(), "", ""});
+  std::vector<std::filesystem::path> written;
+  const std::filesystem::path page = folder / "report.html";
+  written.push_back(page);
+  for (const char* name : {"path_xy.png", "path_xz.png", "force.png", "scores.png"})
+    written.push_back(folder / name);
+  plot_tool_path(report, reference, "xy", folder / "path_xy.png");
+  plot_tool_path(report, reference, "xz", folder / "path_xz.png");
+  plot_force(report, reference, folder / "force.png");
+  plot_step_scores(report, reference, folder / "scores.png");
+
+  std::ostringstream html;
+  html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
+       << "<title>Viscera session report</title>\n"
+       << kStyle << "</head><body>\n"
+       << "<h1>Session report</h1>\n<table>\n"
+       << "<tr><td>Package</td><td>" << escape(text_of(report, "package")) << "</td></tr>\n"
+       << "<tr><td>Procedure</td><td>" << escape(text_of(report, "procedure")) << "</td></tr>\n"
+       << "<tr><td>Instrument</td><td>" << escape(text_of(report, "instrument_kind"))
+       << "</td></tr>\n"
+       << "<tr><td>Simulated time</td><td>"
+       << number(report.value("simulated_time", json()), 1.0, 4) << " s</td></tr>\n"
+       << "<tr><td>Ended by</td><td>" << escape(text_of(report, "end_reason")) << "</td></tr>\n"
+       << "<tr><td>Score</td><td>" << number(report.value("score", json())) << " / 100</td></tr>\n";
+  if (reference != nullptr)
+    html << "<tr><td>Reference score</td><td>" << number(reference->value("score", json()))
+         << " / 100</td></tr>\n";
+  html << "</table>\n";
+
+  html << "<h2>Metrics</h2>\n<table>\n<tr><th>Metric</th><th>Trainee</th>";
+  if (reference != nullptr) html << "<th>Reference</th><th>Trainee vs reference</th>";
+  html << "</tr>\n";
+  const json metrics = report.value("metrics", json::object());
+  const json expert =
+      reference != nullptr ? reference->value("metrics", json::object()) : json::object();
+  for (const MetricSpec& m : report_metrics()) {
+    const json value = metrics.value(m.key, json());
+    html << "<tr><td>" << escape(m.label) << (m.unit.empty() ? "" : " (" + m.unit + ")")
+         << "</td><td>" << number(value, m.scale) << "</td>";
+    if (reference != nullptr) {
+      const json other = expert.value(m.key, json());
+      html << "<td>" << number(other, m.scale) << "</td>";
+      if (value.is_number() && other.is_number()) {
+        const std::string verdict = compare_metric(m, value.get<double>(), other.get<double>());
+        html << "<td class=\"" << verdict << "\">" << verdict << "</td>";
+      } else {
+        html << "<td>&ndash;</td>";
+      }
+    }
+    html << "</tr>\n";
+  }
+  html << "</table>\n";
+
+  html << "<h2>Plots</h2>\n<div class=\"plots\">\n"
+       << "<figure><img src=\"path_xy.png\" alt=\"tool path from above\"><figcaption>Tool path "
+          "from above, coloured by the distance to the wall (red: at the "
+          "wall).</figcaption></figure>\n"
+       << "<figure><img src=\"path_xz.png\" alt=\"tool path from the side\"><figcaption>Tool path "
+          "from the side.</figcaption></figure>\n"
+       << "<figure><img src=\"force.png\" alt=\"force over time\"><figcaption>Force on the "
+          "instrument; dashed: the warning level.</figcaption></figure>\n"
+       << "<figure><img src=\"scores.png\" alt=\"scores per step\"><figcaption>Score per step"
+       << (reference != nullptr ? " (grey: reference)" : "") << ".</figcaption></figure>\n</div>\n";
+
+  html << "<h2>Procedure steps</h2>\n<table>\n<tr><th>Step</th><th>Started (s)</th><th>Ended (s)"
+          "</th><th>Path (mm)</th><th>Collisions</th><th>Max force (N)</th><th>Seen (%)</th>"
+          "<th>Score</th></tr>\n";
+  for (const auto& step : report.value("procedure_steps", json::array())) {
+    const json m = step.value("metrics", json::object());
+    html << "<tr><td>"
+         << escape(text_of(step, "name").empty() ? text_of(step, "id") : text_of(step, "name"))
+         << "</td><td>" << number(step.value("started_at", json())) << "</td><td>"
+         << number(step.value("ended_at", json())) << "</td><td>"
+         << number(m.value("path_length", json()), 1000.0) << "</td><td>"
+         << number(m.value("contacts", json())) << "</td><td>"
+         << number(m.value("max_force", json())) << "</td><td>"
+         << number(m.value("surface_seen", json()), 100.0) << "</td><td>"
+         << number(step.value("score", json())) << "</td></tr>\n";
+  }
+  html << "</table>\n<h2>Tasks</h2>\n<table>\n<tr><th>Task</th><th>Status</th><th>Completed at (s)"
+          "</th><th>Note</th></tr>\n";
+  for (const auto& task : report.value("tasks", json::array())) {
+    html << "<tr><td>"
+         << escape(text_of(task, "name").empty() ? text_of(task, "id") : text_of(task, "name"))
+         << "</td><td>" << escape(text_of(task, "status")) << "</td><td>"
+         << number(task.value("completed_at", json())) << "</td><td>"
+         << escape(text_of(task, "note")) << "</td></tr>\n";
+  }
+  html << "</table>\n<h2>Events</h2>\n<table>\n<tr><th>Time "
+          "(s)</th><th>Event</th><th>Message</th></tr>\n";
+  for (const auto& event : report.value("events", json::array())) {
+    html << "<tr><td>" << number(event.value("time", json()), 1.0, 4) << "</td><td>"
+         << escape(text_of(event, "kind")) << "</td><td>" << escape(text_of(event, "message"))
+         << "</td></tr>\n";
+  }
+  html << "</table>\n</body></html>\n";
+  view::write_file_atomically(page, html.str());
+  return written;
+}
+
+std::vector<std::string> referenced_images(const std::string& html) {
+  std::vector<std::string> out;
+  const std::string marker = "src=\"";
+  for (std::size_t at = html.find(marker); at != std::string::npos; at = html.find(marker, at)) {
+    at += marker.size();
+    const std::size_t end = html.find('"', at);
+    if (end == std::string::npos) break;
+    out.push_back(html.substr(at, end - at));
+    at = end;
+  }
+  return out;
+}
+
+}  // namespace viscera::report

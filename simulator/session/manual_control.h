@@ -1,0 +1,77 @@
+#pragma once
+/// The instrument under the trainee's hands when no device is connected: keyboard and mouse
+/// move the tip along the shaft, swing the shaft, roll the angled optics and open the valves
+/// (seed 002 §6: the keyboard as the input device for fast testing). The window only maps
+/// events to commands; the motion is plain arithmetic on an InstrumentState, so it is tested
+/// without a display.
+
+#include <optional>
+#include <string>
+
+#include "core/scenario/scenario.h"
+#include "simulator/session/instrument_state.h"
+
+namespace viscera::sim {
+
+/// What a key or button asks for.
+enum class ManualCommand {
+  Advance,    ///< tip forward along the shaft
+  Withdraw,   ///< tip backward along the shaft
+  SwingLeft,  ///< shaft yaw about the image's up
+  SwingRight,
+  SwingUp,  ///< shaft pitch towards the image's up
+  SwingDown,
+  RollLeft,  ///< optics rolled about the shaft (the 30° view sweeps round)
+  RollRight,
+  ToggleInflow,   ///< inflow valve open ↔ closed
+  ToggleOutflow,  ///< outflow valve open ↔ closed
+  Abort           ///< the trainee ends the session
+};
+
+/// Motion rates of the manual controls.
+struct ManualRates {
+  double advance = 0.01;  ///< m/s while an advance key is held
+  double swing = 0.5;     ///< rad/s while a swing key is held
+  double roll = 1.0;      ///< rad/s while a roll key is held
+  double mouse = 0.005;   ///< rad per pixel of mouse drag
+  double wheel = 0.001;   ///< m per wheel notch
+};
+
+/// Keyboard and mouse instrument control.
+class ManualControl {
+ public:
+  explicit ManualControl(const InstrumentState& start, ManualRates rates = {});
+
+  /// The command bound to an X key symbol (e.g. "w", "Up", "Escape"), if any.
+  static std::optional<ManualCommand> command_for_key(const std::string& key);
+  /// The bindings as the window shows them, one line each.
+  static std::string bindings_text();
+
+  /// A key went down / up. Held motions act in advance(); toggles and abort act at once.
+  void press(ManualCommand command);
+  void release(ManualCommand command);
+  /// A mouse drag of (dx, dy) pixels with the left button swings the shaft.
+  void drag(double dx, double dy);
+  /// Wheel notches (positive: forward) move the tip along the shaft.
+  void wheel(int notches);
+
+  /// Applies the held motions for `dt` s and returns the state.
+  const InstrumentState& advance(double dt);
+  const InstrumentState& state() const { return state_; }
+
+ private:
+  void swing(double yaw, double pitch);
+  void roll(double angle);
+
+  InstrumentState state_;
+  ManualRates rates_;
+  bool held_[8] = {};
+};
+
+/// Where a manual session starts: 3 mm off the landmark "cervix-internal-os" (else the first
+/// landmark) along its normal, the optics looking at the mean of the other landmarks (those of the
+/// cervix excepted); without
+/// landmarks, at the centre of the first simulated object's bounding box looking along +z.
+InstrumentState starting_pose(const core::Scenario& scenario, double optics_angle);
+
+}  // namespace viscera::sim

@@ -1,0 +1,173 @@
+#include "simulator/view/endoscope_lens_pass.h"
+
+#include <vtkCamera.h>
+#include <vtkObjectFactory.h>
+#include <vtkOpenGLFramebufferObject.h>
+#include <vtkOpenGLQuadHelper.h>
+#include <vtkOpenGLRenderUtilities.h>
+#include <vtkOpenGLRenderWindow.h>
+#include <vtkOpenGLShaderCache.h>
+#include <vtkOpenGLState.h>
+#include <vtkRenderState.h>
+#include <vtkRenderer.h>
+#include <vtkShaderProgram.h>
+#include <vtkTextureObject.h>
+#include <vtk_glew.h>
+
+#include <string>
+
+namespace viscera::view {
+
+vtkStandardNewMacro(EndoscopeLensPass);
+
+namespace {
+
+// Declarations and body of the fragment shader (VTK's full-screen-quad template provides
+// texCoord in [0, 1]² and gl_FragData). Depth in the texture is the window depth d ∈ [0, 1];
+// the eye depth is z = 2nf / (f + n − (2d − 1)(f − n)).
+const char* kDeclarations = R"(
+uniform sampler2D colour;
+uniform sampler2D depth;
+uniform vec2 pixel;          // size of one pixel in texture coordinates
+uniform float aspect;        // width / height
+uniform float nearPlane;
+uniform float farPlane;
+uniform float distortion;    // k of r_scene = r (1 + k r^2)
+uniform float focusDioptres; // 1 / focus distance, 1/m
+uniform float blurPerDioptre;
+uniform float maxBlur;       // px
+uniform int fieldStop;
+float eyeDepth(vec2 uv) {
+  float d = texture(depth, uv).r;
+  return 2.0 * nearPlane * farPlane /
+         (farPlane + nearPlane - (2.0 * d - 1.0) * (farPlane - nearPlane));
+}
+)";
+
+const char* kBody = R"(
+  // Normalised field coordinates: the round field touches the top and bottom of the image.
+  vec2 p = (texCoord - 0.5) * 2.0 * vec2(aspect, 1.0);
+  float r2 = dot(p, p);
+  if (fieldStop == 1 && r2 > 1.0) { gl_FragData[0] = vec4(0.0, 0.0, 0.0, 1.0); return; }
+  vec2 q = p * (1.0 + distortion * r2);
+  // The field edge (r = 1, q = 1 + k) meets the top of the rendered image.
+  vec2 uv = q / ((1.0 + distortion) * 2.0 * vec2(aspect, 1.0)) + 0.5;
+  if (uv.x < 0.0 || uv.x > 1.0 || uv.y < 0.0 || uv.y > 1.0) {
+    gl_FragData[0] = vec4(0.0, 0.0, 0.0, 1.0); return;
+  }
+  float z = eyeDepth(uv);
+  float radius = min(maxBlur, blurPerDioptre * abs(1.0 / z - focusDioptres));
+  vec4 sum = texture(colour, uv);
+  float weight = 1.0;
+  if (radius > 0.5) {
+    // One ring of eight taps at three quarters of the circle of confusion.
+    for (int i = 0; i < 8; ++i) {
+      float a = float(i) * 0.785398;
+      sum += texture(colour, uv + 0.75 * radius * vec2(cos(a), sin(a)) * pixel);
+      weight += 1.0;
+    }
+  }
+  vec3 rgb = sum.rgb / weight;
+  // The rod lens loses light towards the rim of the field (cos^4 law, gently).
+  float fall = 1.0 - 0.35 * r2 * r2;
+  gl_FragData[0] = vec4(rgb * fall, 1.0);
+)";
+
+}  // namespace
+
+EndoscopeLensPass::EndoscopeLensPass() = default;
+EndoscopeLensPass::~EndoscopeLensPass() = default;
+
+void EndoscopeLensPass::Render(const vtkRenderState* state) {
+  NumberOfRenderedProps = 0;
+  if (DelegatePass == nullptr) return;
+  vtkRenderer* renderer = state->GetRenderer();
+  auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
+  vtkOpenGLState* gl = window->GetState();
+
+  int size[2];
+  int origin[2];
+  renderer->GetTiledSizeAndOrigin(&size[0], &size[1], &origin[0], &origin[1]);
+  const int width = size[0], height = size[1];
+
+  if (!colour_) {
+    colour_ = vtkSmartPointer<vtkTextureObject>::New();
+    colour_->SetContext(window);
+  }
+  if (colour_->GetWidth() != static_cast<unsigned>(width) ||
+      colour_->GetHeight() != static_cast<unsigned>(height)) {
+    colour_->Create2D(static_cast<unsigned>(width), static_cast<unsigned>(height), 4,
+                      VTK_UNSIGNED_CHAR, false);
+  }
+  colour_->SetMinificationFilter(vtkTextureObject::Linear);
+  colour_->SetMagnificationFilter(vtkTextureObject::Linear);
+  colour_->SetWrapS(vtkTextureObject::ClampToEdge);
+  colour_->SetWrapT(vtkTextureObject::ClampToEdge);
+  if (!depth_) {
+    depth_ = vtkSmartPointer<vtkTextureObject>::New();
+    depth_->SetContext(window);
+  }
+  if (depth_->GetWidth() != static_cast<unsigned>(width) ||
+      depth_->GetHeight() != static_cast<unsigned>(height)) {
+    depth_->AllocateDepth(static_cast<unsigned>(width), static_cast<unsigned>(height),
+                          vtkTextureObject::Float32);
+  }
+  if (!framebuffer_) {
+    framebuffer_ = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+    framebuffer_->SetContext(window);
+  }
+
+  gl->PushFramebufferBindings();
+  RenderDelegate(state, width, height, width, height, framebuffer_, colour_, depth_);
+  gl->PopFramebufferBindings();
+
+  if (!quad_) {
+    std::string fragment = vtkOpenGLRenderUtilities::GetFullScreenQuadFragmentShaderTemplate();
+    vtkShaderProgram::Substitute(fragment, "//VTK::FSQ::Decl", kDeclarations);
+    vtkShaderProgram::Substitute(fragment, "//VTK::FSQ::Impl", kBody);
+    quad_ = std::make_unique<vtkOpenGLQuadHelper>(window, nullptr, fragment.c_str(), nullptr);
+  } else {
+    window->GetShaderCache()->ReadyShaderProgram(quad_->Program);
+  }
+  vtkShaderProgram* program = quad_->Program;
+  if (program == nullptr || !program->GetCompiled()) {
+    vtkErrorMacro("the endoscope lens shader did not compile");
+    return;
+  }
+
+  vtkOpenGLState::ScopedglEnableDisable blend(gl, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable depth_test(gl, GL_DEPTH_TEST);
+  gl->vtkglDisable(GL_BLEND);
+  gl->vtkglDisable(GL_DEPTH_TEST);
+  gl->vtkglViewport(origin[0], origin[1], width, height);
+  gl->vtkglScissor(origin[0], origin[1], width, height);
+
+  colour_->Activate();
+  depth_->Activate();
+  program->SetUniformi("colour", colour_->GetTextureUnit());
+  program->SetUniformi("depth", depth_->GetTextureUnit());
+  const float pixel[2] = {1.0f / static_cast<float>(width), 1.0f / static_cast<float>(height)};
+  program->SetUniform2f("pixel", pixel);
+  program->SetUniformf("aspect", static_cast<float>(width) / static_cast<float>(height));
+  const double* range = renderer->GetActiveCamera()->GetClippingRange();
+  program->SetUniformf("nearPlane", static_cast<float>(range[0]));
+  program->SetUniformf("farPlane", static_cast<float>(range[1]));
+  program->SetUniformf("distortion", static_cast<float>(distortion));
+  program->SetUniformf("focusDioptres", static_cast<float>(1.0 / focus_distance));
+  program->SetUniformf("blurPerDioptre", static_cast<float>(blur_per_dioptre));
+  program->SetUniformf("maxBlur", static_cast<float>(max_blur));
+  program->SetUniformi("fieldStop", field_stop ? 1 : 0);
+  quad_->Render();
+  depth_->Deactivate();
+  colour_->Deactivate();
+}
+
+void EndoscopeLensPass::ReleaseGraphicsResources(vtkWindow* window) {
+  Superclass::ReleaseGraphicsResources(window);
+  quad_.reset();
+  if (framebuffer_) framebuffer_->ReleaseGraphicsResources(window);
+  if (colour_) colour_->ReleaseGraphicsResources(window);
+  if (depth_) depth_->ReleaseGraphicsResources(window);
+}
+
+}  // namespace viscera::view

@@ -1,0 +1,58 @@
+#pragma once
+/// The optics of a rigid endoscope as one image-space render pass over the rendered scene:
+/// barrel distortion of the wide-angle rod lens, depth of field around the focus distance
+/// (seed 002 §4: the circle of confusion of an out-of-focus point, done as a post pass instead
+/// of the paper's jittered eye positions) and the round field stop of the eyepiece.
+///
+/// The delegate pass renders colour and depth into textures; one full-screen fragment shader
+/// then, for every output pixel at normalised radius r (1 = the edge of the round field),
+/// samples the scene at r (1 + k r²) (the inverse of the lens's barrel mapping), blurs it over
+/// a disc whose radius grows with |1/z − 1/f| (thin-lens circle of confusion, z the eye depth
+/// and f the focus distance, both in m) and paints black outside the field.
+
+#include <vtkDepthImageProcessingPass.h>
+#include <vtkSmartPointer.h>
+
+#include <memory>
+
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLQuadHelper;
+class vtkTextureObject;
+
+namespace viscera::view {
+
+/// Barrel distortion, depth of field and the round field stop of an endoscope's optics.
+class EndoscopeLensPass : public vtkDepthImageProcessingPass {
+ public:
+  static EndoscopeLensPass* New();
+  vtkTypeMacro(EndoscopeLensPass, vtkDepthImageProcessingPass)
+
+      /// Radial distortion coefficient k (dimensionless, ≥ 0; 0 is a pinhole camera).
+      double distortion = 0.2;
+  /// Distance of sharpest focus in m (InstrumentSpec::focus_distance).
+  double focus_distance = 0.015;
+  /// Blur radius in pixels per dioptre (1/m) of defocus |1/z − 1/f|; 0 disables depth of field.
+  double blur_per_dioptre = 0.06;
+  /// Largest blur radius in pixels.
+  double max_blur = 6.0;
+  /// Paint the outside of the round field black.
+  bool field_stop = true;
+
+  void Render(const vtkRenderState* state) override;
+  void ReleaseGraphicsResources(vtkWindow* window) override;
+
+  EndoscopeLensPass(const EndoscopeLensPass&) = delete;
+  void operator=(const EndoscopeLensPass&) = delete;
+
+ protected:
+  EndoscopeLensPass();
+  ~EndoscopeLensPass() override;
+
+ private:
+  vtkSmartPointer<vtkOpenGLFramebufferObject> framebuffer_;
+  vtkSmartPointer<vtkTextureObject> colour_;
+  vtkSmartPointer<vtkTextureObject> depth_;
+  std::unique_ptr<vtkOpenGLQuadHelper> quad_;
+};
+
+}  // namespace viscera::view

@@ -1,0 +1,145 @@
+#include "simulator/view/endoscopic_view.h"
+
+#include <vtkCamera.h>
+#include <vtkCameraPass.h>
+#include <vtkImageData.h>
+#include <vtkLight.h>
+#include <vtkRenderStepsPass.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkWindowToImageFilter.h>
+
+#include <cmath>
+
+#include "simulator/view/endoscope_lens_pass.h"
+#include "simulator/view/image_files.h"
+#include "simulator/view/scene_surfaces.h"
+
+namespace viscera::view {
+
+namespace {
+constexpr double kNearPlane = 0.0005;  // m: the optics see from half a millimetre
+constexpr double kFarPlane = 0.3;      // m
+}  // namespace
+
+EndoscopicView::EndoscopicView(const core::Scenario& scenario, const std::filesystem::path& package,
+                               const ViewOptions& options)
+    : scenario_(scenario), options_(options) {
+  surfaces_ = std::make_unique<SceneSurfaces>(scenario, package);
+  overlay_ = std::make_unique<SessionOverlay>(options.bindings);
+
+  window_ = vtkSmartPointer<vtkRenderWindow>::New();
+  window_->SetSize(options.width, options.height);
+  window_->SetOffScreenRendering(options.offscreen ? 1 : 0);
+  window_->SetWindowName("Viscera - endoscopic view");
+  window_->SetNumberOfLayers(2);
+  window_->SetMultiSamples(0);
+
+  scene_ = vtkSmartPointer<vtkRenderer>::New();
+  scene_->SetLayer(0);
+  scene_->SetBackground(0.0, 0.0, 0.0);
+  scene_->AutomaticLightCreationOff();
+  scene_->LightFollowCameraOff();
+  scene_->TwoSidedLightingOn();
+  surfaces_->add_to(scene_);
+
+  // The head light: a spot at the tip along the optics, dimming with distance.
+  light_ = vtkSmartPointer<vtkLight>::New();
+  light_->SetLightTypeToSceneLight();
+  light_->PositionalOn();
+  light_->SetIntensity(options.light_intensity);
+  light_->SetColor(1.0, 0.97, 0.92);
+  light_->SetConeAngle(scenario.session.instrument.field_of_view / 2.0 + 20.0);
+  light_->SetAttenuationValues(1.0, 0.0, 1.0 / (options.light_falloff * options.light_falloff));
+  scene_->AddLight(light_);
+
+  if (options.lens_effects) {
+    vtkNew<vtkRenderStepsPass> steps;
+    vtkNew<vtkCameraPass> camera;
+    camera->SetDelegatePass(steps);
+    lens_ = vtkSmartPointer<EndoscopeLensPass>::New();
+    lens_->SetDelegatePass(camera);
+    lens_->distortion = options.distortion;
+    lens_->focus_distance = scenario.session.instrument.focus_distance;
+    scene_->SetPass(lens_);
+  }
+
+  hud_ = vtkSmartPointer<vtkRenderer>::New();
+  hud_->SetLayer(1);
+  hud_->InteractiveOff();
+  overlay_->add_to(hud_);
+
+  window_->AddRenderer(scene_);
+  window_->AddRenderer(hud_);
+  set_instrument(sim::InstrumentState{}, scenario.session.instrument.optics_angle);
+}
+
+EndoscopicView::~EndoscopicView() {
+  if (window_) window_->Finalize();
+}
+
+void EndoscopicView::set_instrument(const sim::InstrumentState& state, double optics_angle) {
+  sim::InstrumentState pose = state;
+  sim::orthonormalise(pose);
+  const core::Vec3 direction = sim::view_direction(pose, optics_angle);
+  // The image's up: the instrument's up, made orthogonal to the line of sight.
+  core::Vec3 up = pose.up - pose.up.dot(direction) * direction;
+  if (up.norm() < 1e-9) up = pose.axis - pose.axis.dot(direction) * direction;
+  up.normalize();
+  const core::InstrumentSpec& optics = scenario_.session.instrument;
+  const core::Vec3 focus = pose.tip + optics.focus_distance * direction;
+  vtkCamera* camera = scene_->GetActiveCamera();
+  camera->SetPosition(pose.tip.data());
+  camera->SetFocalPoint(focus.data());
+  camera->SetViewUp(up.data());
+  camera->SetViewAngle(optics.field_of_view);
+  camera->SetClippingRange(kNearPlane, kFarPlane);
+  light_->SetPosition(pose.tip.data());
+  light_->SetFocalPoint(focus.data());
+}
+
+void EndoscopicView::update(const sim::SessionRunner& runner) {
+  surfaces_->update(runner.world());
+  const double angle = runner.instrument().optics_angle;
+  set_instrument(runner.instrument_state(), angle);
+  const sim::SessionReport& report = runner.report();
+  OverlayState state;
+  state.elapsed = runner.world().time();
+  state.time_limit = runner.time_limit();
+  state.force = runner.world().instrument_force();
+  state.force_warning = report.force_warning;
+  state.tip = runner.instrument_state().tip;
+  state.optics_angle = angle;
+  state.inflow = runner.instrument_state().inflow;
+  state.outflow = runner.instrument_state().outflow;
+  if (runner.coverage() != nullptr) state.surface_seen = runner.coverage()->fraction_seen();
+  const int step = runner.current_step();
+  if (step >= 0 && static_cast<std::size_t>(step) < report.procedure_steps.size()) {
+    const sim::StepResult& result = report.procedure_steps[static_cast<std::size_t>(step)];
+    state.step = result.name.empty() ? result.id : result.name;
+  }
+  if (runner.finished()) state.ended = report.end_reason;
+  overlay_->update(state);
+}
+
+void EndoscopicView::render() {
+  window_->Render();
+}
+
+vtkSmartPointer<vtkImageData> EndoscopicView::capture() {
+  render();
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window_);
+  grab->SetInputBufferTypeToRGB();
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->DeepCopy(grab->GetOutput());
+  return image;
+}
+
+void EndoscopicView::write_png(const std::filesystem::path& path) {
+  write_file_atomically(path, encode_png(capture()));
+}
+
+}  // namespace viscera::view

@@ -1,0 +1,79 @@
+#pragma once
+/// The endoscopic view of a session (seed 000 §7, seed 002 §4–§6): the scene seen from the
+/// instrument tip through angled optics (0°, 12°, 30°), lit by a head light at the tip, through
+/// the lens pass (barrel distortion, depth of field, round field stop), with the force bars and
+/// the session-info panel on top. A VTK render window, on screen or offscreen (X only: offscreen
+/// still needs an X server, e.g. Xvfb). Headless sessions never construct one.
+
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
+
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "core/scenario/scenario.h"
+#include "simulator/session/instrument_state.h"
+#include "simulator/session/session_runner.h"
+#include "simulator/view/session_overlay.h"
+
+class vtkImageData;
+class vtkLight;
+
+namespace viscera::view {
+
+class EndoscopeLensPass;
+class SceneSurfaces;
+
+/// How the view is set up.
+struct ViewOptions {
+  int width = 1280, height = 720;  ///< pixels
+  bool offscreen = false;          ///< render without showing a window
+  bool lens_effects = true;        ///< barrel distortion, depth of field, field stop
+  double distortion = 0.2;         ///< barrel coefficient k (EndoscopeLensPass)
+  std::string bindings;            ///< key bindings shown in the window ("" : none)
+  double light_intensity = 1.4;    ///< head light
+  double light_falloff = 0.03;     ///< m at which the head light has dimmed to half
+};
+
+/// The endoscopic image of one scenario.
+class EndoscopicView {
+ public:
+  /// Builds the scene from the package's surfaces and textures. Throws core::InputError when a
+  /// texture cannot be read.
+  EndoscopicView(const core::Scenario& scenario, const std::filesystem::path& package,
+                 const ViewOptions& options);
+  ~EndoscopicView();
+  EndoscopicView(const EndoscopicView&) = delete;
+  EndoscopicView& operator=(const EndoscopicView&) = delete;
+
+  /// Puts the camera at the tip looking along the optics (view_direction(state, angle)), with
+  /// `state.up` as the image's up; focus and field of view from the scenario's instrument.
+  void set_instrument(const sim::InstrumentState& state, double optics_angle);
+  /// Surfaces, camera and overlay from a running session.
+  void update(const sim::SessionRunner& runner);
+  void render();
+
+  /// RGB pixels of the current frame (renders first).
+  vtkSmartPointer<vtkImageData> capture();
+  /// Writes the current frame as PNG through a temporary sibling; throws core::OutputError.
+  void write_png(const std::filesystem::path& path);
+
+  vtkRenderWindow* window() const { return window_; }
+  vtkRenderer* scene_renderer() const { return scene_; }
+  SessionOverlay& overlay() { return *overlay_; }
+  const SceneSurfaces& surfaces() const { return *surfaces_; }
+
+ private:
+  const core::Scenario& scenario_;
+  ViewOptions options_;
+  vtkSmartPointer<vtkRenderWindow> window_;
+  vtkSmartPointer<vtkRenderer> scene_, hud_;
+  vtkSmartPointer<vtkLight> light_;
+  vtkSmartPointer<EndoscopeLensPass> lens_;
+  std::unique_ptr<SceneSurfaces> surfaces_;
+  std::unique_ptr<SessionOverlay> overlay_;
+};
+
+}  // namespace viscera::view

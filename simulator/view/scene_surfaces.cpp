@@ -1,0 +1,235 @@
+#include "simulator/view/scene_surfaces.h"
+
+#include <vtkActor.h>
+#include <vtkCellArray.h>
+#include <vtkFloatArray.h>
+#include <vtkImageData.h>
+#include <vtkPNGReader.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderer.h>
+#include <vtkTexture.h>
+
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "core/error.h"
+#include "core/mesh/surface_embedding.h"
+#include "core/package/scenario_package.h"
+#include "core/package/zip_archive.h"
+
+namespace viscera::view {
+
+std::string read_package_file(const std::filesystem::path& package, const std::string& name) {
+  if (std::filesystem::is_directory(package)) {
+    std::ifstream in(package / name, std::ios::binary);
+    if (!in) throw core::InputError("cannot open", {(package / name).string(), "", ""});
+    std::ostringstream bytes;
+    bytes << in.rdbuf();
+    return bytes.str();
+  }
+  return core::read_zip_entry(package, name, {core::kMaxZipEntryBytes, core::kMaxPackageBytes});
+}
+
+vtkSmartPointer<vtkImageData> decode_png(const std::string& bytes, const std::string& what) {
+  static constexpr unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  if (bytes.size() < 8 || bytes.compare(0, 8, reinterpret_cast<const char*>(kSignature), 8) != 0)
+    throw core::InputError("is not a PNG image", {what, "", ""});
+  vtkNew<vtkPNGReader> reader;
+  reader->SetMemoryBuffer(bytes.data());
+  reader->SetMemoryBufferLength(static_cast<vtkIdType>(bytes.size()));
+  reader->Update();
+  vtkSmartPointer<vtkImageData> image = reader->GetOutput();
+  int dims[3];
+  image->GetDimensions(dims);
+  if (dims[0] <= 0 || dims[1] <= 0 || image->GetNumberOfScalarComponents() < 3)
+    throw core::InputError("is not an RGB PNG image", {what, "", ""});
+  return image;
+}
+
+std::array<double, 3> mean_colour(vtkImageData* image) {
+  std::array<double, 3> sum{0.0, 0.0, 0.0};
+  vtkDataArray* scalars = image->GetPointData()->GetScalars();
+  const vtkIdType n = scalars->GetNumberOfTuples();
+  for (vtkIdType i = 0; i < n; ++i)
+    for (int c = 0; c < 3; ++c)
+      sum[static_cast<std::size_t>(c)] += scalars->GetComponent(i, c);
+  for (double& s : sum)
+    s /= static_cast<double>(std::max<vtkIdType>(1, n));
+  return sum;
+}
+
+struct SceneSurfaces::Surface {
+  std::string id;
+  vtkSmartPointer<vtkPolyData> mesh;
+  vtkSmartPointer<vtkActor> actor;
+  vtkSmartPointer<vtkImageData> texture;
+  std::string body;  ///< name of the world body it follows, or ""
+  const core::SurfaceEmbedding* embedding = nullptr;
+  std::vector<core::Tetrahedron> tets;
+  std::vector<core::Triangle> triangles;
+  std::vector<int> weld;  ///< per vertex, the first vertex at the same rest position (UV seams)
+};
+
+namespace {
+
+/// Per vertex, the first vertex with bit-identical coordinates: texture atlases split vertices
+/// along seams, and their normals must still agree or the seams show as creases.
+std::vector<int> weld_map(const std::vector<core::Vec3>& points) {
+  std::map<std::array<double, 3>, int> first;
+  std::vector<int> weld(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const auto [it, inserted] =
+        first.try_emplace({points[i].x(), points[i].y(), points[i].z()}, static_cast<int>(i));
+    weld[i] = it->second;
+  }
+  return weld;
+}
+
+/// Writes positions and area-weighted unit normals (shared across welded vertices) into `mesh`.
+void set_geometry(vtkPolyData* mesh, const std::vector<core::Vec3>& points,
+                  const std::vector<core::Triangle>& triangles, const std::vector<int>& weld) {
+  vtkPoints* positions = mesh->GetPoints();
+  positions->SetNumberOfPoints(static_cast<vtkIdType>(points.size()));
+  for (std::size_t i = 0; i < points.size(); ++i)
+    positions->SetPoint(static_cast<vtkIdType>(i), points[i].data());
+  positions->Modified();
+  std::vector<core::Vec3> normals(points.size(), core::Vec3::Zero());
+  for (const core::Triangle& t : triangles) {
+    const core::Vec3 n =
+        (points[static_cast<std::size_t>(t[1])] - points[static_cast<std::size_t>(t[0])])
+            .cross(points[static_cast<std::size_t>(t[2])] - points[static_cast<std::size_t>(t[0])]);
+    for (int v : t)
+      normals[static_cast<std::size_t>(weld[static_cast<std::size_t>(v)])] += n;
+  }
+  for (std::size_t i = 0; i < normals.size(); ++i)
+    normals[i] = normals[static_cast<std::size_t>(weld[i])];
+  auto* array = vtkFloatArray::SafeDownCast(mesh->GetPointData()->GetNormals());
+  array->SetNumberOfTuples(static_cast<vtkIdType>(points.size()));
+  for (std::size_t i = 0; i < normals.size(); ++i) {
+    const double length = normals[i].norm();
+    const core::Vec3 n = length > 0.0 ? core::Vec3(normals[i] / length) : core::Vec3::UnitZ();
+    array->SetTuple3(static_cast<vtkIdType>(i), n.x(), n.y(), n.z());
+  }
+  array->Modified();
+  mesh->Modified();
+}
+
+vtkSmartPointer<vtkPolyData> make_mesh(const std::vector<core::Vec3>& points,
+                                       const std::vector<core::Triangle>& triangles,
+                                       const std::vector<core::Vec2>& uvs,
+                                       const std::vector<int>& weld) {
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->SetPoints(vtkNew<vtkPoints>());
+  vtkNew<vtkCellArray> polys;
+  for (const core::Triangle& t : triangles) {
+    const vtkIdType ids[3] = {t[0], t[1], t[2]};
+    polys->InsertNextCell(3, ids);
+  }
+  mesh->SetPolys(polys);
+  vtkNew<vtkFloatArray> normals;
+  normals->SetNumberOfComponents(3);
+  normals->SetName("Normals");
+  mesh->GetPointData()->SetNormals(normals);
+  if (uvs.size() == points.size()) {
+    vtkNew<vtkFloatArray> tcoords;
+    tcoords->SetNumberOfComponents(2);
+    tcoords->SetName("TextureCoordinates");
+    tcoords->SetNumberOfTuples(static_cast<vtkIdType>(uvs.size()));
+    for (std::size_t i = 0; i < uvs.size(); ++i)
+      tcoords->SetTuple2(static_cast<vtkIdType>(i), uvs[i].x(), uvs[i].y());
+    mesh->GetPointData()->SetTCoords(tcoords);
+  }
+  set_geometry(mesh, points, triangles, weld);
+  return mesh;
+}
+
+}  // namespace
+
+SceneSurfaces::SceneSurfaces(const core::Scenario& scenario, const std::filesystem::path& package) {
+  for (const core::SceneObject& object : scenario.objects) {
+    if (object.role == core::ObjectRole::Instrument) continue;
+    const bool simulated = object.body_kind == core::BodyKind::TetMesh ||
+                           object.body_kind == core::BodyKind::MassSpring;
+    Surface surface;
+    surface.id = object.id;
+    if (!object.surface.triangles.empty()) {
+      surface.triangles = object.surface.triangles;
+      surface.weld = weld_map(object.surface.vertices);
+      surface.mesh = make_mesh(object.surface.vertices, object.surface.triangles,
+                               object.surface.uvs, surface.weld);
+      if (simulated && !object.embedding.empty() &&
+          object.embedding.tet.size() == object.surface.vertices.size()) {
+        surface.body = object.id;
+        surface.embedding = &object.embedding;
+        surface.tets = object.body.tets;
+      }
+    } else {
+      continue;  // nothing visible: a body without a surface is shown through its organ
+    }
+    if (const auto it = scenario.textures.find(object.texture); it != scenario.textures.end()) {
+      if (const auto map = it->second.maps.find("albedo"); map != it->second.maps.end()) {
+        const std::string what = (package / map->second).string();
+        surface.texture = decode_png(read_package_file(package, map->second), what);
+      }
+    }
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputData(surface.mesh);
+    mapper->ScalarVisibilityOff();
+    surface.actor = vtkSmartPointer<vtkActor>::New();
+    surface.actor->SetMapper(mapper);
+    vtkProperty* property = surface.actor->GetProperty();
+    // Wet mucosa under a head light: mostly diffuse with a tight specular highlight.
+    property->SetAmbient(0.08);
+    property->SetDiffuse(0.9);
+    property->SetSpecular(0.25);
+    property->SetSpecularPower(30.0);
+    property->SetColor(0.85, 0.55, 0.5);
+    if (surface.texture) {
+      if (surface.mesh->GetPointData()->GetTCoords() != nullptr) {
+        vtkNew<vtkTexture> texture;
+        texture->SetInputData(surface.texture);
+        texture->InterpolateOn();
+        texture->RepeatOn();
+        texture->MipmapOff();
+        surface.actor->SetTexture(texture);
+        property->SetColor(1.0, 1.0, 1.0);
+      } else {
+        const auto mean = mean_colour(surface.texture);
+        property->SetColor(mean[0] / 255.0, mean[1] / 255.0, mean[2] / 255.0);
+      }
+    }
+    surfaces_.push_back(std::move(surface));
+  }
+}
+
+SceneSurfaces::~SceneSurfaces() = default;
+
+void SceneSurfaces::add_to(vtkRenderer* renderer) const {
+  for (const Surface& surface : surfaces_)
+    renderer->AddActor(surface.actor);
+}
+
+void SceneSurfaces::update(const sim::World& world) {
+  for (Surface& surface : surfaces_) {
+    if (surface.body.empty()) continue;
+    for (const sim::DeformableBody& body : world.bodies()) {
+      if (body.name() != surface.body) continue;
+      set_geometry(surface.mesh,
+                   core::embedded_positions(*surface.embedding, surface.tets, body.positions()),
+                   surface.triangles, surface.weld);
+    }
+  }
+}
+
+vtkImageData* SceneSurfaces::texture_of(const std::string& id) const {
+  for (const Surface& surface : surfaces_)
+    if (surface.id == id) return surface.texture;
+  return nullptr;
+}
+
+}  // namespace viscera::view

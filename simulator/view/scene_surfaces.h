@@ -1,0 +1,53 @@
+#pragma once
+/// The package's visible surfaces as VTK actors: one textured actor per scene object with a
+/// surface (seed 000 §7: the organ surfaces carry the package's albedo textures), following
+/// the simulated bodies as they deform (each surface vertex rides on its embedding tet, or is
+/// the body's own surface node).
+
+#include <vtkSmartPointer.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "core/scenario/scenario.h"
+#include "simulator/world/world.h"
+
+class vtkActor;
+class vtkImageData;
+class vtkPolyData;
+class vtkRenderer;
+
+namespace viscera::view {
+
+/// The bytes of a file inside a package folder or .vscz; throws core::InputError naming it.
+std::string read_package_file(const std::filesystem::path& package, const std::string& name);
+
+/// Decodes a PNG held in memory; throws core::InputError naming `what` when it is not one.
+vtkSmartPointer<vtkImageData> decode_png(const std::string& bytes, const std::string& what);
+
+/// Mean RGB (0…255) of an image's first three components.
+std::array<double, 3> mean_colour(vtkImageData* image);
+
+/// Actors of every object that has a surface (instruments excepted).
+class SceneSurfaces {
+ public:
+  /// Builds the actors and loads each object's albedo texture from `package`. Throws
+  /// core::InputError when a texture file cannot be read or decoded.
+  SceneSurfaces(const core::Scenario& scenario, const std::filesystem::path& package);
+  ~SceneSurfaces();
+
+  /// Adds every actor to `renderer`.
+  void add_to(vtkRenderer* renderer) const;
+  /// Moves the surfaces to the bodies' current positions (objects without a body stay put).
+  void update(const sim::World& world);
+
+  /// The albedo texture of object `id`, or null.
+  vtkImageData* texture_of(const std::string& id) const;
+
+ private:
+  struct Surface;
+  std::vector<Surface> surfaces_;
+};
+
+}  // namespace viscera::view

@@ -1,0 +1,70 @@
+// Headless training sessions on the hysteroscopy template (issue 8 point 9): a 10-minute session
+// of the expert's tour (data/scripts/hysteroscopy-expert.json repeated, free navigation) and the
+// novice's 10.5 s session that presses the wall. Counter real_time_factor = simulated / wall s.
+
+#include <benchmark/benchmark.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "simulator/session/headless_session.h"
+#include "templates/template_catalog.h"
+
+namespace {
+
+const viscera::core::Scenario& patient() {
+  static const viscera::core::Scenario scenario =
+      viscera::templates::build_from_template("hysteroscopy", {}, 1);
+  return scenario;
+}
+
+nlohmann::json script(const std::string& who) {
+  std::ifstream in(std::string(VISCERA_SOURCE_DIR) + "/data/scripts/hysteroscopy-" + who + ".json");
+  return nlohmann::json::parse(in);
+}
+
+/// The script repeated back to back until `seconds`.
+nlohmann::json repeated(nlohmann::json tour, double seconds) {
+  const nlohmann::json once = tour["waypoints"];
+  const double length = once.back()["t"].get<double>() + 0.5;
+  nlohmann::json waypoints = nlohmann::json::array();
+  for (double offset = 0.0; offset < seconds; offset += length) {
+    for (auto point : once) {
+      point["t"] = point["t"].get<double>() + offset;
+      waypoints.push_back(point);
+    }
+  }
+  tour["waypoints"] = waypoints;
+  return tour;
+}
+
+void run(benchmark::State& state, const nlohmann::json& json, double duration) {
+  const auto input = viscera::sim::ScriptedTrajectory::from_json(json, "script", 30.0);
+  viscera::sim::HeadlessRunOptions options;
+  options.duration = duration;
+  options.instrument = &input;
+  options.instrument_body = input.body();
+  options.instrument_stiffness = input.stiffness();
+  options.force_warning = input.force_warning();
+  double simulated = 0.0, wall = 0.0;
+  for (auto _ : state) {
+    const auto report = viscera::sim::run_headless(patient(), options);
+    simulated += report.simulated_time;
+    wall += report.wall_time;
+    state.counters["contacts"] = report.metrics.contacts();
+  }
+  state.counters["real_time_factor"] = wall > 0.0 ? simulated / wall : 0.0;
+}
+
+void BM_HysteroscopySessionExpert10min(benchmark::State& state) {
+  run(state, repeated(script("expert"), 600.0), 600.0);
+}
+BENCHMARK(BM_HysteroscopySessionExpert10min)->Iterations(1)->Unit(benchmark::kSecond);
+
+void BM_HysteroscopySessionNovicePressing(benchmark::State& state) {
+  const auto json = script("novice");
+  run(state, json, json["waypoints"].back()["t"].get<double>());
+}
+BENCHMARK(BM_HysteroscopySessionNovicePressing)->Iterations(1)->Unit(benchmark::kSecond);
+
+}  // namespace

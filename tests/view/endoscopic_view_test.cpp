@@ -1,0 +1,129 @@
+// The endoscopic view rendered offscreen (under Xvfb) on a real hysteroscopy package: the
+// textured organ is in the picture, angled optics look elsewhere, the lens pass distorts and
+// stops the field, and the overlay warns about force as seed 002 §5.2 says.
+
+#include "simulator/view/endoscopic_view.h"
+
+#include <gtest/gtest.h>
+#include <vtkImageData.h>
+#include <vtkPointData.h>
+
+#include <cmath>
+#include <fstream>
+
+#include "core/package/scenario_package.h"
+#include "simulator/session/manual_control.h"
+#include "simulator/view/scene_surfaces.h"
+#include "tests/support/command_runner.h"
+#include "tests/support/test_paths.h"
+#include "tests/view/view_fixtures.h"
+
+namespace viscera {
+namespace {
+
+using testing::frame_statistics;
+using testing::FrameStatistics;
+
+view::ViewOptions offscreen(bool lens) {
+  view::ViewOptions options;
+  options.width = 640;
+  options.height = 360;
+  options.offscreen = true;
+  options.lens_effects = lens;
+  return options;
+}
+
+TEST(EndoscopicView, shows_the_textured_organ_from_the_starting_pose) {
+  const auto& patient = testing::hysteroscopy_patient();
+  view::EndoscopicView view(patient.scenario, patient.package, offscreen(false));
+  const double angle = patient.scenario.session.instrument.optics_angle;
+  view.set_instrument(sim::starting_pose(patient.scenario, angle), angle);
+  const auto frame = view.capture();
+  int dims[3];
+  frame->GetDimensions(dims);
+  EXPECT_EQ(dims[0], 640);
+  EXPECT_EQ(dims[1], 360);
+  const FrameStatistics stats = frame_statistics(frame, 0.9);
+  // Lit tissue fills the field (not a blank frame), with the texture's detail in it.
+  EXPECT_GT(stats.lit_fraction, 0.8);
+  EXPECT_GT(stats.mean_luminance, 25.0);
+  EXPECT_GT(stats.luminance_stddev, 4.0);
+  // Its hue is the texture's: the chromaticity (r, g, b)/(r+g+b) of the frame is close to
+  // that of the organ's albedo map (the head light is white, so shading only scales it).
+  vtkImageData* albedo = nullptr;
+  for (const auto& object : patient.scenario.objects)
+    if (albedo == nullptr) albedo = view.surfaces().texture_of(object.id);
+  ASSERT_NE(albedo, nullptr) << "the hysteroscopy package carries an albedo texture";
+  const auto texture = view::mean_colour(albedo);
+  const double texture_sum = texture[0] + texture[1] + texture[2];
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_NEAR(stats.chromaticity[static_cast<std::size_t>(c)],
+                texture[static_cast<std::size_t>(c)] / texture_sum, 0.06)
+        << "channel " << c;
+  }
+}
+
+TEST(EndoscopicView, angled_optics_look_elsewhere_from_the_same_pose) {
+  const auto& patient = testing::hysteroscopy_patient();
+  view::EndoscopicView view(patient.scenario, patient.package, offscreen(false));
+  const sim::InstrumentState pose = sim::starting_pose(patient.scenario, 0.0);
+  view.set_instrument(pose, 0.0);
+  const auto straight = view.capture();
+  view.set_instrument(pose, 12.0);
+  const auto twelve = view.capture();
+  view.set_instrument(pose, 30.0);
+  const auto thirty = view.capture();
+  const double d12 = testing::mean_abs_difference(straight, twelve);
+  const double d30 = testing::mean_abs_difference(straight, thirty);
+  EXPECT_GT(d12, 2.0);
+  EXPECT_GT(d30, d12) << "a steeper angle moves the picture further";
+  // The same optics from the same pose give the same picture.
+  view.set_instrument(pose, 0.0);
+  EXPECT_LT(testing::mean_abs_difference(straight, view.capture()), 0.01);
+}
+
+TEST(EndoscopicView, lens_pass_stops_the_field_and_distorts_the_image) {
+  const auto& patient = testing::hysteroscopy_patient();
+  const double angle = patient.scenario.session.instrument.optics_angle;
+  const sim::InstrumentState pose = sim::starting_pose(patient.scenario, angle);
+  view::EndoscopicView plain(patient.scenario, patient.package, offscreen(false));
+  plain.set_instrument(pose, angle);
+  const auto pinhole = plain.capture();
+  view::EndoscopicView lens(patient.scenario, patient.package, offscreen(true));
+  lens.set_instrument(pose, angle);
+  const auto optics = lens.capture();
+  // Outside the round field (the corners) the endoscope shows black; inside, tissue.
+  EXPECT_LT(testing::corner_luminance(optics), 1.0);
+  EXPECT_GT(testing::corner_luminance(pinhole), 5.0);
+  const FrameStatistics inside = frame_statistics(optics, 0.9);
+  EXPECT_GT(inside.lit_fraction, 0.8);
+  // Distortion and blur change the picture inside the field too.
+  EXPECT_GT(testing::mean_abs_difference(pinhole, optics, 0.9), 2.0);
+}
+
+TEST(SessionOverlay, force_bars_fill_and_warn_as_the_force_nears_the_limit) {
+  EXPECT_EQ(view::force_alert(0.5, 1.0), "");
+  EXPECT_EQ(view::force_alert(0.9, 1.0), "approaching");
+  EXPECT_EQ(view::force_alert(1.2, 1.0), "excessive");
+  EXPECT_EQ(view::force_alert(5.0, 0.0), "") << "no warning level, no warning";
+  view::SessionOverlay overlay("");
+  view::OverlayState state;
+  state.force = core::Vec3(0.3, 0.0, -0.4);
+  state.force_warning = 1.0;
+  state.elapsed = 12.5;
+  state.tip = core::Vec3(0.001, 0.002, 0.003);
+  overlay.update(state);
+  EXPECT_NEAR(overlay.bar_fill()[0], 0.3 / 1.5, 1e-12);
+  EXPECT_NEAR(overlay.bar_fill()[2], 0.4 / 1.5, 1e-12);
+  EXPECT_NEAR(overlay.bar_fill()[3], 0.5 / 1.5, 1e-12);
+  EXPECT_EQ(overlay.warning_text(), "");
+  EXPECT_NE(overlay.info_text().find("12.5 s"), std::string::npos) << overlay.info_text();
+  EXPECT_NE(overlay.info_text().find("+1.0   +2.0   +3.0 mm"), std::string::npos)
+      << overlay.info_text();
+  state.force = core::Vec3(0.0, 0.0, 1.3);
+  overlay.update(state);
+  EXPECT_NE(overlay.warning_text().find("EXCESSIVE"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace viscera

@@ -1,0 +1,102 @@
+// The HTML report of real sessions: a novice's page set against the expert's report references
+// only images that exist and are PNGs drawn by VTK's charts, and marks every comparable metric.
+
+#include "simulator/report/html_report.h"
+
+#include <gtest/gtest.h>
+#include <vtkImageData.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "core/error.h"
+#include "simulator/session/headless_session.h"
+#include "simulator/view/scene_surfaces.h"
+#include "tests/simulator/session_fixtures.h"
+#include "tests/support/test_paths.h"
+#include "tests/view/view_fixtures.h"
+
+namespace viscera::report {
+namespace {
+
+nlohmann::json scripted_report(const nlohmann::json& script) {
+  static const core::Scenario scenario = viscera::testing::cavity_scenario();
+  const auto input = sim::ScriptedTrajectory::from_json(script, "script");
+  sim::HeadlessRunOptions options;
+  options.duration = input.duration() + 1.0;
+  options.instrument = &input;
+  options.instrument_body = "uterus";
+  return sim::report_to_json(sim::run_headless(scenario, options));
+}
+
+std::string read_bytes(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream out;
+  out << in.rdbuf();
+  return out.str();
+}
+
+TEST(MetricComparison, follows_the_direction_of_each_metric) {
+  const auto find = [](const std::string& key) {
+    for (const auto& m : report_metrics())
+      if (m.key == key) return m;
+    throw std::runtime_error(key);
+  };
+  EXPECT_EQ(compare_metric(find("path_length"), 0.1, 0.2), "better");
+  EXPECT_EQ(compare_metric(find("path_length"), 0.3, 0.2), "worse");
+  EXPECT_EQ(compare_metric(find("surface_seen"), 0.3, 0.2), "better");
+  EXPECT_EQ(compare_metric(find("contacts"), 4, 4), "equal");
+}
+
+TEST(HtmlReport, novice_page_against_the_expert_references_existing_plots) {
+  const nlohmann::json expert = scripted_report(viscera::testing::expert_cavity_script());
+  const nlohmann::json novice = scripted_report(viscera::testing::novice_cavity_script());
+  const auto dir = viscera::testing::scratch_dir();
+  const auto written = write_html_report(novice, &expert, dir);
+  ASSERT_EQ(written.front(), dir / "report.html");
+  const std::string html = read_bytes(dir / "report.html");
+  const auto images = referenced_images(html);
+  ASSERT_EQ(images.size(), 4u);
+  for (const std::string& image : images) {
+    SCOPED_TRACE(image);
+    EXPECT_EQ(image.find('/'), std::string::npos) << "images sit beside the page";
+    const std::string bytes = read_bytes(dir / image);
+    ASSERT_GT(bytes.size(), 2000u);
+    const auto png = view::decode_png(bytes, image);
+    int dims[3];
+    png->GetDimensions(dims);
+    EXPECT_EQ(dims[0], 820);
+    EXPECT_EQ(dims[1], 480);
+    // A chart, not a blank page: white background with drawn marks of several colours.
+    const auto stats = viscera::testing::frame_statistics(png, 0.0);
+    EXPECT_GT(stats.luminance_stddev, 10.0);
+  }
+  // The path plot colours samples by wall distance: red near the wall and blue far from it.
+  const auto path = view::decode_png(read_bytes(dir / "path_xy.png"), "path_xy.png");
+  int red = 0, blue = 0;
+  const auto* p = static_cast<const unsigned char*>(path->GetScalarPointer());
+  const int channels = path->GetNumberOfScalarComponents();
+  for (vtkIdType i = 0; i < path->GetNumberOfPoints(); ++i, p += channels) {
+    if (p[0] > 180 && p[1] < 90 && p[2] < 90) ++red;
+    if (p[2] > 180 && p[0] < 90) ++blue;
+  }
+  EXPECT_GT(red, 20);
+  EXPECT_GT(blue, 20);
+  // Every metric with values on both sides is judged; the novice loses on collisions.
+  EXPECT_NE(html.find("<td>Tool-wall collisions</td>"), std::string::npos);
+  const std::size_t row = html.find("Tool-wall collisions");
+  ASSERT_NE(row, std::string::npos);
+  const std::string collisions = html.substr(row, html.find("</tr>", row) - row);
+  EXPECT_NE(collisions.find("class=\"worse\""), std::string::npos) << collisions;
+  EXPECT_NE(html.find("Reference score"), std::string::npos);
+}
+
+TEST(HtmlReport, refuses_what_is_not_a_session_report) {
+  const auto dir = viscera::testing::scratch_dir();
+  EXPECT_THROW(write_html_report(nlohmann::json{{"format", "other"}}, nullptr, dir),
+               core::InputError);
+  EXPECT_FALSE(std::filesystem::exists(dir / "report.html"));
+}
+
+}  // namespace
+}  // namespace viscera::report

@@ -1,0 +1,46 @@
+#include "importers/meshing/label_body.h"
+
+#include <algorithm>
+#include <chrono>
+
+namespace viscera::importers {
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+LabelBody mesh_label_body(const core::LabelMap& labels, const LabelBodyOptions& options,
+                          const std::string& what, core::Progress& progress) {
+  LabelBody result;
+  auto start = std::chrono::steady_clock::now();
+  result.surface = label_surface(labels, options.tets.label, options.surface, what, progress);
+  result.seconds["surface"] = seconds_since(start);
+
+  start = std::chrono::steady_clock::now();
+  result.body = mesh_label_map(labels, options.tets, what, progress, &result.criteria);
+  result.seconds["tets"] = seconds_since(start);
+
+  start = std::chrono::steady_clock::now();
+  progress.check_cancelled();
+  result.embedding = core::embed_points(result.surface.mesh.vertices, result.body);
+  result.seconds["embedding"] = seconds_since(start);
+
+  start = std::chrono::steady_clock::now();
+  result.quality = core::tet_quality(result.body, options.quality);
+  result.seconds["quality"] = seconds_since(start);
+  return result;
+}
+
+double embedding_error(const core::SurfaceMesh& surface, const core::SurfaceEmbedding& embedding,
+                       const core::TetMesh& body) {
+  const auto rebuilt = core::embedded_positions(embedding, body.tets, body.nodes);
+  double worst = 0.0;
+  for (std::size_t v = 0; v < rebuilt.size(); ++v)
+    worst = std::max(worst, (rebuilt[v] - surface.vertices[v]).norm());
+  return worst;
+}
+
+}  // namespace viscera::importers

@@ -10,6 +10,7 @@
 #include <vtkWindowedSincPolyDataFilter.h>
 
 #include <algorithm>
+#include <chrono>
 
 #include "core/error.h"
 #include "importers/meshing/label_crop.h"
@@ -65,6 +66,14 @@ core::SurfaceMesh to_world(vtkPolyData& polydata, const core::LabelMap& labels,
   return mesh;
 }
 
+/// Seconds since `start`, and restarts it.
+double lap(std::chrono::steady_clock::time_point& start) {
+  const auto now = std::chrono::steady_clock::now();
+  const double seconds = std::chrono::duration<double>(now - start).count();
+  start = now;
+  return seconds;
+}
+
 }  // namespace
 
 LabelSurface label_surface(const core::LabelMap& labels, int label,
@@ -76,6 +85,7 @@ LabelSurface label_surface(const core::LabelMap& labels, int label,
   progress.begin_stage("label " + std::to_string(label) + " surface", 4);
   LabelSurface result;
   result.label = label;
+  auto clock = std::chrono::steady_clock::now();
   // One voxel of background on each side closes surfaces that touch the map's border.
   const LabelCrop crop = crop_labels(labels, label, 1, what);
   const auto image = indicator_image(labels, crop);
@@ -89,6 +99,7 @@ LabelSurface label_surface(const core::LabelMap& labels, int label,
   contour->Update();
   vtkSmartPointer<vtkPolyData> surface = contour->GetOutput();
   result.extracted_triangles = static_cast<std::size_t>(surface->GetNumberOfPolys());
+  result.seconds["contour"] = lap(clock);
   progress.step();
 
   if (options.smoothing_iterations > 0) {
@@ -103,6 +114,7 @@ LabelSurface label_surface(const core::LabelMap& labels, int label,
     smoother->Update();
     surface = smoother->GetOutput();
   }
+  result.seconds["smoothing"] = lap(clock);
   progress.step();
 
   if (options.target_triangles > 0 && options.target_triangles < result.extracted_triangles) {
@@ -114,6 +126,7 @@ LabelSurface label_surface(const core::LabelMap& labels, int label,
     decimate->Update();
     surface = decimate->GetOutput();
   }
+  result.seconds["decimation"] = lap(clock);
   progress.step();
 
   result.mesh = to_world(*surface, labels, crop);
@@ -126,6 +139,7 @@ LabelSurface label_surface(const core::LabelMap& labels, int label,
                                             : "surface of label " + std::to_string(label)});
   }
   core::compute_vertex_normals(result.mesh);
+  result.seconds["repair"] = lap(clock);
   progress.step();
   return result;
 }

@@ -7,6 +7,7 @@
 /// repairs of closed_surface_repair.h.
 
 #include <cstddef>
+#include <map>
 #include <string>
 
 #include "core/image/image_volume.h"
@@ -32,6 +33,8 @@ struct LabelSurface {
   core::SurfaceMesh mesh;  ///< in m, world frame of the map, outward, unit vertex normals
   std::size_t extracted_triangles = 0;  ///< triangles from flying edges, before decimation
   SurfaceRepairReport repair;
+  /// Wall-clock seconds per step: "contour", "smoothing", "decimation", "repair".
+  std::map<std::string, double> seconds;
 };
 
 /// The surface of the voxels whose label is `label` (every label other than 0 when `label` is

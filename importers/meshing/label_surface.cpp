@@ -117,29 +117,44 @@ LabelSurface label_surface(const core::LabelMap& labels, int label,
   result.seconds["smoothing"] = lap(clock);
   progress.step();
 
-  if (options.target_triangles > 0 && options.target_triangles < result.extracted_triangles) {
-    auto decimate = vtkSmartPointer<vtkQuadricDecimation>::New();
-    decimate->SetInputData(surface);
-    decimate->SetTargetReduction(1.0 - static_cast<double>(options.target_triangles) /
-                                           static_cast<double>(result.extracted_triangles));
-    decimate->VolumePreservationOn();
-    decimate->Update();
-    surface = decimate->GetOutput();
+  // Quadric decimation does not guard against folds: when it leaves self-intersections that
+  // local repair cannot remove, decimate again to twice the budget (the smoothed surface itself
+  // is the last resort).
+  const vtkSmartPointer<vtkPolyData> smoothed = surface;
+  std::size_t budget = options.target_triangles;
+  for (;;) {
+    const bool decimating = budget > 0 && budget < result.extracted_triangles;
+    surface = smoothed;
+    if (decimating) {
+      auto decimate = vtkSmartPointer<vtkQuadricDecimation>::New();
+      decimate->SetInputData(smoothed);
+      decimate->SetTargetReduction(1.0 - static_cast<double>(budget) /
+                                             static_cast<double>(result.extracted_triangles));
+      decimate->VolumePreservationOn();
+      decimate->Update();
+      surface = decimate->GetOutput();
+    }
+    result.seconds["decimation"] += lap(clock);
+    result.mesh = to_world(*surface, labels, crop);
+    try {
+      result.repair = repair_closed_surface(result.mesh, what);
+      result.seconds["repair"] += lap(clock);
+      break;
+    } catch (const core::ValidationError& e) {
+      result.seconds["repair"] += lap(clock);
+      if (!decimating) {
+        throw core::ValidationError(e.reason(),
+                                    {what, "",
+                                     label == 0 ? std::string("surface of all labels")
+                                                : "surface of label " + std::to_string(label)});
+      }
+      ++result.decimation_retries;
+      budget *= 2;
+    }
   }
-  result.seconds["decimation"] = lap(clock);
   progress.step();
-
-  result.mesh = to_world(*surface, labels, crop);
-  try {
-    result.repair = repair_closed_surface(result.mesh, what);
-  } catch (const core::ValidationError& e) {
-    throw core::ValidationError(e.reason(),
-                                {what, "",
-                                 label == 0 ? std::string("surface of all labels")
-                                            : "surface of label " + std::to_string(label)});
-  }
   core::compute_vertex_normals(result.mesh);
-  result.seconds["repair"] = lap(clock);
+  result.seconds["repair"] += lap(clock);
   progress.step();
   return result;
 }

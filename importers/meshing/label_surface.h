@@ -24,6 +24,8 @@ struct LabelSurfaceOptions {
   /// voxel staircase and keeps features a few voxels wide, Slicer's "0.5" smoothing factor).
   double pass_band = 0.01;
   /// Triangle budget for quadric decimation; 0 or more than flying edges gives = no decimation.
+  /// Doubled (LabelSurface::decimation_retries) while decimation leaves self-intersections
+  /// that repair cannot remove.
   std::size_t target_triangles = 0;
 };
 
@@ -33,6 +35,9 @@ struct LabelSurface {
   core::SurfaceMesh mesh;  ///< in m, world frame of the map, outward, unit vertex normals
   std::size_t extracted_triangles = 0;  ///< triangles from flying edges, before decimation
   SurfaceRepairReport repair;
+  /// Times the triangle budget was doubled because decimation left self-intersections that
+  /// local repair could not remove.
+  std::size_t decimation_retries = 0;
   /// Wall-clock seconds per step: "contour", "smoothing", "decimation", "repair".
   std::map<std::string, double> seconds;
 };

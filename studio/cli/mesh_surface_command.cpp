@@ -99,6 +99,7 @@ void run(const SurfaceCommandOptions& o) {
                     {"extracted_triangles", s.extracted_triangles},
                     {"area_m2", area},
                     {"volume_m3", volume},
+                    {"decimation_retries", s.decimation_retries},
                     {"repair", repair_json(s.repair)}});
     text += "  label " + std::to_string(s.label) + " (" + label_name(labels, s.label) +
             "): " + std::to_string(s.mesh.triangles.size()) + " triangles, area " +

@@ -8,6 +8,7 @@
 #include "exporters/mesh_writer.h"
 #include "importers/mesh_reader.h"
 #include "studio/cli/command_output.h"
+#include "studio/cli/meshing_commands.h"
 
 namespace viscera::cli {
 namespace {
@@ -70,7 +71,8 @@ void convert(const ConvertOptions& o) {
 }  // namespace
 
 void add_mesh_commands(CLI::App& app) {
-  auto* mesh = app.add_subcommand("mesh", "Mesh conversion and inspection");
+  auto* mesh = app.add_subcommand(
+      "mesh", "Meshing of label maps and surfaces, conversion and quality reports");
   mesh->require_subcommand(1);
 
   auto options = std::make_shared<ConvertOptions>();
@@ -89,6 +91,9 @@ void add_mesh_commands(CLI::App& app) {
       ->capture_default_str();
   command->add_flag("--json", options->json, "Print JSON");
   command->callback([options] { convert(*options); });
+
+  add_mesh_surface_command(*mesh);
+  add_mesh_tets_commands(*mesh);
 }
 
 }  // namespace viscera::cli

@@ -7,6 +7,7 @@
 
 #include "studio/cli/command_line.h"
 #include "studio/cli/export_commands.h"
+#include "studio/cli/generate_commands.h"
 #include "studio/cli/mesh_commands.h"
 #include "studio/cli/package_commands.h"
 #include "studio/cli/template_commands.h"
@@ -25,6 +26,7 @@ int main(int argc, char** argv) {
   viscera::cli::add_vessel_commands(app);
   viscera::cli::add_mesh_commands(app);
   viscera::cli::add_export_commands(app);
+  viscera::cli::add_generate_commands(app, exit_code);
 
   return viscera::cli::run_command_line(app, argc, argv, exit_code);
 }

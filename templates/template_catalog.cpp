@@ -5,8 +5,10 @@
 
 #include "core/error.h"
 #include "core/version.h"
+#include "templates/agent_tissue/agent_tissue_template.h"
 #include "templates/ball_template.h"
 #include "templates/hysteroscopy/hysteroscopy_template.h"
+#include "templates/urethra/urethra_template.h"
 
 namespace viscera::templates {
 
@@ -15,6 +17,8 @@ const std::vector<std::unique_ptr<ScenarioTemplate>>& template_catalog() {
     std::vector<std::unique_ptr<ScenarioTemplate>> list;
     list.push_back(std::make_unique<BallTemplate>());
     list.push_back(std::make_unique<HysteroscopyTemplate>());
+    list.push_back(std::make_unique<UrethraTemplate>());
+    list.push_back(std::make_unique<AgentTissueTemplate>());
     return list;
   }();
   return catalog;

@@ -131,6 +131,14 @@ ValidationCheck simulate_one_second(const core::Scenario& scenario,
       sim::CellAgentTissue tissue(object->body.nodes, cell_types_of(spec), spec.cell_types,
                                   spec.neighbour_radius, spec.max_neighbours, spec.planar);
       const double limit = bounds.max_displacement_fraction * diagonal(object->body.nodes);
+      // The same perturbation as the bodies': a first-step push that moves each cell by up to
+      // bounds.perturbation per axis (Δx = h² F / m).
+      for (std::size_t c = 0; c < tissue.positions().size(); ++c) {
+        const double mass = spec.types.at(static_cast<std::size_t>(spec.cell_types.at(c))).mass;
+        core::Vec3 offset(rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0));
+        if (spec.planar) offset.z() = 0.0;
+        tissue.push(static_cast<int>(c), mass * bounds.perturbation / (h * h) * offset);
+      }
       for (long long s = 1; s <= steps && check.passed; ++s) {
         tissue.step(h);
         if (s % 10 != 0 && s != steps) continue;

@@ -24,7 +24,7 @@ struct SimulationBounds {
   double perturbation = 1e-4;
 };
 
-/// Perturbs and then steps every tet and mass-spring body (sim::World, Teschner or KisMo) and every
+/// Perturbs (cells: by a first-step push) and then steps every tet and mass-spring body (sim::World, Teschner or KisMo) and every
 /// cell-agent tissue (sim::CellAgentTissue) of `scenario` for bounds.duration seconds with no
 /// instrument, checking positions every 10 steps. Measures: steps, substeps, max_displacement (m),
 /// max_speed (m/s), final kinetic_energy (J). Never throws for a bad patient: a non-finite or

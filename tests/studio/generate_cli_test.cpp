@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -184,6 +185,37 @@ TEST(GenerateCommand, merge_refuses_a_missing_shard_and_bad_options_are_usage_er
   EXPECT_EQ(run_program("viscera", "generate --template ball --count 0 -o x", dir).exit_code, 2);
   EXPECT_EQ(run_program("viscera", "generate --template nope --count 1 -o x", dir).exit_code, 2);
   EXPECT_FALSE(fs::exists(dir / "x"));
+}
+
+}  // namespace
+}  // namespace viscera
+
+namespace viscera {
+namespace {
+
+TEST(TemplatesCommand, every_template_lists_its_parameters_and_builds_a_valid_package_at_defaults) {
+  const fs::path dir = testing::scratch_dir();
+  const auto listed = run_program("viscera", "templates --json", dir);
+  ASSERT_EQ(listed.exit_code, 0) << listed.err;
+  const nlohmann::json catalog = nlohmann::json::parse(listed.out);
+  std::vector<std::string> names;
+  for (const auto& t : catalog) {
+    names.push_back(t.at("name"));
+    ASSERT_FALSE(t.at("parameters").empty());
+    for (const auto& p : t.at("parameters")) {
+      EXPECT_FALSE(p.at("unit").get<std::string>().empty()) << p;
+      EXPECT_LE(p.at("minimum").get<double>(), p.at("default").get<double>()) << p;
+      EXPECT_LE(p.at("default").get<double>(), p.at("maximum").get<double>()) << p;
+    }
+    const fs::path package = dir / (names.back() + ".vscene");
+    const auto made = run_program(
+        "viscera", "new --template " + names.back() + " -o " + shell_quote(package.string()), dir);
+    ASSERT_EQ(made.exit_code, 0) << names.back() << made.err;
+    const auto valid = run_program("viscera", "validate " + shell_quote(package.string()), dir);
+    EXPECT_EQ(valid.exit_code, 0) << names.back() << valid.err;
+  }
+  for (const char* expected : {"ball", "hysteroscopy", "urethra", "agent-tissue"})
+    EXPECT_NE(std::find(names.begin(), names.end(), expected), names.end()) << expected;
 }
 
 }  // namespace

@@ -35,7 +35,7 @@ void BM_GenerateHysteroscopyPatient(benchmark::State& state) {
 }
 BENCHMARK(BM_GenerateHysteroscopyPatient)
     ->Unit(benchmark::kMillisecond)
-    ->Iterations(20)
+    ->Iterations(10)
     ->UseRealTime();
 
 }  // namespace

@@ -214,7 +214,8 @@ TEST(TemplatesCommand, every_template_lists_its_parameters_and_builds_a_valid_pa
     const auto valid = run_program("viscera", "validate " + shell_quote(package.string()), dir);
     EXPECT_EQ(valid.exit_code, 0) << names.back() << valid.err;
   }
-  for (const char* expected : {"ball", "hysteroscopy", "urethra", "agent-tissue"})
+  for (const char* expected :
+       {"ball", "hysteroscopy", "laparoscopy-gyn", "urethra", "agent-tissue"})
     EXPECT_NE(std::find(names.begin(), names.end(), expected), names.end()) << expected;
 }
 

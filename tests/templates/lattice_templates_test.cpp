@@ -73,3 +73,28 @@ TEST(AgentTissueTemplate, lays_out_cells_with_inclusions_and_a_stable_step) {
 
 }  // namespace
 }  // namespace viscera::templates
+
+#include "templates/laparoscopy/laparoscopy_gyn_template.h"
+
+namespace viscera::templates {
+namespace {
+
+TEST(LaparoscopyGynTemplate, has_seed_001s_21_objects_with_knot_counts_near_its_table) {
+  const core::Scenario s = build_from_template("laparoscopy-gyn", {}, 1);
+  EXPECT_EQ(s.objects.size(), 21u);
+  const nlohmann::json counts = laparoscopy_gyn_counts(s);
+  for (const auto& [group, c] : counts.items()) {
+    EXPECT_EQ(c.at("objects"), c.at("seed_objects")) << group;
+    const double knots = c.at("knots").get<double>(), seed = c.at("seed_knots").get<double>();
+    EXPECT_NEAR(knots, seed, 0.06 * seed) << group;
+    // Each quad between the layers gets a diagonal spring (the prisms' tets), so our nets
+    // carry about 5 springs per knot where KisMo's carried 4.
+    EXPECT_NEAR(c.at("springs").get<double>() / knots, 4.9, 0.4) << group;
+  }
+  EXPECT_EQ(counts.at("total").at("knots"), 2784);
+  EXPECT_TRUE(validate_patient_geometry(s).valid()) << validate_patient_geometry(s).first_failure();
+  EXPECT_EQ(find_template("laparoscopy-gyn").reference_counts(), counts);
+}
+
+}  // namespace
+}  // namespace viscera::templates

@@ -5,8 +5,11 @@
 
 #include "core/error.h"
 #include "core/version.h"
+#include "templates/agent_tissue/agent_tissue_template.h"
 #include "templates/ball_template.h"
 #include "templates/hysteroscopy/hysteroscopy_template.h"
+#include "templates/laparoscopy/laparoscopy_gyn_template.h"
+#include "templates/urethra/urethra_template.h"
 
 namespace viscera::templates {
 
@@ -15,6 +18,9 @@ const std::vector<std::unique_ptr<ScenarioTemplate>>& template_catalog() {
     std::vector<std::unique_ptr<ScenarioTemplate>> list;
     list.push_back(std::make_unique<BallTemplate>());
     list.push_back(std::make_unique<HysteroscopyTemplate>());
+    list.push_back(std::make_unique<LaparoscopyGynTemplate>());
+    list.push_back(std::make_unique<UrethraTemplate>());
+    list.push_back(std::make_unique<AgentTissueTemplate>());
     return list;
   }();
   return catalog;
@@ -78,6 +84,8 @@ nlohmann::json catalog_to_json() {
                     {"version", t->version()},
                     {"procedure", t->procedure()},
                     {"parameters", parameters}});
+    if (nlohmann::json counts = t->reference_counts(); !counts.is_null())
+      list.back()["reference_counts"] = std::move(counts);
   }
   return list;
 }

@@ -43,6 +43,10 @@ class ScenarioTemplate {
   /// of patients varies by default. Parameters without a rule keep their default.
   virtual std::vector<core::VariabilityRule> default_variability() const { return {}; }
 
+  /// Counts that tie the template to its source paper (e.g. knots and springs per model next
+  /// to seed 001's table), listed by `viscera templates --json`; null when there are none.
+  virtual nlohmann::json reference_counts() const { return nullptr; }
+
   /// Builds a scenario from fully resolved parameters; the same (parameters, seed) give the
   /// same scenario. Throws core::Error subclasses; CancelledError through `progress`.
   virtual core::Scenario build(const ParameterValues& parameters, std::uint64_t seed,

@@ -1,11 +1,78 @@
 #include "templates/template_parts.h"
 
+#include <algorithm>
+#include <map>
+
 #include "core/error.h"
+#include "core/mesh/tet_quality.h"
 #include "core/meshing/tet_mesher.h"
 #include "core/modelling/layered_body.h"
 #include "core/modelling/object_connectivity.h"
 
 namespace viscera::templates {
+namespace {
+
+/// Tets below this smallest dihedral angle, in degrees, that lie flat on the boundary are
+/// removed from small bodies (remove_boundary_slivers).
+constexpr double kBoundarySliverDegrees = 3.0;
+
+}  // namespace
+
+std::size_t remove_boundary_slivers(core::TetMesh& body, std::size_t surface_nodes,
+                                    double min_dihedral_degrees) {
+  std::map<std::array<int, 3>, int> face_use;
+  const auto key = [](int a, int b, int c) {
+    std::array<int, 3> k{a, b, c};
+    std::sort(k.begin(), k.end());
+    return k;
+  };
+  std::vector<int> node_use(body.nodes.size(), 0);
+  for (const auto& t : body.tets) {
+    for (const int n : t)
+      ++node_use[static_cast<std::size_t>(n)];
+    ++face_use[key(t[1], t[2], t[3])];
+    ++face_use[key(t[0], t[2], t[3])];
+    ++face_use[key(t[0], t[1], t[3])];
+    ++face_use[key(t[0], t[1], t[2])];
+  }
+  std::vector<core::Tetrahedron> kept;
+  std::size_t removed = 0;
+  for (const auto& t : body.tets) {
+    const auto& x = body.nodes;
+    const core::TetShape shape = core::tet_shape(x[t[0]], x[t[1]], x[t[2]], x[t[3]]);
+    int boundary = 0;
+    boundary += face_use[key(t[1], t[2], t[3])] == 1;
+    boundary += face_use[key(t[0], t[2], t[3])] == 1;
+    boundary += face_use[key(t[0], t[1], t[3])] == 1;
+    boundary += face_use[key(t[0], t[1], t[2])] == 1;
+    bool on_surface = true, shared = true;
+    for (const int n : t) {
+      on_surface = on_surface && static_cast<std::size_t>(n) < surface_nodes;
+      shared = shared && node_use[static_cast<std::size_t>(n)] > 1;
+    }
+    if (shape.min_dihedral_degrees < min_dihedral_degrees && boundary == 2 && on_surface &&
+        shared) {
+      for (const int n : t)
+        --node_use[static_cast<std::size_t>(n)];
+      ++removed;
+      continue;
+    }
+    kept.push_back(t);
+  }
+  if (removed == 0) return 0;
+  // Labels follow their tets; the boundary now runs over the removed slivers' inner faces.
+  if (!body.tet_labels.empty()) {
+    std::vector<int> labels;
+    std::size_t j = 0;
+    for (std::size_t i = 0; i < body.tets.size() && j < kept.size(); ++i) {
+      if (body.tets[i] == kept[j]) labels.push_back(body.tet_labels[i]), ++j;
+    }
+    body.tet_labels = std::move(labels);
+  }
+  body.tets = std::move(kept);
+  body.surface_faces = core::boundary_faces(body.tets);
+  return removed;
+}
 
 void add_material(core::Scenario& scenario, const std::string& id, const std::string& name,
                   double density, double stiffness, const std::string& source) {
@@ -46,6 +113,7 @@ core::SceneObject& add_tet_object(core::Scenario& scenario, const std::string& i
   object.surface = surface;
   try {
     object.body = core::mesh_closed_surface(surface, {}, progress);
+    remove_boundary_slivers(object.body, surface.vertices.size(), kBoundarySliverDegrees);
   } catch (const core::InputError& e) {
     throw core::InputError("object " + id + ": " + e.reason());
   }

@@ -31,6 +31,15 @@ core::SceneObject& add_tet_object(core::Scenario& scenario, const std::string& i
                                   const core::SurfaceMesh& surface, double density,
                                   core::Progress& progress);
 
+/// Removes the boundary slivers of `body` that gmsh's optimiser cannot reach: tets whose
+/// smallest dihedral angle is below `min_dihedral_degrees`, whose four nodes are all surface
+/// vertices (index < `surface_nodes`) and two of whose faces are on the boundary — a flat tet
+/// spanning a nearly planar quad of the surface. Removing one moves the boundary onto its two
+/// inner faces (a change of its volume only, ≈ 0); a tet is kept when removing it would leave a
+/// node without tets. Refreshes surface_faces (and tet_labels). Returns the number removed.
+std::size_t remove_boundary_slivers(core::TetMesh& body, std::size_t surface_nodes,
+                                    double min_dihedral_degrees);
+
 /// Connects `part` to `host` (seed 001 §3.3: at the nearest knots): each of the part's body
 /// nodes in `part_nodes` (its base on the host) is paired with its nearest host knot within
 /// `within` m, and held fixed, so that the attachment holds in a runtime that does not yet

@@ -7,6 +7,7 @@
 
 #include "studio/cli/command_line.h"
 #include "studio/cli/export_commands.h"
+#include "studio/cli/generate_commands.h"
 #include "studio/cli/library_commands.h"
 #include "studio/cli/material_commands.h"
 #include "studio/cli/mesh_commands.h"
@@ -30,6 +31,7 @@ int main(int argc, char** argv) {
   viscera::cli::add_vessel_commands(app);
   viscera::cli::add_mesh_commands(app);
   viscera::cli::add_export_commands(app);
+  viscera::cli::add_generate_commands(app, exit_code);
   viscera::cli::add_volume_commands(app);
   viscera::cli::add_segment_commands(app);
   viscera::cli::add_library_commands(app);

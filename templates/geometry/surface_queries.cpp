@@ -118,4 +118,12 @@ bool surfaces_intersect(const core::SurfaceMesh& a, const core::SurfaceMesh& b) 
                            CGAL::parameters::do_overlap_test_of_bounded_sides(true));
 }
 
+bool surfaces_cross(const core::SurfaceMesh& a, const core::SurfaceMesh& b) {
+  const auto ma = to_cgal(a);
+  const auto mb = to_cgal(b);
+  if (!ma || !mb) return true;
+  return PMP::do_intersect(*ma, *mb, CGAL::parameters::do_overlap_test_of_bounded_sides(false),
+                           CGAL::parameters::do_overlap_test_of_bounded_sides(false));
+}
+
 }  // namespace viscera::templates

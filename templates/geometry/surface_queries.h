@@ -49,4 +49,9 @@ bool self_intersects(const core::SurfaceMesh& surface);
 /// with volumes).
 bool surfaces_intersect(const core::SurfaceMesh& a, const core::SurfaceMesh& b);
 
+/// True when a triangle of `a` meets a triangle of `b`; a surface wholly inside the other does
+/// not count (CGAL PMP do_intersect without the bounded-side test). A hole in a host's body
+/// passes; a seated pathology that pierces the wall does not.
+bool surfaces_cross(const core::SurfaceMesh& a, const core::SurfaceMesh& b);
+
 }  // namespace viscera::templates

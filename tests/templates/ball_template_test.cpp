@@ -43,12 +43,14 @@ TEST(BallTemplate, sags_under_gravity_and_comes_to_rest_with_decreasing_energy) 
   sim::HeadlessRunOptions options;
   options.duration = 3.0;
   const sim::SessionReport report = sim::run_headless(small_ball(), options);
-  EXPECT_GT(report.bodies[0].centre_of_mass_drop, 1e-4);        // it sags …
-  EXPECT_LT(report.bodies[0].centre_of_mass_drop, 0.01);        // … but stays a ball
+  EXPECT_GT(report.bodies[0].centre_of_mass_drop, 1e-4);  // it sags …
+  EXPECT_LT(report.bodies[0].centre_of_mass_drop, 0.01);  // … but stays a ball
   for (std::size_t i = 1; i < report.samples.size(); ++i) {
-    EXPECT_LE(report.samples[i].total(), report.samples[i - 1].total() + 1e-7) << report.samples[i].time;
+    EXPECT_LE(report.samples[i].total(), report.samples[i - 1].total() + 1e-7)
+        << report.samples[i].time;
   }
-  EXPECT_EQ(report.tasks[0].status, "completed") << "kinetic energy at the end " << report.samples.back().kinetic;
+  EXPECT_EQ(report.tasks[0].status, "completed")
+      << "kinetic energy at the end " << report.samples.back().kinetic;
 }
 
 TEST(TemplateCatalog, resolves_overrides_and_refuses_bad_ones) {
@@ -82,13 +84,16 @@ TEST(BallTemplate, on_the_floor_the_two_bodies_touch_without_interpenetrating) {
   options.duration = 0.5;
   const sim::SessionReport report = sim::run_headless(scenario, options);
   int touching_samples = 0;
-  for (const auto& s : report.samples) touching_samples += s.colliding_points > 0;
-  EXPECT_GT(touching_samples, static_cast<int>(report.samples.size()) / 2);  // it rests on the floor
+  for (const auto& s : report.samples)
+    touching_samples += s.colliding_points > 0;
+  EXPECT_GT(touching_samples,
+            static_cast<int>(report.samples.size()) / 2);  // it rests on the floor
   EXPECT_GT(report.max_penetration, 0.0);
   EXPECT_LT(report.max_penetration, 1e-3);  // under a millimetre, a tenth of the cell size
   EXPECT_GT(report.bodies[0].centre_of_mass_drop, 0.0);
-  EXPECT_LT(report.bodies[0].centre_of_mass_drop, 0.015);  // held up by the floor, not falling through
-  EXPECT_EQ(report.bodies[1].max_displacement, 0.0);       // the floor is fixed
+  EXPECT_LT(report.bodies[0].centre_of_mass_drop,
+            0.015);                                   // held up by the floor, not falling through
+  EXPECT_EQ(report.bodies[1].max_displacement, 0.0);  // the floor is fixed
 }
 
 }  // namespace

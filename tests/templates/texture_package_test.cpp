@@ -71,7 +71,8 @@ TEST(TexturePackage, maps_baked_onto_a_ball_are_stored_and_read_back) {
     core::SurfaceMesh welded = ball.surface;
     const auto& original = ball.surface.vertex_attributes.at(textures::kSeamVertexAttribute);
     for (auto& t : welded.triangles) {
-      for (int& v : t) v = static_cast<int>(original[static_cast<std::size_t>(v)]);
+      for (int& v : t)
+        v = static_cast<int>(original[static_cast<std::size_t>(v)]);
     }
     EXPECT_TRUE(core::is_closed_and_consistently_oriented(welded));
   }

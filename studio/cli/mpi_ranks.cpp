@@ -1,0 +1,69 @@
+#include "studio/cli/mpi_ranks.h"
+
+#include <mpi.h>
+
+#include <cstdlib>
+
+#include "core/error.h"
+
+namespace viscera::cli {
+namespace {
+
+bool started_by_launcher() {
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK"}) {
+    if (std::getenv(name) != nullptr) return true;
+  }
+  return false;
+}
+
+void check(int code, const char* what) {
+  if (code != MPI_SUCCESS) throw core::Error(std::string("MPI: ") + what + " failed");
+}
+
+}  // namespace
+
+MpiRanks::MpiRanks() {
+  if (!started_by_launcher()) return;
+  int already = 0;
+  MPI_Initialized(&already);
+  if (!already) check(MPI_Init(nullptr, nullptr), "MPI_Init");
+  initialised_ = !already;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+  MPI_Comm_size(MPI_COMM_WORLD, &size_);
+}
+
+MpiRanks::~MpiRanks() {
+  if (initialised_) MPI_Finalize();
+}
+
+std::vector<std::string> MpiRanks::gather(const std::string& text) const {
+  if (size_ == 1) return {text};
+  const int length = static_cast<int>(text.size());
+  std::vector<int> lengths(static_cast<std::size_t>(size_), 0);
+  check(MPI_Gather(&length, 1, MPI_INT, lengths.data(), 1, MPI_INT, 0, MPI_COMM_WORLD),
+        "MPI_Gather");
+  std::vector<int> offsets(static_cast<std::size_t>(size_), 0);
+  int total = 0;
+  for (int r = 0; r < size_; ++r) {
+    offsets[static_cast<std::size_t>(r)] = total;
+    total += lengths[static_cast<std::size_t>(r)];
+  }
+  std::string all(rank_ == 0 ? static_cast<std::size_t>(total) : 0, '\0');
+  check(MPI_Gatherv(text.data(), length, MPI_CHAR, all.data(), lengths.data(), offsets.data(),
+                    MPI_CHAR, 0, MPI_COMM_WORLD),
+        "MPI_Gatherv");
+  if (rank_ != 0) return {};
+  std::vector<std::string> parts;
+  for (int r = 0; r < size_; ++r) {
+    parts.push_back(all.substr(static_cast<std::size_t>(offsets[static_cast<std::size_t>(r)]),
+                               static_cast<std::size_t>(lengths[static_cast<std::size_t>(r)])));
+  }
+  return parts;
+}
+
+int MpiRanks::broadcast(int value) const {
+  if (size_ > 1) check(MPI_Bcast(&value, 1, MPI_INT, 0, MPI_COMM_WORLD), "MPI_Bcast");
+  return value;
+}
+
+}  // namespace viscera::cli

@@ -23,6 +23,11 @@ ScenarioDocument::ScenarioDocument(QObject* parent) : QObject(parent) {
   connect(&undo_stack_, &QUndoStack::cleanChanged, this, [this] { emit status_changed(); });
 }
 
+ScenarioDocument::~ScenarioDocument() {
+  undo_stack_.disconnect(this);
+  blockSignals(true);
+}
+
 QString ScenarioDocument::display_name() const {
   if (path_.empty()) return QStringLiteral("untitled");
   return QString::fromStdString(path_.filename().string());

@@ -44,6 +44,8 @@ class ScenarioDocument : public QObject {
 
  public:
   explicit ScenarioDocument(QObject* parent = nullptr);
+  /// Silent: QUndoStack's destructor clears the stack, which must not look like a save.
+  ~ScenarioDocument() override;
 
   const core::Scenario& scenario() const { return content_.scenario; }
   const PackageFiles& files() const { return content_.files; }

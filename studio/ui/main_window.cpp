@@ -8,12 +8,14 @@
 #include <QStatusBar>
 
 #include "core/error.h"
+#include "core/image/image_volume_io.h"
 #include "core/materials/shipped_materials.h"
 #include "studio/document/document_commands.h"
 #include "studio/ui/background_task.h"
 #include "studio/ui/material_panel.h"
 #include "studio/ui/scene_tree.h"
 #include "studio/ui/scene_view.h"
+#include "studio/ui/slice_views.h"
 #include "templates/template_catalog.h"
 
 namespace viscera::studio {
@@ -80,6 +82,16 @@ void MainWindow::build_docks() {
   report_dock->setObjectName("report-dock");
   report_dock->setWidget(report_);
   addDockWidget(Qt::RightDockWidgetArea, report_dock);
+
+  slices_ = new SliceViews(this);
+  slice_dock_ = new QDockWidget(tr("Image volume"), this);
+  slice_dock_->setObjectName("image-dock");
+  slice_dock_->setWidget(slices_);
+  addDockWidget(Qt::BottomDockWidgetArea, slice_dock_);
+  slice_dock_->hide();
+  connect(slices_, &SliceViews::changed, view_, &SceneView::render);
+
+  resizeDocks({tree_dock, material_dock}, {240, 320}, Qt::Horizontal);
 }
 
 void MainWindow::update_title() {
@@ -157,6 +169,25 @@ bool MainWindow::new_from_template(const std::string& name, std::uint64_t seed) 
     return false;
   }
   document_.reset({std::move(scenario), {}});
+  return true;
+}
+
+bool MainWindow::open_image_volume(const std::filesystem::path& path) {
+  core::ImageVolume volume;
+  if (!run(tr("Reading %1").arg(QString::fromStdString(path.filename().string())),
+           [&](core::Progress& progress) {
+             progress.begin_stage("reading the image volume", 1);
+             volume = core::read_volume_vti(path);
+             progress.step();
+           })) {
+    return false;
+  }
+  slices_->set_volume(volume);
+  slice_dock_->show();
+  view_->set_image_planes(
+      {slices_->plane_in_3d(0), slices_->plane_in_3d(1), slices_->plane_in_3d(2)});
+  view_->reset_camera();
+  view_->render();
   return true;
 }
 

@@ -22,6 +22,7 @@ namespace viscera::studio {
 
 class MaterialPanel;
 class SceneTree;
+class SliceViews;
 class SceneView;
 
 /// Where the window keeps its recovery copy and how often it writes it.
@@ -42,6 +43,7 @@ class MainWindow : public QMainWindow {
   SceneView* scene_view() const { return view_; }
   SceneTree* scene_tree() const { return tree_; }
   MaterialPanel* material_panel() const { return materials_; }
+  SliceViews* slice_views() const { return slices_; }
   Autosave& autosave() { return *autosave_; }
   TrainingLauncher& launcher() { return launcher_; }
 
@@ -51,6 +53,9 @@ class MainWindow : public QMainWindow {
   bool save_as(const std::filesystem::path& path);
   /// A new document from a catalogue template with its default parameters and `seed`.
   bool new_from_template(const std::string& name, std::uint64_t seed = 1);
+  /// Reads an image volume (.vti) off the UI thread and shows it in the three slice views and
+  /// as planes in the 3D view — a modelling aid, not part of the scenario.
+  bool open_image_volume(const std::filesystem::path& path);
   /// Builds the primitive off the UI thread, adds it as one undoable command and selects it.
   bool create_primitive(const PrimitiveRequest& request);
   /// Selects an object in the tree, the 3D view and the material panel.
@@ -97,6 +102,8 @@ class MainWindow : public QMainWindow {
   SceneTree* tree_ = nullptr;
   MaterialPanel* materials_ = nullptr;
   QPlainTextEdit* report_ = nullptr;
+  SliceViews* slices_ = nullptr;
+  class QDockWidget* slice_dock_ = nullptr;
   QMenu* recent_menu_ = nullptr;
   std::function<void(const QString&)> error_handler_;
 };

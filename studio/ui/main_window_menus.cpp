@@ -38,6 +38,11 @@ void MainWindow::build_menus() {
                                                       tr("Packages (*.vscz)"));
     if (!path.isEmpty()) open_package(path.toStdString());
   });
+  file->addAction(tr("Open &image volume…"), this, [this] {
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open an image volume"), QString(),
+                                                      tr("VTK image data (*.vti)"));
+    if (!path.isEmpty()) open_image_volume(path.toStdString());
+  });
   recent_menu_ = file->addMenu(tr("Open &recent"));
   rebuild_recent_menu();
   file->addSeparator();

@@ -1,6 +1,7 @@
 #include "studio/ui/scene_view.h"
 
 #include <vtkActor.h>
+#include <vtkCamera.h>
 #include <vtkCellArray.h>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkImageData.h>
@@ -15,6 +16,7 @@
 #include <vtkTexture.h>
 
 #include <QMouseEvent>
+#include <cmath>
 
 #include "core/package/vtk_mesh_io.h"
 
@@ -92,7 +94,7 @@ SceneView::SceneView(QWidget* parent) : QVTKOpenGLNativeWidget(parent) {
 }
 
 void SceneView::show_scenario(const core::Scenario& scenario, const PackageFiles& files,
-                              bool reset_camera) {
+                              bool frame) {
   for (const auto& [id, actor] : actors_)
     renderer_->RemoveActor(actor);
   actors_.clear();
@@ -121,9 +123,37 @@ void SceneView::show_scenario(const core::Scenario& scenario, const PackageFiles
   }
   if (!actors_.contains(selected_)) selected_.clear();
   update_outline();
-  if (reset_camera) {
-    renderer_->ResetCamera();
+  if (frame) reset_camera();
+  render();
+}
+
+void SceneView::set_image_planes(const std::vector<vtkProp3D*>& planes) {
+  for (const auto& plane : image_planes_)
+    renderer_->RemoveViewProp(plane);
+  image_planes_.clear();
+  for (vtkProp3D* plane : planes) {
+    plane->SetPickable(false);
+    renderer_->AddViewProp(plane);
+    image_planes_.emplace_back(plane);
   }
+  render();
+}
+
+void SceneView::reset_camera() {
+  renderer_->ResetCamera();
+  vtkCamera* camera = renderer_->GetActiveCamera();
+  const double* focal = camera->GetFocalPoint();
+  const double distance = camera->GetDistance();
+  const double direction[3] = {0.45, -0.8, 0.4};
+  const double length = std::sqrt(0.45 * 0.45 + 0.8 * 0.8 + 0.4 * 0.4);
+  camera->SetPosition(focal[0] + distance * direction[0] / length,
+                      focal[1] + distance * direction[1] / length,
+                      focal[2] + distance * direction[2] / length);
+  camera->SetViewUp(0.0, 0.0, 1.0);
+  renderer_->ResetCamera();
+}
+
+void SceneView::render() {
   renderWindow()->Render();
   update();
 }

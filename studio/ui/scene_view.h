@@ -6,12 +6,14 @@
 
 #include <QVTKOpenGLNativeWidget.h>
 #include <vtkActor.h>
+#include <vtkProp3D.h>
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
 
 #include <QString>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "core/scenario/scenario.h"
 #include "studio/document/scenario_document.h"
@@ -25,8 +27,8 @@ class SceneView : public QVTKOpenGLNativeWidget {
   explicit SceneView(QWidget* parent = nullptr);
 
   /// Rebuilds every actor from `scenario`; keeps visibility and selection of ids that remain.
-  /// `reset_camera` frames the whole scene.
-  void show_scenario(const core::Scenario& scenario, const PackageFiles& files, bool reset_camera);
+  /// `frame` resets the camera to the whole scene.
+  void show_scenario(const core::Scenario& scenario, const PackageFiles& files, bool frame);
   void set_object_visible(const QString& id, bool visible);
   bool object_visible(const QString& id) const;
   /// Selects (outlines) an object; an empty id clears the selection.
@@ -34,6 +36,11 @@ class SceneView : public QVTKOpenGLNativeWidget {
   QString selected_object() const { return selected_; }
   /// The object drawn at widget pixel `position` (logical coordinates), or an empty string.
   QString object_at(const QPoint& position);
+  /// Shows these props (the image volume's slice planes) with the objects; not pickable.
+  void set_image_planes(const std::vector<vtkProp3D*>& planes);
+  /// Frames the whole scene from the front-right, above, with +z up.
+  void reset_camera();
+  void render();
   /// Number of objects drawn with a texture map.
   int textured_object_count() const;
   vtkRenderer* renderer() const { return renderer_; }
@@ -53,6 +60,7 @@ class SceneView : public QVTKOpenGLNativeWidget {
   std::map<QString, vtkSmartPointer<vtkActor>> actors_;
   std::map<QString, bool> hidden_;
   vtkSmartPointer<vtkActor> outline_;
+  std::vector<vtkSmartPointer<vtkProp3D>> image_planes_;
   QString selected_;
   QPoint press_position_;
 };

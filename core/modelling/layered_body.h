@@ -35,6 +35,8 @@ struct LayerOptions {
   int layers = 1;          ///< inner copies, ≥ 1 (the surface itself is layer 0)
   double thickness = 0.0;  ///< m from the surface to the innermost copy (scale: on average)
   LayerMode mode = LayerMode::Offset;
+
+  bool operator==(const LayerOptions&) const = default;
 };
 
 /// Vertex positions of layers 0 … layers (layer 0 is the surface). An open surface is offset

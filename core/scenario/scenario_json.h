@@ -18,6 +18,11 @@ std::string body_file_of(const std::string& object_id);
 /// result gives the same bytes for the same scenario.
 nlohmann::json scenario_to_json(const Scenario& scenario);
 
+/// Conversions of a material (with its measured curve), also used by model documents and
+/// material files. from_json throws nlohmann::json exceptions on a wrong type.
+void to_json(nlohmann::json& j, const Material& material);
+void from_json(const nlohmann::json& j, Material& material);
+
 /// The scenario without meshes (objects have empty surfaces and bodies). Throws
 /// ValidationError naming `file` and the JSON pointer (under `pointer_prefix`) when a member
 /// has the wrong type or an unknown enumeration value.

@@ -6,12 +6,10 @@
 #include <vtkGenericCell.h>
 #include <vtkGenericDataObjectReader.h>
 #include <vtkIdList.h>
-#include <vtkLogger.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
-#include <vtkStringOutputWindow.h>
 #include <vtkTriangleFilter.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLPolyDataReader.h>
@@ -22,52 +20,10 @@
 #include "core/error.h"
 #include "importers/mesh/mesh_integrity.h"
 #include "importers/mesh/no_tetrahedra_error.h"
+#include "importers/vtk_error_capture.h"
 
 namespace viscera::importers {
 namespace {
-
-/// The first error VTK reports anywhere while it lives (the reader or the parsers and streams it
-/// creates), without its "ERROR: In <source>, line N" preamble; nothing reaches the terminal.
-/// Global VTK state, like core::ScopedVtkSilence: not for concurrent use from several threads.
-class VtkErrorCapture {
- public:
-  VtkErrorCapture()
-      : previous_(vtkOutputWindow::GetInstance()),
-        display_(vtkObject::GetGlobalWarningDisplay()),
-        stderr_verbosity_(vtkLogger::GetCurrentVerbosityCutoff()) {
-    vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
-    previous_->Register(nullptr);
-    capture_->SetDisplayModeToAlways();  // to the capture, not to vtkLogger on the terminal
-    vtkOutputWindow::SetInstance(capture_);
-    vtkObject::GlobalWarningDisplayOn();
-  }
-  ~VtkErrorCapture() {
-    vtkOutputWindow::SetInstance(previous_);
-    previous_->UnRegister(nullptr);
-    vtkObject::SetGlobalWarningDisplay(display_);
-    vtkLogger::SetStderrVerbosity(stderr_verbosity_);
-  }
-  VtkErrorCapture(const VtkErrorCapture&) = delete;
-  VtkErrorCapture& operator=(const VtkErrorCapture&) = delete;
-
-  /// The first error's message, or empty.
-  std::string first_error() {
-    std::string text = capture_->GetOutput();
-    const auto error = text.find("ERROR");
-    if (error == std::string::npos) return {};
-    text = text.substr(error);
-    if (const auto at = text.find("): "); at != std::string::npos) text = text.substr(at + 3);
-    if (const auto newline = text.find('\n'); newline != std::string::npos)
-      text = text.substr(0, newline);
-    return text.empty() ? "unknown error" : text;
-  }
-
- private:
-  vtkNew<vtkStringOutputWindow> capture_;
-  vtkOutputWindow* previous_;
-  int display_;
-  vtkLogger::Verbosity stderr_verbosity_;
-};
 
 std::string lower_extension(const std::filesystem::path& path) {
   std::string extension = path.extension().string();

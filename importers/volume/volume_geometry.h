@@ -37,12 +37,14 @@ core::ImageVolume volume_from_vtk_image(vtkImageData& image, const std::string& 
 
 /// Sets spacing, direction and origin from an affine in millimetres: columns of `axes` are the
 /// world steps of +i, +j, +k, `origin` the world centre of voxel (0,0,0). With `ras`, x and y
-/// are negated (RAS → LPS). Results in metres.
+/// are negated (RAS → LPS). Results in metres. Throws core::InputError naming `file` when an
+/// axis has zero or non-finite length or the axes are not independent.
 void set_geometry_mm(core::ImageVolume& volume, const core::Mat3& axes, const core::Vec3& origin,
-                     bool ras);
+                     bool ras, const std::string& file);
 
-/// value ← slope·value + intercept, converting to float32 (no-op for slope 1, intercept 0, or
-/// slope 0 which files use for "no scaling").
+/// value ← slope·value + intercept (no-op for slope 1, intercept 0, or slope 0 which files use
+/// for "no scaling"). Integral slope and intercept keep an integer type wide enough for the
+/// result (int16, then int32; so CT stays in whole Hounsfield units); otherwise float32.
 void apply_rescale(core::ImageVolume& volume, double slope, double intercept);
 
 /// Throws core::InputError naming `file` if any voxel is NaN or infinite.

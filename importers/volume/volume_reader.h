@@ -3,16 +3,21 @@
 /// (seed 001 §3.3: image data as the modelling aid; seed 003 §II: geometrically accurate models
 /// are reconstructed from sliced data).
 ///
-/// | input                      | reader (file)                       | geometry it carries                                      |
+/// | input                      | reader (file)                       | geometry it carries |
 /// |----------------------------|-------------------------------------|----------------------------------------------------------|
-/// | folder of DICOM files      | GDCM + vtkGDCMImageReader (dicom_reader.cpp) | spacing, Image Position/Orientation (Patient); slices sorted by position along the normal; several series: the largest is read, the others listed; rescale slope/intercept applied |
-/// | .dcm, .ima, DICM file      | same                                | same, one file (multi-frame files give a volume)         |
-/// | .nii .nii.gz .hdr .img     | vtkNIFTIImageReader (nifti_reader.cpp) | pixdim, sform (if sform_code > 0) else qform, qfac, scl_slope/inter; 4D: first volume |
-/// | .mhd .mha                  | vtkMetaImageReader (metaimage_reader.cpp) | ElementSpacing, Offset, TransformMatrix              |
-/// | .nrrd .nhdr                | vtkNrrdReader (nrrd_reader.cpp)     | space directions, space origin, space (RAS/LPS)          |
-/// | .vti                       | VTK XML (vti_reader.cpp)            | spacing, origin, direction matrix, label names           |
-/// | .inr .inr.gz               | CGAL Image_3 (inr_reader.cpp)       | VX/VY/VZ spacing, TX/TY/TZ origin; no orientation         |
-/// | .mnc                       | vtkMINCImageReader (minc_reader.cpp) | MINC 1: step, start, direction cosines; real values rescaled |
+/// | folder of DICOM files      | GDCM + vtkGDCMImageReader (dicom_reader.cpp) | spacing, Image
+/// Position/Orientation (Patient); slices sorted by position along the normal; several series: the
+/// largest is read, the others listed; rescale slope/intercept applied | | .dcm, .ima, DICM file |
+/// same                                | same, one file (multi-frame files give a volume)         |
+/// | .nii .nii.gz .hdr .img     | vtkNIFTIImageReader (nifti_reader.cpp) | pixdim, sform (if
+/// sform_code > 0) else qform, qfac, scl_slope/inter; 4D: first volume | | .mhd .mha |
+/// vtkMetaImageReader (metaimage_reader.cpp) | ElementSpacing, Offset, TransformMatrix | | .nrrd
+/// .nhdr                | vtkNrrdReader (nrrd_reader.cpp)     | space directions, space origin,
+/// space (RAS/LPS)          | | .vti                       | VTK XML (vti_reader.cpp)            |
+/// spacing, origin, direction matrix, label names           | | .inr .inr.gz               | CGAL
+/// Image_3 (inr_reader.cpp)       | VX/VY/VZ spacing, TX/TY/TZ origin; no orientation         | |
+/// .mnc                       | vtkMINCImageReader (minc_reader.cpp) | MINC 1: step, start,
+/// direction cosines; real values rescaled |
 ///
 /// Results are in metres in patient LPS coordinates (DICOM's: +x left, +y posterior, +z head):
 /// millimetre files are scaled by 0.001, RAS files (NIfTI, MINC, NRRD "RAS") have x and y

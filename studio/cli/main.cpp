@@ -7,11 +7,16 @@
 
 #include "studio/cli/command_line.h"
 #include "studio/cli/export_commands.h"
+#include "studio/cli/library_commands.h"
+#include "studio/cli/material_commands.h"
 #include "studio/cli/mesh_commands.h"
+#include "studio/cli/model_commands.h"
 #include "studio/cli/package_commands.h"
+#include "studio/cli/segment_commands.h"
 #include "studio/cli/template_commands.h"
 #include "studio/cli/texture_commands.h"
 #include "studio/cli/vessel_commands.h"
+#include "studio/cli/volume_commands.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"Viscera: virtual patients for surgical simulators", "viscera"};
@@ -25,6 +30,11 @@ int main(int argc, char** argv) {
   viscera::cli::add_vessel_commands(app);
   viscera::cli::add_mesh_commands(app);
   viscera::cli::add_export_commands(app);
+  viscera::cli::add_volume_commands(app);
+  viscera::cli::add_segment_commands(app);
+  viscera::cli::add_library_commands(app);
+  viscera::cli::add_material_commands(app);
+  viscera::cli::add_model_commands(app);
 
   return viscera::cli::run_command_line(app, argc, argv, exit_code);
 }

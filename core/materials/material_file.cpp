@@ -1,0 +1,35 @@
+#include "core/materials/material_file.h"
+
+#include "core/error.h"
+#include "core/scenario/scenario_json.h"
+
+namespace viscera::core {
+
+nlohmann::json material_file_json(const Material& material, const nlohmann::json& report) {
+  return {{"format", kMaterialFormat},
+          {"version", kMaterialFormatVersion},
+          {"material", material},
+          {"report", report}};
+}
+
+Material material_from_file_json(const nlohmann::json& json, const std::string& file) {
+  if (!json.is_object() || json.value("format", std::string()) != kMaterialFormat)
+    throw InputError(
+        std::string("not a Viscera material (format is not \"") + kMaterialFormat + "\")",
+        {file, "/format", ""});
+  const auto version = json.find("version");
+  if (version == json.end() || !version->is_number_integer())
+    throw InputError("missing or mistyped version", {file, "/version", ""});
+  if (version->get<int>() > kMaterialFormatVersion)
+    throw UnsupportedVersionError(
+        "material format version " + version->dump() + " is newer than this build reads",
+        {file, "/version", ""});
+  try {
+    return json.at("material").get<Material>();
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(std::string("missing or mistyped member: ") + e.what(),
+                     {file, "/material", ""});
+  }
+}
+
+}  // namespace viscera::core

@@ -1,0 +1,354 @@
+// DICOM through GDCM (libgdcm, the library under vtkgdcm). A folder is searched with its
+// sub-folders; its images are grouped by Series Instance UID and the series with the most files
+// is read, the others listed. Slices are ordered by Image Position (Patient) along the normal of
+// Image Orientation (Patient) (dicom_series.cpp). A single file may hold several frames.
+// GDCM's own ImageReader decodes each file rather than vtkGDCMImageReader, whose Shift/Scale
+// are documented as inaccurate when Rescale Slope/Intercept vary along a series: here they are
+// applied per slice. DICOM's patient frame is LPS in mm, the frame of ImageVolume.
+#include <gdcmImage.h>
+#include <gdcmImageReader.h>
+#include <gdcmTrace.h>
+
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+
+#include "core/error.h"
+#include "importers/volume/dicom_series.h"
+#include "importers/volume/format_readers.h"
+#include "importers/volume/volume_geometry.h"
+
+namespace viscera::importers::detail {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// The ImageVolume type that holds a file's samples without loss.
+core::ScalarType output_type(const gdcm::PixelFormat& format, const std::string& file) {
+  if (format.GetSamplesPerPixel() == 3) return core::ScalarType::Float32;  // luminance
+  switch (format.GetScalarType()) {
+    case gdcm::PixelFormat::SINGLEBIT:
+    case gdcm::PixelFormat::UINT8:
+      return core::ScalarType::UInt8;
+    case gdcm::PixelFormat::INT8:
+    case gdcm::PixelFormat::INT12:
+    case gdcm::PixelFormat::INT16:
+      return core::ScalarType::Int16;
+    case gdcm::PixelFormat::UINT12:
+    case gdcm::PixelFormat::UINT16:
+      return core::ScalarType::UInt16;
+    case gdcm::PixelFormat::INT32:
+      return core::ScalarType::Int32;
+    case gdcm::PixelFormat::FLOAT32:
+      return core::ScalarType::Float32;
+    case gdcm::PixelFormat::UINT32:
+    case gdcm::PixelFormat::FLOAT64:
+      return core::ScalarType::Float64;
+    default:
+      throw core::InputError(
+          std::string("unsupported pixel type ") + format.GetScalarTypeAsString(), {file, "", ""});
+  }
+}
+
+/// Sample `index` of a decoded buffer as double.
+double sample(const char* buffer, gdcm::PixelFormat::ScalarType type, std::size_t index) {
+  const auto read = [&](auto zero) {
+    decltype(zero) value;
+    std::memcpy(&value, buffer + index * sizeof value, sizeof value);
+    return static_cast<double>(value);
+  };
+  switch (type) {
+    case gdcm::PixelFormat::SINGLEBIT:  // packed, first pixel in the lowest bit
+      return (static_cast<unsigned char>(buffer[index / 8]) >> (index % 8)) & 1u;
+    case gdcm::PixelFormat::UINT8:
+      return read(std::uint8_t{});
+    case gdcm::PixelFormat::INT8:
+      return read(std::int8_t{});
+    case gdcm::PixelFormat::UINT12:
+    case gdcm::PixelFormat::UINT16:
+      return read(std::uint16_t{});
+    case gdcm::PixelFormat::INT12:
+    case gdcm::PixelFormat::INT16:
+      return read(std::int16_t{});
+    case gdcm::PixelFormat::UINT32:
+      return read(std::uint32_t{});
+    case gdcm::PixelFormat::INT32:
+      return read(std::int32_t{});
+    case gdcm::PixelFormat::FLOAT32:
+      return read(float{});
+    case gdcm::PixelFormat::FLOAT64:
+      return read(double{});
+    default:
+      return 0.0;
+  }
+}
+
+template <typename T>
+void store(core::ImageVolume& volume, std::size_t index, double value) {
+  reinterpret_cast<T*>(volume.voxels.data())[index] =
+      static_cast<T>(std::is_integral_v<T> ? std::round(value) : value);
+}
+
+void store_value(core::ImageVolume& volume, std::size_t index, double value) {
+  switch (volume.scalar_type) {
+    case core::ScalarType::UInt8:
+      store<std::uint8_t>(volume, index, value);
+      break;
+    case core::ScalarType::Int16:
+      store<std::int16_t>(volume, index, value);
+      break;
+    case core::ScalarType::UInt16:
+      store<std::uint16_t>(volume, index, value);
+      break;
+    case core::ScalarType::Int32:
+      store<std::int32_t>(volume, index, value);
+      break;
+    case core::ScalarType::Float32:
+      store<float>(volume, index, value);
+      break;
+    case core::ScalarType::Float64:
+      store<double>(volume, index, value);
+      break;
+  }
+}
+
+/// The bytes a file holds after the start of its (native) Pixel Data value: the first element
+/// tagged (7FE0,0010) whose declared length is at least `expected` (an icon's pixel data comes
+/// earlier and is smaller). Little- and big-endian, explicit and implicit VR. The file size
+/// when no such element is found (GDCM then decides).
+std::uint64_t native_pixel_bytes(const fs::path& path, std::uint64_t expected) {
+  std::ifstream in(path, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto u32 = [&](std::size_t at, bool big) {
+    std::uint32_t value = 0;
+    for (int b = 0; b < 4; ++b) {
+      const auto byte = static_cast<unsigned char>(bytes[at + (big ? b : 3 - b)]);
+      value = (value << 8) | byte;
+    }
+    return value;
+  };
+  for (const bool big : {false, true}) {
+    const std::string tag =
+        big ? std::string("\x7f\xe0\x00\x10", 4) : std::string("\xe0\x7f\x10\x00", 4);
+    for (auto at = bytes.find(tag); at != std::string::npos; at = bytes.find(tag, at + 1)) {
+      if (at + 12 > bytes.size()) break;
+      const std::string vr = bytes.substr(at + 4, 2);
+      const bool explicit_vr = vr == "OB" || vr == "OW";
+      const std::size_t value = at + (explicit_vr ? 12 : 8);
+      const std::uint32_t length = u32(explicit_vr ? at + 8 : at + 4, big);
+      if (length != 0xffffffffu && length >= expected) return bytes.size() - value;
+    }
+  }
+  return bytes.size();
+}
+
+/// Refuses, naming the file, what GDCM 3.0 cannot read without failing an assertion.
+void check_readable(const DicomHeader& header) {
+  const std::string file = header.file.string();
+  if (header.modality == "RTDOSE" && !header.has_number_of_frames) {
+    throw core::InputError(
+        "RT Dose file without Number of Frames (0028,0008), which GDCM 3.0 "
+        "needs to read it",
+        {file, "", ""});
+  }
+}
+
+/// Decodes one file and writes its frames into `volume` from voxel `first` on, each value as
+/// slope·value + intercept. Throws naming the file when GDCM cannot read or decode it.
+void decode_into(const fs::path& path, const DicomHeader& header, double slope, double intercept,
+                 core::ImageVolume& volume, std::size_t first) {
+  const std::string file = path.string();
+  check_readable(header);
+  gdcm::ImageReader reader;
+  reader.SetFileName(file.c_str());
+  if (!reader.Read()) {
+    throw core::InputError("GDCM cannot read the image: the file is truncated or corrupt",
+                           {file, "", ""});
+  }
+  const gdcm::Image& image = reader.GetImage();
+  const gdcm::PixelFormat& format = image.GetPixelFormat();
+  const std::size_t columns = image.GetDimension(0), rows = image.GetDimension(1);
+  const std::size_t frames = image.GetNumberOfDimensions() > 2 ? image.GetDimension(2) : 1;
+  if (static_cast<int>(columns) != header.columns || static_cast<int>(rows) != header.rows ||
+      static_cast<int>(frames) != header.frames) {
+    throw core::InputError("image size differs from the header", {file, "", ""});
+  }
+  const std::size_t pixels = columns * rows * frames;
+  const std::size_t samples = format.GetSamplesPerPixel();
+  const bool single_bit = format.GetScalarType() == gdcm::PixelFormat::SINGLEBIT;
+  const std::size_t expected =
+      single_bit ? (pixels * samples + 7) / 8 : pixels * format.GetPixelSize();
+  const auto photometric = image.GetPhotometricInterpretation();
+  if (photometric == gdcm::PhotometricInterpretation::YBR_FULL_422 ||
+      photometric == gdcm::PhotometricInterpretation::YBR_PARTIAL_422 ||
+      photometric == gdcm::PhotometricInterpretation::YBR_PARTIAL_420) {
+    if (!image.GetTransferSyntax().IsEncapsulated()) {
+      throw core::InputError(std::string("uncompressed chroma-subsampled colour (") +
+                                 photometric.GetString() + ") is not supported",
+                             {file, "", ""});
+    }
+  }
+  // Native pixel data that ends before the image does: GDCM would pad it silently.
+  if (!image.GetTransferSyntax().IsEncapsulated() && !header.deflated && !single_bit) {
+    const std::uint64_t present = native_pixel_bytes(path, expected);
+    if (present < expected) {
+      throw core::InputError("pixel data is truncated: the image needs " +
+                                 std::to_string(expected) + " bytes, the file holds " +
+                                 std::to_string(present),
+                             {file, "", ""});
+    }
+  }
+  std::vector<char> buffer(image.GetBufferLength());
+  if (buffer.size() < expected || !image.GetBuffer(buffer.data())) {
+    throw core::InputError(std::string("GDCM cannot decode the pixel data (transfer syntax ") +
+                               image.GetTransferSyntax().GetString() +
+                               "): it is truncated or its compression is not supported",
+                           {file, "", ""});
+  }
+  if (samples != 1 && samples != 3) {
+    throw core::InputError(
+        "images with " + std::to_string(samples) + " samples per pixel are not supported",
+        {file, "", ""});
+  }
+  const auto type = format.GetScalarType();
+  if (samples == 1) {
+    if (slope == 1.0 && intercept == 0.0 && !single_bit &&
+        core::scalar_size(volume.scalar_type) == format.GetPixelSize() &&
+        output_type(format, file) == volume.scalar_type) {
+      std::memcpy(volume.voxels.data() + first * format.GetPixelSize(), buffer.data(),
+                  pixels * format.GetPixelSize());
+      return;
+    }
+    for (std::size_t p = 0; p < pixels; ++p) {
+      store_value(volume, first + p, slope * sample(buffer.data(), type, p) + intercept);
+    }
+    return;
+  }
+  // Colour: Rec. 601 luminance of RGB; the Y of YBR is that luminance already.
+  const bool ybr = photometric != gdcm::PhotometricInterpretation::RGB;
+  const bool planar = image.GetPlanarConfiguration() == 1;
+  const std::size_t frame_pixels = columns * rows;
+  for (std::size_t p = 0; p < pixels; ++p) {
+    const std::size_t frame = p / frame_pixels, in_frame = p % frame_pixels;
+    const auto at = [&](std::size_t s) {
+      return planar ? (frame * 3 + s) * frame_pixels + in_frame : p * 3 + s;
+    };
+    const double y = ybr ? sample(buffer.data(), type, at(0))
+                         : 0.299 * sample(buffer.data(), type, at(0)) +
+                               0.587 * sample(buffer.data(), type, at(1)) +
+                               0.114 * sample(buffer.data(), type, at(2));
+    store_value(volume, first + p, slope * y + intercept);
+  }
+}
+
+/// Bytes per voxel the output may need, from the header alone (for the memory check).
+std::int64_t output_bytes(const DicomHeader& header) {
+  if (header.samples == 3) return 4;
+  if (header.bits_allocated <= 8) return 2;
+  return header.bits_allocated <= 16 ? 2 : 8;
+}
+
+/// The decoded pixel format of `file` without its pixel data: GDCM reads the header only.
+gdcm::PixelFormat pixel_format_of(const DicomHeader& header) {
+  check_readable(header);
+  const fs::path& path = header.file;
+  gdcm::ImageReader reader;
+  reader.SetFileName(path.string().c_str());
+  if (!reader.Read()) {
+    throw core::InputError("GDCM cannot read the image: the file is truncated or corrupt",
+                           {path.string(), "", ""});
+  }
+  return reader.GetImage().GetPixelFormat();
+}
+
+/// Voxels and geometry of slices (one file with one or more frames, or several one-frame
+/// files in order) into `loaded`.
+void assemble(const std::vector<DicomHeader>& slices, double slice_spacing_mm,
+              const VolumeReadOptions& options, const std::string& where, LoadedVolume& loaded) {
+  const DicomHeader& first = slices.front();
+  const std::int64_t depth = first.frames * static_cast<std::int64_t>(slices.size());
+  check_voxel_budget({first.columns, first.rows, depth}, 1, output_bytes(first), options, where);
+
+  bool uniform_rescale = true;
+  for (const auto& slice : slices) {
+    uniform_rescale =
+        uniform_rescale && slice.slope == first.slope && slice.intercept == first.intercept;
+  }
+  core::ImageVolume& volume = loaded.volume;
+  volume.dims = {first.columns, first.rows, static_cast<int>(depth)};
+  volume.scalar_type = uniform_rescale ? output_type(pixel_format_of(first), first.file.string())
+                                       : core::ScalarType::Float32;
+  volume.allocate();
+  const std::size_t per_file = static_cast<std::size_t>(first.columns) * first.rows * first.frames;
+  for (std::size_t s = 0; s < slices.size(); ++s) {
+    const double slope = uniform_rescale || slices[s].slope == 0.0 ? 1.0 : slices[s].slope;
+    const double intercept = uniform_rescale ? 0.0 : slices[s].intercept;
+    decode_into(slices[s].file, slices[s], slope, intercept, volume, s * per_file);
+    loaded.files.push_back(slices[s].file);
+  }
+  if (uniform_rescale) apply_rescale(volume, first.slope, first.intercept);
+
+  // Geometry: GDCM's spacing is (column step, row step, frame step) in mm.
+  gdcm::ImageReader reader;
+  reader.SetFileName(first.file.string().c_str());
+  reader.Read();
+  const gdcm::Image& image = reader.GetImage();
+  double frame_step = slice_spacing_mm;
+  if (first.frames > 1) {
+    frame_step = std::abs(image.GetSpacing(2));
+    if (!(frame_step > 0.0)) {
+      frame_step = 1.0;
+      loaded.notes.push_back("frames carry no spacing; 1 mm assumed between them");
+    }
+  }
+  if (!first.has_pixel_spacing && image.GetSpacing(0) == 1.0 && image.GetSpacing(1) == 1.0)
+    loaded.notes.push_back("file gives no Pixel Spacing; 1 mm assumed");
+  if (!first.has_orientation || !first.has_position) {
+    loaded.notes.push_back(
+        "file gives no Image Position/Orientation (Patient); axes taken as "
+        "aligned with the patient");
+  }
+  const core::Vec3 normal = first.row_direction.cross(first.column_direction).normalized();
+  core::Mat3 axes;
+  // Pixel Spacing as the file states it; GDCM ignores it for some storage classes (NM, SC)
+  // but finds it in functional groups of enhanced objects.
+  const core::Vec2 pixel = first.has_pixel_spacing
+                               ? first.pixel_spacing
+                               : core::Vec2(image.GetSpacing(0), image.GetSpacing(1));
+  axes.col(0) = first.row_direction * pixel.x();
+  axes.col(1) = first.column_direction * pixel.y();
+  axes.col(2) = normal * frame_step;
+  set_geometry_mm(volume, axes, first.position, false, where);
+}
+
+}  // namespace
+
+LoadedVolume read_dicom(const fs::path& path, const VolumeReadOptions& options) {
+  gdcm::Trace::SetWarning(false);
+  gdcm::Trace::SetError(false);
+  LoadedVolume loaded;
+  loaded.format = "DICOM";
+  if (fs::is_directory(path)) {
+    auto series = dicom_series_in(path);
+    for (std::size_t s = 1; s < series.size(); ++s)
+      loaded.other_series.push_back(summarize(series[s]));
+    if (series.front().size() == 1) {
+      assemble(series.front(), 1.0, options, series.front().front().file.string(), loaded);
+    } else {
+      const StackedSlices stacked = stack_slices(std::move(series.front()), path.string());
+      assemble(stacked.slices, stacked.spacing_mm, options, path.string(), loaded);
+    }
+    return loaded;
+  }
+  DicomHeader header;
+  if (!read_dicom_header(path, header)) {
+    throw core::InputError(
+        "not a DICOM image (GDCM finds no readable header with rows and columns)",
+        {path.string(), "", ""});
+  }
+  assemble({header}, 1.0, options, path.string(), loaded);
+  return loaded;
+}
+
+}  // namespace viscera::importers::detail

@@ -1,0 +1,28 @@
+#pragma once
+/// Real image files of Debian packages (python3-pydicom, python3-nibabel, libcgal-demo) and what
+/// their headers say, read by volume_headers.py through pydicom and nibabel, not by Viscera.
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace viscera::testing {
+
+/// pydicom's test file `name` (e.g. "CT_small.dcm") or folder.
+std::filesystem::path pydicom_file(const std::string& name);
+
+/// nibabel's test data file `name` (e.g. "anatomical.nii").
+std::filesystem::path nibabel_file(const std::string& name);
+
+/// CGAL's image data (data/images of /usr/share/doc/libcgal-dev/data.tar.gz), extracted into
+/// the running test's scratch folder.
+std::filesystem::path cgal_images(const std::filesystem::path& scratch);
+
+/// The header facts of every real file (volume_headers.py run with /usr/bin/python3).
+nlohmann::json real_volume_headers(const std::filesystem::path& scratch);
+
+/// A copy of `source` in `dir` named `name`.
+std::filesystem::path copy_to(const std::filesystem::path& source, const std::filesystem::path& dir,
+                              const std::string& name);
+
+}  // namespace viscera::testing

@@ -8,8 +8,8 @@
 #include <QStatusBar>
 
 #include "core/error.h"
-#include "core/image/image_volume_io.h"
 #include "core/materials/shipped_materials.h"
+#include "importers/volume/volume_reader.h"
 #include "studio/document/document_commands.h"
 #include "studio/ui/background_task.h"
 #include "studio/ui/material_panel.h"
@@ -161,10 +161,12 @@ bool MainWindow::save_as(const std::filesystem::path& path) {
   return true;
 }
 
-bool MainWindow::new_from_template(const std::string& name, std::uint64_t seed) {
+bool MainWindow::new_from_template(const std::string& name,
+                                   const std::map<std::string, std::string>& overrides,
+                                   std::uint64_t seed) {
   core::Scenario scenario;
   if (!run(tr("Building %1").arg(QString::fromStdString(name)), [&](core::Progress& progress) {
-        scenario = templates::build_from_template(name, {}, seed, progress);
+        scenario = templates::build_from_template(name, overrides, seed, progress);
       })) {
     return false;
   }
@@ -177,7 +179,7 @@ bool MainWindow::open_image_volume(const std::filesystem::path& path) {
   if (!run(tr("Reading %1").arg(QString::fromStdString(path.filename().string())),
            [&](core::Progress& progress) {
              progress.begin_stage("reading the image volume", 1);
-             volume = core::read_volume_vti(path);
+             volume = importers::read_volume(path).volume;
              progress.step();
            })) {
     return false;

@@ -8,6 +8,7 @@
 #include <QMainWindow>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <optional>
 
 #include "studio/document/autosave.h"
@@ -51,10 +52,14 @@ class MainWindow : public QMainWindow {
   bool open_package(const std::filesystem::path& path);
   bool save();
   bool save_as(const std::filesystem::path& path);
-  /// A new document from a catalogue template with its default parameters and `seed`.
-  bool new_from_template(const std::string& name, std::uint64_t seed = 1);
-  /// Reads an image volume (.vti) off the UI thread and shows it in the three slice views and
-  /// as planes in the 3D view — a modelling aid, not part of the scenario.
+  /// A new, unsaved document from a catalogue template with parameter `overrides` (text values
+  /// as for `viscera new --set`) and `seed`, built off the UI thread.
+  bool new_from_template(const std::string& name,
+                         const std::map<std::string, std::string>& overrides = {},
+                         std::uint64_t seed = 1);
+  /// Reads an image volume (a DICOM folder or a DICOM, NIfTI, MetaImage, NRRD, VTI, INR or
+  /// MINC file, through importers::read_volume) off the UI thread and shows it in the three slice
+  /// views and as planes in the 3D view — a modelling aid, not part of the scenario.
   bool open_image_volume(const std::filesystem::path& path);
   /// Builds the primitive off the UI thread, adds it as one undoable command and selects it.
   bool create_primitive(const PrimitiveRequest& request);

@@ -10,21 +10,22 @@
 #include "studio/document/document_commands.h"
 #include "studio/ui/main_window.h"
 #include "studio/ui/scene_view.h"
+#include "studio/ui/template_dialog.h"
 #include "templates/template_catalog.h"
 
 namespace viscera::studio {
 
 void MainWindow::build_menus() {
   QMenu* file = menuBar()->addMenu(tr("&File"));
-  QMenu* templates_menu = file->addMenu(tr("&New from template"));
-  for (const auto& scenario_template : templates::template_catalog()) {
-    const std::string name = scenario_template->name();
-    QAction* action = templates_menu->addAction(QString::fromStdString(name));
-    action->setToolTip(QString::fromStdString(scenario_template->description()));
-    connect(action, &QAction::triggered, this, [this, name] {
-      if (maybe_save()) new_from_template(name);
-    });
-  }
+  file->addAction(tr("&New from template…"), this,
+                  [this] {
+                    if (!maybe_save()) return;
+                    TemplateDialog dialog(this);
+                    if (dialog.exec() == QDialog::Accepted) {
+                      new_from_template(dialog.template_name(), dialog.overrides(), dialog.seed());
+                    }
+                  })
+      ->setShortcut(QKeySequence::New);
   QAction* open = file->addAction(tr("&Open…"), this, [this] {
     if (!maybe_save()) return;
     const QString path = QFileDialog::getExistingDirectory(
@@ -39,8 +40,14 @@ void MainWindow::build_menus() {
     if (!path.isEmpty()) open_package(path.toStdString());
   });
   file->addAction(tr("Open &image volume…"), this, [this] {
-    const QString path = QFileDialog::getOpenFileName(this, tr("Open an image volume"), QString(),
-                                                      tr("VTK image data (*.vti)"));
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Open an image volume"), QString(),
+        tr("Image volumes (*.vti *.nii *.nii.gz *.hdr *.mhd *.mha *.nrrd *.nhdr *.inr *.inr.gz "
+           "*.mnc *.dcm *.ima);;All files (*)"));
+    if (!path.isEmpty()) open_image_volume(path.toStdString());
+  });
+  file->addAction(tr("Open &DICOM folder…"), this, [this] {
+    const QString path = QFileDialog::getExistingDirectory(this, tr("Open a DICOM series"));
     if (!path.isEmpty()) open_image_volume(path.toStdString());
   });
   recent_menu_ = file->addMenu(tr("Open &recent"));

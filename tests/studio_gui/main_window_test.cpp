@@ -34,6 +34,7 @@
 #include "studio/ui/scene_tree.h"
 #include "studio/ui/scene_view.h"
 #include "studio/ui/slice_views.h"
+#include "studio/ui/template_dialog.h"
 #include "templates/template_catalog.h"
 #include "textures/scenario_baking.h"
 
@@ -391,6 +392,32 @@ class MainWindowTest : public QObject {
     QVERIFY(clock.elapsed() < 10'000);
     QVERIFY(error != nullptr);
     QVERIFY_EXCEPTION_THROWN(std::rethrow_exception(error), core::CancelledError);
+  }
+
+  void newFromTemplateUsesTheDialogsParameters() {
+    studio::TemplateDialog dialog;
+    QVERIFY(dialog.select_template("ball"));
+    QVERIFY(dialog.overrides().empty());
+    QVERIFY(dialog.set_parameter("radius", 0.025));
+    QVERIFY(dialog.set_parameter("cell_size", 0.01));
+    QVERIFY(!dialog.set_parameter("no-such-parameter", 1.0));
+    dialog.set_seed(7);
+    const auto overrides = dialog.overrides();
+    QCOMPARE(overrides.size(), std::size_t{2});
+    QCOMPARE(overrides.at("radius"), std::string("0.025"));
+
+    studio::MainWindow window(options());
+    QVERIFY(window.new_from_template(dialog.template_name(), overrides, dialog.seed()));
+    const core::Scenario& scenario = window.document().scenario();
+    QCOMPARE(scenario.provenance.seed, std::uint64_t{7});
+    const core::BoundingBox box = core::bounds(scenario.find_object("ball")->surface);
+    QVERIFY(std::abs(box.max.z() - 0.025) < 1e-6);
+    QVERIFY(window.isWindowModified());
+    QVERIFY(window.windowTitle().startsWith("untitled"));
+    // The same template, parameters and seed through the library give the same scenario.
+    core::Scenario direct = templates::build_from_template("ball", overrides, 7);
+    QCOMPARE(direct.objects.size(), scenario.objects.size());
+    QVERIFY(direct.objects[0].surface == scenario.objects[0].surface);
   }
 
   void screenshotShowsTheTexturedScene() {

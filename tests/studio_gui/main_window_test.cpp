@@ -36,62 +36,15 @@
 #include "studio/ui/slice_views.h"
 #include "studio/ui/template_dialog.h"
 #include "templates/template_catalog.h"
+#include "tests/studio_gui/image_checks.h"
 #include "textures/scenario_baking.h"
 
 namespace fs = std::filesystem;
 using namespace viscera;
+using namespace viscera::studio_tests;
 
-namespace {
-
-/// Share of pixels of `image` whose red exceeds blue by 30: organ tissue, not background.
-double tissue_share(const QImage& image) {
-  const QImage rgb = image.convertToFormat(QImage::Format_RGB32);
-  std::int64_t tissue = 0;
-  for (int y = 0; y < rgb.height(); ++y) {
-    for (int x = 0; x < rgb.width(); ++x) {
-      const QRgb p = rgb.pixel(x, y);
-      if (qRed(p) > qBlue(p) + 30) ++tissue;
-    }
-  }
-  return static_cast<double>(tissue) / (static_cast<double>(rgb.width()) * rgb.height());
-}
-
-/// Standard deviation of the grey levels of `image`.
-double grey_deviation(const QImage& image) {
-  const QImage grey = image.convertToFormat(QImage::Format_Grayscale8);
-  double sum = 0.0, sum2 = 0.0;
-  for (int y = 0; y < grey.height(); ++y) {
-    const uchar* row = grey.constScanLine(y);
-    for (int x = 0; x < grey.width(); ++x) {
-      sum += row[x];
-      sum2 += static_cast<double>(row[x]) * row[x];
-    }
-  }
-  const double n = static_cast<double>(grey.width()) * grey.height();
-  return std::sqrt(std::max(0.0, sum2 / n - (sum / n) * (sum / n)));
-}
-
-/// A CT-like int16 volume of 2 mm voxels centred on the origin: a sphere of `radius` m whose
-/// values fall from +1000 HU at the centre to +500 HU at its rim, in -1000 HU air.
-void write_phantom(const fs::path& path, std::array<int, 3> dims, double radius) {
-  core::ImageVolume volume;
-  volume.dims = dims;
-  volume.spacing = core::Vec3::Constant(0.002);
-  volume.origin = -0.001 * core::Vec3(dims[0] - 1, dims[1] - 1, dims[2] - 1);
-  volume.scalar_type = core::ScalarType::Int16;
-  volume.allocate();
-  auto* voxels = reinterpret_cast<std::int16_t*>(volume.voxels.data());
-  for (int k = 0; k < dims[2]; ++k)
-    for (int j = 0; j < dims[1]; ++j)
-      for (int i = 0; i < dims[0]; ++i) {
-        const double r = volume.index_to_world(core::Vec3(i, j, k)).norm();
-        voxels[volume.linear_index(i, j, k)] =
-            static_cast<std::int16_t>(r < radius ? 1000.0 - 500.0 * r / radius : -1000.0);
-      }
-  core::write_volume_vti(volume, path);
-}
-
-}  // namespace
+/// The slice views, Cancel and template dialog tests (views_test.cpp); returns failures.
+int run_views_test(int argc, char** argv);
 
 class MainWindowTest : public QObject {
   Q_OBJECT
@@ -314,112 +267,6 @@ class MainWindowTest : public QObject {
     QVERIFY(window.report_text().contains("Ended:"));
   }
 
-  void sliceViewsShowTheVolumeWithWindowLevel() {
-    // 48 × 40 × 32 voxels of 2 mm, origin (-47, -39, -31) mm, a 30 mm sphere.
-    const fs::path path = dir() / "sphere.vti";
-    write_phantom(path, {48, 40, 32}, 0.03);
-
-    studio::MainWindow window(options());
-    QStringList errors;
-    window.set_error_handler([&](const QString& m) { errors << m; });
-    window.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&window));
-    QVERIFY(window.open_image_volume(path));
-    studio::SliceViews* slices = window.slice_views();
-    QVERIFY(slices->isVisible());
-    QCOMPARE(slices->slice(0), 24);
-    QCOMPARE(slices->slice(1), 20);
-    QCOMPARE(slices->slice(2), 16);
-    QVERIFY(slices->window() > 1900.0);  // the full range, -1000 to about +1000
-    QVERIFY(std::abs(slices->level()) < 50.0);
-    // The axial plane is index slice k = 16, placed in the 3D view by the volume's geometry.
-    vtkImageSlice* plane = slices->plane_in_3d(2);
-    auto* mapper = vtkImageSliceMapper::SafeDownCast(plane->GetMapper());
-    QVERIFY(mapper != nullptr);
-    QCOMPARE(mapper->GetOrientation(), 2);
-    QCOMPARE(mapper->GetSliceNumber(), 16);
-    const double local[4] = {0.0, 0.0, 16 * 0.002, 1.0};
-    double world[4];
-    plane->GetMatrix()->MultiplyPoint(local, world);
-    QVERIFY(std::abs(world[0] - (-0.047)) < 1e-12);
-    QVERIFY(std::abs(world[2] - (-0.031 + 0.032)) < 1e-12);
-    QVERIFY(window.scene_view()->renderer()->GetViewProps()->IsItemPresent(plane) != 0);
-
-    QImage axial = slices->grab_view(2);
-    const QPoint centre(axial.width() / 2, axial.height() / 2);
-    QVERIFY(qGray(axial.pixel(centre)) > 200);
-    QVERIFY(qGray(axial.pixel(2, 2)) < 60);
-    QVERIFY(grey_deviation(axial) > 30.0);
-
-    slices->set_window_level(10.0, 5000.0);  // everything below the window: black
-    QVERIFY(grey_deviation(slices->grab_view(2)) < 2.0);
-    slices->set_window_level(2000.0, 0.0);
-    slices->set_slice(2, 0);  // below the sphere
-    QCOMPARE(slices->slice(2), 0);
-    axial = slices->grab_view(2);
-    QVERIFY(qGray(axial.pixel(centre)) < 60);
-    slices->set_slice(2, 99);
-    QCOMPARE(slices->slice(2), 31);
-
-    const fs::path broken = dir() / "broken.vti";
-    std::ofstream(broken) << "<VTKFile type=\"ImageData\">";
-    QVERIFY(!window.open_image_volume(broken));
-    QCOMPARE(errors.size(), 1);
-    QVERIFY(!errors[0].contains('\n'));
-    QCOMPARE(slices->slice(2), 31);  // the shown volume stays
-  }
-
-  void cancelStopsBackgroundWork() {
-    studio::MainWindow window(options());
-    window.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&window));
-    QTimer::singleShot(600, &window, [&window] {
-      // The user presses the dialog's Cancel button.
-      auto* dialog = window.findChild<QProgressDialog*>();
-      auto* button = dialog != nullptr ? dialog->findChild<QPushButton*>() : nullptr;
-      if (button != nullptr) button->click();
-    });
-    QElapsedTimer clock;
-    clock.start();
-    const std::exception_ptr error =
-        studio::run_in_background(&window, "spinning", [](core::Progress& progress) {
-          progress.begin_stage("spinning", std::int64_t{1} << 40);
-          for (;;) {
-            progress.step();
-            QThread::usleep(100);
-          }
-        });
-    QVERIFY(clock.elapsed() < 10'000);
-    QVERIFY(error != nullptr);
-    QVERIFY_EXCEPTION_THROWN(std::rethrow_exception(error), core::CancelledError);
-  }
-
-  void newFromTemplateUsesTheDialogsParameters() {
-    studio::TemplateDialog dialog;
-    QVERIFY(dialog.select_template("ball"));
-    QVERIFY(dialog.overrides().empty());
-    QVERIFY(dialog.set_parameter("radius", 0.025));
-    QVERIFY(dialog.set_parameter("cell_size", 0.01));
-    QVERIFY(!dialog.set_parameter("no-such-parameter", 1.0));
-    dialog.set_seed(7);
-    const auto overrides = dialog.overrides();
-    QCOMPARE(overrides.size(), std::size_t{2});
-    QCOMPARE(overrides.at("radius"), std::string("0.025"));
-
-    studio::MainWindow window(options());
-    QVERIFY(window.new_from_template(dialog.template_name(), overrides, dialog.seed()));
-    const core::Scenario& scenario = window.document().scenario();
-    QCOMPARE(scenario.provenance.seed, std::uint64_t{7});
-    const core::BoundingBox box = core::bounds(scenario.find_object("ball")->surface);
-    QVERIFY(std::abs(box.max.z() - 0.025) < 1e-6);
-    QVERIFY(window.isWindowModified());
-    QVERIFY(window.windowTitle().startsWith("untitled"));
-    // The same template, parameters and seed through the library give the same scenario.
-    core::Scenario direct = templates::build_from_template("ball", overrides, 7);
-    QCOMPARE(direct.objects.size(), scenario.objects.size());
-    QVERIFY(direct.objects[0].surface == scenario.objects[0].surface);
-  }
-
   void screenshotShowsTheTexturedScene() {
     studio::MainWindow window(options());
     window.show();
@@ -466,7 +313,8 @@ int main(int argc, char** argv) {
   QApplication::setOrganizationName(QStringLiteral("Viscera-tests"));
   QApplication::setApplicationName(QStringLiteral("viscera-studio-tests"));
   MainWindowTest test;
-  return QTest::qExec(&test, argc, argv);
+  const int failed = QTest::qExec(&test, argc, argv);
+  return failed + run_views_test(argc, argv);
 }
 
 #include "main_window_test.moc"

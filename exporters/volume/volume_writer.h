@@ -1,12 +1,13 @@
 #pragma once
 /// Image volumes to disk, by extension (`viscera volume convert`):
 ///
-/// | extension        | writer                                  | geometry written |
-/// |------------------|-----------------------------------------|-------------------------------------------|
-/// | .vti             | VTK XML (core/image/image_volume_io.h)  | origin, spacing, direction in
-/// metres       | | .nii, .nii.gz    | vtkNIFTIImageWriter                     | pixdim, qform and
-/// sform (code 1, scanner), RAS, mm | | .mha             | written here: MetaImage text header +
-/// raw little-endian voxels | ElementSpacing, Offset, TransformMatrix (LPS, mm) |
+// clang-format off
+/// | extension     | writer                                                   | geometry written                                  |
+/// |---------------|----------------------------------------------------------|---------------------------------------------------|
+/// | .vti          | VTK XML (core/image/image_volume_io.h)                   | origin, spacing, direction in metres              |
+/// | .nii, .nii.gz | vtkNIFTIImageWriter                                      | pixdim, qform and sform, RAS, mm                  |
+/// | .mha          | written here: MetaImage text header + raw little-endian  | ElementSpacing, Offset, TransformMatrix (LPS, mm) |
+// clang-format on
 ///
 /// Every writer goes through exporters::StagedOutput: a failure leaves no partial file and an
 /// older file of the same name stays until the new one is complete.

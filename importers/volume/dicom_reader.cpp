@@ -5,9 +5,11 @@
 // GDCM's own ImageReader decodes each file rather than vtkGDCMImageReader, whose Shift/Scale
 // are documented as inaccurate when Rescale Slope/Intercept vary along a series: here they are
 // applied per slice. DICOM's patient frame is LPS in mm, the frame of ImageVolume.
+#include <fcntl.h>
 #include <gdcmImage.h>
 #include <gdcmImageReader.h>
 #include <gdcmTrace.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstring>
@@ -23,6 +25,36 @@ namespace viscera::importers::detail {
 namespace {
 
 namespace fs = std::filesystem;
+
+/// Sends file descriptor 2 to /dev/null while it lives: the JPEG and JPEG 2000 codecs under
+/// GDCM print their complaints straight to stderr, and a failure is reported once, as a typed
+/// error naming the file. Process-wide; not for concurrent use.
+class ScopedStderrSilence {
+ public:
+  ScopedStderrSilence() : saved_(::dup(2)) {
+    const int null = ::open("/dev/null", O_WRONLY);
+    if (saved_ >= 0 && null >= 0) ::dup2(null, 2);
+    if (null >= 0) ::close(null);
+  }
+  ~ScopedStderrSilence() {
+    if (saved_ >= 0) {
+      ::dup2(saved_, 2);
+      ::close(saved_);
+    }
+  }
+  ScopedStderrSilence(const ScopedStderrSilence&) = delete;
+  ScopedStderrSilence& operator=(const ScopedStderrSilence&) = delete;
+
+ private:
+  int saved_;
+};
+
+/// gdcm::ImageReader::Read() with the codecs' stderr chatter silenced (JPEG 2000 headers are
+/// parsed while reading).
+bool silently_read(gdcm::ImageReader& reader) {
+  const ScopedStderrSilence silence;
+  return reader.Read();
+}
 
 /// The ImageVolume type that holds a file's samples without loss.
 core::ScalarType output_type(const gdcm::PixelFormat& format, const std::string& file) {
@@ -162,7 +194,7 @@ void decode_into(const fs::path& path, const DicomHeader& header, double slope, 
   check_readable(header);
   gdcm::ImageReader reader;
   reader.SetFileName(file.c_str());
-  if (!reader.Read()) {
+  if (!silently_read(reader)) {
     throw core::InputError("GDCM cannot read the image: the file is truncated or corrupt",
                            {file, "", ""});
   }
@@ -200,7 +232,12 @@ void decode_into(const fs::path& path, const DicomHeader& header, double slope, 
     }
   }
   std::vector<char> buffer(image.GetBufferLength());
-  if (buffer.size() < expected || !image.GetBuffer(buffer.data())) {
+  bool decoded = false;
+  {
+    const ScopedStderrSilence silence;
+    decoded = buffer.size() >= expected && image.GetBuffer(buffer.data());
+  }
+  if (!decoded) {
     throw core::InputError(std::string("GDCM cannot decode the pixel data (transfer syntax ") +
                                image.GetTransferSyntax().GetString() +
                                "): it is truncated or its compression is not supported",
@@ -255,7 +292,7 @@ gdcm::PixelFormat pixel_format_of(const DicomHeader& header) {
   const fs::path& path = header.file;
   gdcm::ImageReader reader;
   reader.SetFileName(path.string().c_str());
-  if (!reader.Read()) {
+  if (!silently_read(reader)) {
     throw core::InputError("GDCM cannot read the image: the file is truncated or corrupt",
                            {path.string(), "", ""});
   }
@@ -292,7 +329,7 @@ void assemble(const std::vector<DicomHeader>& slices, double slice_spacing_mm,
   // Geometry: GDCM's spacing is (column step, row step, frame step) in mm.
   gdcm::ImageReader reader;
   reader.SetFileName(first.file.string().c_str());
-  reader.Read();
+  silently_read(reader);
   const gdcm::Image& image = reader.GetImage();
   double frame_step = slice_spacing_mm;
   if (first.frames > 1) {

@@ -3,26 +3,24 @@
 /// (seed 001 §3.3: image data as the modelling aid; seed 003 §II: geometrically accurate models
 /// are reconstructed from sliced data).
 ///
-/// | input                      | reader (file)                       | geometry it carries |
-/// |----------------------------|-------------------------------------|----------------------------------------------------------|
-/// | folder of DICOM files      | GDCM + vtkGDCMImageReader (dicom_reader.cpp) | spacing, Image
-/// Position/Orientation (Patient); slices sorted by position along the normal; several series: the
-/// largest is read, the others listed; rescale slope/intercept applied | | .dcm, .ima, DICM file |
-/// same                                | same, one file (multi-frame files give a volume)         |
-/// | .nii .nii.gz .hdr .img     | vtkNIFTIImageReader (nifti_reader.cpp) | pixdim, sform (if
-/// sform_code > 0) else qform, qfac, scl_slope/inter; 4D: first volume | | .mhd .mha |
-/// vtkMetaImageReader (metaimage_reader.cpp) | ElementSpacing, Offset, TransformMatrix | | .nrrd
-/// .nhdr                | vtkNrrdReader (nrrd_reader.cpp)     | space directions, space origin,
-/// space (RAS/LPS)          | | .vti                       | VTK XML (vti_reader.cpp)            |
-/// spacing, origin, direction matrix, label names           | | .inr .inr.gz               | CGAL
-/// Image_3 (inr_reader.cpp)       | VX/VY/VZ spacing, TX/TY/TZ origin; no orientation         | |
-/// .mnc                       | vtkMINCImageReader (minc_reader.cpp) | MINC 1: step, start,
-/// direction cosines; real values rescaled |
+// clang-format off
+/// | input                    | reader (file)                                         | geometry it carries                                                       |
+/// |--------------------------|-------------------------------------------------------|---------------------------------------------------------------------------|
+/// | folder of DICOM files    | GDCM ImageReader (dicom_series.cpp, dicom_reader.cpp) | Pixel Spacing, Image Position/Orientation (Patient); slices ordered along their normal, evenly spaced; several series: the largest read, the others listed; Rescale Slope/Intercept per slice |
+/// | .dcm, .ima, DICM file    | same                                                  | same, one file (several frames give a volume)                             |
+/// | .nii .nii.gz .hdr/.img   | vtkNIFTIImageReader (nifti_reader.cpp)                | pixdim, sform if sform_code > 0 else qform (qfac), xyzt_units, scl_slope/inter; 4D: first volume |
+/// | .mhd .mha                | vtkMetaImageReader (metaimage_reader.cpp)             | ElementSpacing, Offset, TransformMatrix (read from the header text)       |
+/// | .nrrd .nhdr              | read here, raw or gzip (nrrd_reader.cpp)              | space directions, space origin, space (RAS/LPS); else spacings            |
+/// | .vti                     | VTK XML (vti_reader.cpp)                              | spacing, origin, direction matrix, already in metres                      |
+/// | .inr .inr.gz             | CGAL Image_3 (inr_reader.cpp)                         | VX/VY/VZ spacing, TX/TY/TZ origin (mm); no orientation                     |
+/// | .mnc                     | vtkMINCImageReader (minc_reader.cpp)                  | MINC 1: step, start, direction cosines; real values rescaled; MINC 2 (HDF5) refused |
+// clang-format on
 ///
 /// Results are in metres in patient LPS coordinates (DICOM's: +x left, +y posterior, +z head):
 /// millimetre files are scaled by 0.001, RAS files (NIfTI, MINC, NRRD "RAS") have x and y
 /// negated. Multi-component voxels (RGB) become luminance. Header sizes are checked against
-/// VolumeReadOptions::max_bytes before any voxel is allocated.
+/// VolumeReadOptions::max_bytes before any voxel is allocated; truncated files and NaN or
+/// infinite voxels are refused.
 
 #include <cstdint>
 #include <filesystem>

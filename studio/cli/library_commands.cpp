@@ -8,12 +8,15 @@
 #include "core/error.h"
 #include "core/library/asset_entry_file.h"
 #include "core/library/asset_library.h"
+#include "core/materials/material_file.h"
+#include "core/modelling/model_scene.h"
 #include "core/package/scenario_package.h"
 #include "core/sha256.h"
 #include "core/version.h"
 #include "studio/cli/cli_files.h"
 #include "studio/cli/command_output.h"
 #include "textures/png_io.h"
+#include "textures/surface_thumbnail.h"
 
 namespace viscera::cli {
 namespace {
@@ -26,6 +29,7 @@ struct LibraryOptions {
   std::vector<std::string> tags;
   int version = 0;
   bool all_versions = false;
+  bool no_thumbnail = false;
   bool json = false;
 };
 
@@ -116,7 +120,38 @@ void add(const LibraryOptions& o) {
                                   {"added_by", "viscera " + core::viscera_version()}}
                        .dump();
   }
-  if (!o.thumbnail.empty()) entry.thumbnail = read_file_bytes(o.thumbnail);
+  if (!o.thumbnail.empty()) {
+    entry.thumbnail = read_file_bytes(o.thumbnail);
+  } else if (!o.no_thumbnail && s.type == core::AssetType::Model && ext == "json") {
+    // A model document gets a picture of its tessellation.
+    const core::ModelDocument model =
+        core::model_from_json(nlohmann::json::parse(entry.payload), path.string());
+    entry.thumbnail = textures::encode_png(
+        textures::render_surface_thumbnail(core::tessellate_model(model), 128));
+  } else if (!o.no_thumbnail && s.type == core::AssetType::Material && ext == "json") {
+    // A material with a measured or catalogued curve: a plot of it.
+    const core::Material material =
+        core::material_from_file_json(nlohmann::json::parse(entry.payload), path.string());
+    if (material.stress_strain && material.stress_strain->cubic.size() == 4)
+      entry.thumbnail = textures::encode_png(
+          textures::render_stress_strain_thumbnail(*material.stress_strain, 128));
+  } else if (!o.no_thumbnail && s.type == core::AssetType::Texture) {
+    entry.thumbnail = textures::encode_png(
+        textures::image_thumbnail(textures::decode_image(entry.payload, path.string()), 128));
+  } else if (!o.no_thumbnail && s.type == core::AssetType::Template && ext == "vscz") {
+    // A scenario package: all its objects' surfaces in one picture.
+    const core::Scenario scenario = core::read_package(path);
+    core::SurfaceMesh all;
+    for (const auto& object : scenario.objects) {
+      const auto offset = static_cast<int>(all.vertices.size());
+      all.vertices.insert(all.vertices.end(), object.surface.vertices.begin(),
+                          object.surface.vertices.end());
+      for (const auto& t : object.surface.triangles)
+        all.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+    }
+    if (!all.triangles.empty())
+      entry.thumbnail = textures::encode_png(textures::render_surface_thumbnail(all, 128));
+  }
   core::AssetLibrary library(core::resolve_library_path(o.library));
   const core::AssetSummary added = library.add(entry);
   if (o.json) {
@@ -233,7 +268,10 @@ void add_library_commands(CLI::App& app) {
   add_command->add_option("--tags", o->tags, "Tags, comma separated")->delimiter(',');
   add_command->add_option("--provenance", o->provenance,
                           "Where it came from (default: file and checksum)");
-  add_command->add_option("--thumbnail", o->thumbnail, "PNG thumbnail");
+  add_command->add_option("--thumbnail", o->thumbnail,
+                          "PNG thumbnail (default: a rendering of a model or package, a material's "
+                          "curve, a scaled texture)");
+  add_command->add_flag("--no-thumbnail", o->no_thumbnail, "Store no thumbnail");
   add_command->add_flag("--json", o->json, "Print JSON");
   add_command->callback([o] { add(*o); });
 

@@ -138,6 +138,7 @@ TEST(ModelScene, scene_connects_nearest_knots_groups_and_refuses_dangling_links)
   upper.group = lower.group = "pair";
   upper.connections = {{"lower", 0.01, 80.0}};
   const Scenario scenario = build_model_scenario({upper, lower});
+  EXPECT_EQ(build_model_scenario({upper, lower}), scenario);  // same models, same scene
   ASSERT_EQ(scenario.connections.size(), 1u);
   const Connection& c = scenario.connections.front();
   EXPECT_EQ(c.stiffness, 80.0);

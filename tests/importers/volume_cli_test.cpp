@@ -54,6 +54,25 @@ TEST(VolumeCommand, info_prints_the_geometry_of_a_real_ct_and_a_dicom_folder) {
   EXPECT_NE(folder.out.find("\"Scout\" (2 files)"), std::string::npos) << folder.out;
 }
 
+TEST(VolumeCommand, a_file_the_codecs_cannot_decode_gives_one_line_and_exit_3) {
+  // The JPEG 2000 codec under GDCM complains on stderr itself; the user sees our line only.
+  const fs::path dir = testing::scratch_dir();
+  const fs::path file = testing::pydicom_file("JPEG2000-embedded-sequence-delimiter.dcm");
+  const auto result = run_program("viscera", "volume info " + shell_quote(file.string()), dir);
+  EXPECT_EQ(result.exit_code, 3);
+  EXPECT_TRUE(one_line_naming(result.err, file.string(), "cannot decode the pixel data"))
+      << result.err;
+  // The memory limit of the command line: CGAL's 438 × 353 × 165 liver (24.3 MiB) over 16 MiB.
+  const fs::path liver = testing::cgal_images(dir) / "liver.inr.gz";
+  const auto limited =
+      run_program("viscera", "volume info --max-memory 16 " + shell_quote(liver.string()), dir);
+  EXPECT_EQ(limited.exit_code, 3);
+  EXPECT_TRUE(one_line_naming(
+      limited.err, liver.string(),
+      "header claims 438×353×165 voxels (24 MiB), more than the memory limit of 16 MiB"))
+      << limited.err;
+}
+
 TEST(VolumeCommand, convert_keeps_geometry_and_voxels_in_every_format) {
   const fs::path dir = testing::scratch_dir();
   const fs::path input = testing::nibabel_file("example4d.nii.gz");  // oblique, 2 × 2 × 2.2 mm

@@ -88,6 +88,43 @@ TEST(LibraryCommand, add_list_get_rm_round_trip_through_the_library_option) {
   EXPECT_FALSE(fs::exists(dir / "x.json"));
 }
 
+/// Width and height from a PNG's IHDR chunk.
+std::pair<int, int> png_size(const std::string& png) {
+  const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(png.at(i)); };
+  return {(byte(16) << 24) | (byte(17) << 16) | (byte(18) << 8) | byte(19),
+          (byte(20) << 24) | (byte(21) << 16) | (byte(22) << 8) | byte(23)};
+}
+
+TEST(LibraryCommand, textures_and_packages_get_thumbnails_of_themselves) {
+  const fs::path dir = testing::scratch_dir();
+  fs::current_path(dir);
+  const std::string lib = " --library lib.sqlite";
+  ASSERT_EQ(
+      run_program("viscera", "texture --preset liver --size 96x48 -o liver.png", dir).exit_code, 0);
+  const auto texture = run_program("viscera", "library add liver.png --json" + lib, dir);
+  ASSERT_EQ(texture.exit_code, 0) << texture.err;
+  EXPECT_EQ(nlohmann::json::parse(texture.out)["type"], "texture");
+  ASSERT_EQ(
+      run_program("viscera", "library get liver -o l.png --thumbnail lt.png" + lib, dir).exit_code,
+      0);
+  EXPECT_EQ(png_size(read_bytes(dir / "lt.png")), std::make_pair(128, 64));  // aspect kept
+
+  ASSERT_EQ(run_program("viscera", "new --template ball --set cell_size=0.012 -o ball.vscz", dir)
+                .exit_code,
+            0);
+  const auto package = run_program("viscera", "library add ball.vscz --json" + lib, dir);
+  ASSERT_EQ(package.exit_code, 0) << package.err;
+  const auto json = nlohmann::json::parse(package.out);
+  EXPECT_EQ(json["type"], "template");
+  EXPECT_TRUE(json["thumbnail"].get<bool>());
+  ASSERT_EQ(run_program("viscera", "library get ball -o back.vscz --thumbnail bt.png" + lib, dir)
+                .exit_code,
+            0);
+  EXPECT_EQ(png_size(read_bytes(dir / "bt.png")), std::make_pair(128, 128));
+  EXPECT_EQ(read_bytes(dir / "back.vscz"), read_bytes(dir / "ball.vscz"));
+  EXPECT_EQ(run_program("viscera", "validate back.vscz", dir).exit_code, 0);
+}
+
 TEST(LibraryCommand, environment_variable_chooses_the_library_and_errors_have_exit_codes) {
   const fs::path dir = testing::scratch_dir();
   fs::current_path(dir);  // the programs run where the test runs; relative names are in dir

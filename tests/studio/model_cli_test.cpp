@@ -71,7 +71,8 @@ TEST(ModelCommand, ball_flat_and_branching_pipe_become_a_package_the_simulator_r
   EXPECT_NEAR(fit["fit"]["cubic"][3].get<double>(), 300.0e3, 20.0);
   EXPECT_LT(fit["fit"]["rms_error"].get<double>(), 1.0);  // Pa, on stresses up to 17 kPa
   EXPECT_GT(fit["distance_stiffness"].get<double>(), 0.0);
-  viscera_ok("library add tissue.json --tags measured" + lib, dir);
+  // In the library it gets a plot of its curve as thumbnail.
+  EXPECT_TRUE(viscera_json("library add tissue.json --tags measured" + lib, dir)["thumbnail"]);
 
   // The three object types.
   viscera_ok(
@@ -139,7 +140,11 @@ TEST(ModelCommand, ball_flat_and_branching_pipe_become_a_package_the_simulator_r
 
   // The ball model goes into the library and comes back byte for byte.
   viscera_ok("library add ball.json --tags organ" + lib, dir);
-  viscera_ok("library get ball -o ball-from-library.json" + lib, dir);
+  viscera_ok("library get ball -o ball-from-library.json --thumbnail ball.png" + lib, dir);
+  const std::string png = read_bytes(dir / "ball.png");  // rendered when the model was added
+  ASSERT_GT(png.size(), 24u);
+  EXPECT_EQ(png.substr(1, 3), "PNG");
+  EXPECT_EQ(static_cast<unsigned char>(png[19]), 128u);  // IHDR width, big-endian
   EXPECT_EQ(read_bytes(dir / "ball-from-library.json"), read_bytes(dir / "ball.json"));
 
   const auto package = viscera_json(
@@ -170,6 +175,24 @@ TEST(ModelCommand, ball_flat_and_branching_pipe_become_a_package_the_simulator_r
   EXPECT_LT(displacement, 0.05);
   for (const auto& value : report["energy"]["total"])
     EXPECT_TRUE(std::isfinite(value.get<double>()));
+}
+
+TEST(ModelCommand, every_new_command_has_help_and_a_package_is_the_same_bytes_twice) {
+  const fs::path dir = testing::scratch_dir();
+  fs::current_path(dir);
+  for (const char* command :
+       {"model", "model new", "model move-point", "model branch", "model layer", "model connect",
+        "model package", "material fit", "library", "library add", "library get"}) {
+    const auto result = run_program("viscera", std::string(command) + " --help", dir);
+    EXPECT_EQ(result.exit_code, 0) << command;
+    EXPECT_NE(result.out.find("Usage"), std::string::npos) << command;
+  }
+  viscera_ok("model new ball --id b --radius 0.02 --subdivisions 2 -o b.json", dir);
+  viscera_ok("model layer b.json --layers 2 --thickness 0.004 --mode scale", dir);
+  viscera_ok("model package b.json -o one.vscene", dir);
+  viscera_ok("model package b.json -o two.vscene", dir);
+  for (const char* file : {"manifest.json", "objects/b/surface.vtp", "objects/b/body.vtu"})
+    EXPECT_EQ(read_bytes(dir / "one.vscene" / file), read_bytes(dir / "two.vscene" / file)) << file;
 }
 
 TEST(ModelCommand, bad_edits_have_typed_exit_codes_and_leave_the_model_alone) {

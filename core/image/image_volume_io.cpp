@@ -75,6 +75,10 @@ void write_image(vtkImageData& image, const std::filesystem::path& path) {
 
 }  // namespace
 
+void volume_to_image_data(const ImageVolume& volume, vtkImageData& image) {
+  fill_image(volume, image);
+}
+
 void write_volume_vti(const ImageVolume& volume, const std::filesystem::path& path) {
   if (volume.voxels.size() != volume.voxel_count() * scalar_size(volume.scalar_type)) {
     throw OutputError("voxel buffer does not match the dimensions", {path.string(), "", ""});

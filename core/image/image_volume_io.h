@@ -7,7 +7,13 @@
 
 #include "core/image/image_volume.h"
 
+class vtkImageData;
+
 namespace viscera::core {
+
+/// Copies `volume` into `image`: dimensions, spacing, origin, direction matrix and one scalar
+/// component named "scalars" (for views and filters that take VTK images).
+void volume_to_image_data(const ImageVolume& volume, vtkImageData& image);
 
 /// Writes `volume` to `path` (uncompressed, appended raw: same volume → same bytes) through a
 /// temporary sibling. Throws OutputError naming the file.

@@ -1,0 +1,312 @@
+#include "studio/ui/main_window.h"
+
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QMessageBox>
+#include <QPlainTextEdit>
+#include <QSettings>
+#include <QStatusBar>
+
+#include "core/error.h"
+#include "core/materials/shipped_materials.h"
+#include "importers/volume/volume_reader.h"
+#include "studio/document/document_commands.h"
+#include "studio/ui/background_task.h"
+#include "studio/ui/material_panel.h"
+#include "studio/ui/scene_tree.h"
+#include "studio/ui/scene_view.h"
+#include "studio/ui/slice_views.h"
+#include "templates/template_catalog.h"
+
+namespace viscera::studio {
+
+MainWindow::MainWindow(MainWindowOptions options, QWidget* parent)
+    : QMainWindow(parent), options_(std::move(options)) {
+  launcher_.set_simulator(options_.simulator);
+  autosave_ = new Autosave(document_, options_.recovery_dir, options_.autosave_interval_ms, this);
+  connect(autosave_, &Autosave::autosave_failed, this, [this](const QString& message) {
+    statusBar()->showMessage(tr("Autosave failed: %1").arg(message), 10'000);
+  });
+  connect(autosave_, &Autosave::autosaved, this,
+          [this] { statusBar()->showMessage(tr("Autosaved a recovery copy"), 5'000); });
+
+  view_ = new SceneView(this);
+  setCentralWidget(view_);
+  build_docks();
+  build_menus();
+
+  connect(&document_, &ScenarioDocument::changed, this, &MainWindow::on_document_changed);
+  connect(&document_, &ScenarioDocument::status_changed, this, &MainWindow::update_title);
+  connect(view_, &SceneView::object_picked, this, &MainWindow::select_object);
+  connect(tree_, &SceneTree::object_selected, this, &MainWindow::select_object);
+  connect(tree_, &SceneTree::visibility_changed, view_, &SceneView::set_object_visible);
+  connect(materials_, &MaterialPanel::edit_failed, this, &MainWindow::show_error);
+  connect(&launcher_, &TrainingLauncher::finished, this, [this](const TrainingResult& result) {
+    QString text = summarize_report(result.report);
+    if (result.report.is_null()) {
+      text += tr("\nThe simulator ended with code %1.\n%2")
+                  .arg(result.exit_code)
+                  .arg(result.output.trimmed());
+    }
+    report_->setPlainText(text);
+    statusBar()->showMessage(tr("Training session ended"), 5'000);
+    emit training_finished(result);
+  });
+
+  resize(1280, 800);
+  on_document_changed(ChangeKind::Everything, {});
+  update_title();
+}
+
+MainWindow::~MainWindow() {
+  autosave_->wait();
+}
+
+void MainWindow::build_docks() {
+  tree_ = new SceneTree(this);
+  auto* tree_dock = new QDockWidget(tr("Scene"), this);
+  tree_dock->setObjectName("scene-dock");
+  tree_dock->setWidget(tree_);
+  addDockWidget(Qt::LeftDockWidgetArea, tree_dock);
+
+  materials_ = new MaterialPanel(document_, this);
+  auto* material_dock = new QDockWidget(tr("Material"), this);
+  material_dock->setObjectName("material-dock");
+  material_dock->setWidget(materials_);
+  addDockWidget(Qt::RightDockWidgetArea, material_dock);
+
+  report_ = new QPlainTextEdit(this);
+  report_->setReadOnly(true);
+  report_->setPlaceholderText(tr("Launch a training session to see its report here."));
+  auto* report_dock = new QDockWidget(tr("Training report"), this);
+  report_dock->setObjectName("report-dock");
+  report_dock->setWidget(report_);
+  addDockWidget(Qt::RightDockWidgetArea, report_dock);
+
+  slices_ = new SliceViews(this);
+  slice_dock_ = new QDockWidget(tr("Image volume"), this);
+  slice_dock_->setObjectName("image-dock");
+  slice_dock_->setWidget(slices_);
+  addDockWidget(Qt::BottomDockWidgetArea, slice_dock_);
+  slice_dock_->hide();
+  connect(slices_, &SliceViews::changed, view_, &SceneView::render);
+
+  resizeDocks({tree_dock, material_dock}, {240, 320}, Qt::Horizontal);
+}
+
+void MainWindow::update_title() {
+  setWindowTitle(tr("%1[*] — Viscera Studio").arg(document_.display_name()));
+  setWindowModified(document_.is_dirty());
+}
+
+void MainWindow::on_document_changed(ChangeKind kind, const QString& /*id*/) {
+  if (kind == ChangeKind::Materials) return;  // the panel follows by itself
+  view_->show_scenario(document_.scenario(), document_.files(), kind == ChangeKind::Everything);
+  tree_->show_scenario(document_.scenario());
+  select_object(view_->selected_object());
+}
+
+void MainWindow::select_object(const QString& id) {
+  view_->select_object(id);
+  tree_->select_object(view_->selected_object());
+  materials_->show_object(view_->selected_object());
+}
+
+void MainWindow::show_error(const QString& message) {
+  if (error_handler_) {
+    error_handler_(message);
+  } else {
+    QMessageBox::critical(this, tr("Viscera Studio"), message);
+  }
+}
+
+bool MainWindow::run(const QString& title, const std::function<void(core::Progress&)>& work) {
+  const std::exception_ptr error = run_in_background(this, title, work);
+  if (!error) return true;
+  try {
+    std::rethrow_exception(error);
+  } catch (const core::CancelledError&) {
+    statusBar()->showMessage(tr("%1: cancelled").arg(title), 5'000);
+  } catch (const std::exception& e) {
+    show_error(QString::fromUtf8(e.what()));
+  }
+  return false;
+}
+
+bool MainWindow::open_package(const std::filesystem::path& path) {
+  DocumentContent content;
+  if (!run(tr("Opening %1").arg(QString::fromStdString(path.filename().string())),
+           [&](core::Progress& progress) { content = read_document_content(path, progress); })) {
+    return false;
+  }
+  document_.adopt_opened(std::move(content), path);
+  remember_recent(path);
+  return true;
+}
+
+bool MainWindow::save() {
+  if (document_.path().empty()) return ask_save_as();
+  return save_as(document_.path());
+}
+
+bool MainWindow::save_as(const std::filesystem::path& path) {
+  const DocumentContent snapshot = document_.content();
+  if (!run(tr("Saving %1").arg(QString::fromStdString(path.filename().string())),
+           [&](core::Progress& progress) { write_document_content(snapshot, path, progress); })) {
+    return false;
+  }
+  document_.mark_saved(path);
+  remember_recent(path);
+  statusBar()->showMessage(tr("Saved %1").arg(QString::fromStdString(path.string())), 5'000);
+  return true;
+}
+
+bool MainWindow::new_from_template(const std::string& name,
+                                   const std::map<std::string, std::string>& overrides,
+                                   std::uint64_t seed) {
+  core::Scenario scenario;
+  if (!run(tr("Building %1").arg(QString::fromStdString(name)), [&](core::Progress& progress) {
+        scenario = templates::build_from_template(name, overrides, seed, progress);
+      })) {
+    return false;
+  }
+  document_.reset({std::move(scenario), {}});
+  return true;
+}
+
+bool MainWindow::open_image_volume(const std::filesystem::path& path) {
+  core::ImageVolume volume;
+  if (!run(tr("Reading %1").arg(QString::fromStdString(path.filename().string())),
+           [&](core::Progress& progress) {
+             progress.begin_stage("reading the image volume", 1);
+             volume = importers::read_volume(path).volume;
+             progress.step();
+           })) {
+    return false;
+  }
+  slices_->set_volume(volume);
+  slice_dock_->show();
+  view_->set_image_planes(
+      {slices_->plane_in_3d(0), slices_->plane_in_3d(1), slices_->plane_in_3d(2)});
+  view_->reset_camera();
+  view_->render();
+  return true;
+}
+
+bool MainWindow::create_primitive(const PrimitiveRequest& request) {
+  // The new object takes the selected object's material, else the scenario's first, else
+  // myometrium from the shipped library.
+  const auto& scenario = document_.scenario();
+  core::Material material;
+  const core::SceneObject* selected = scenario.find_object(view_->selected_object().toStdString());
+  if (selected != nullptr && scenario.materials.contains(selected->material)) {
+    material = scenario.materials.at(selected->material);
+  } else if (!scenario.materials.empty()) {
+    material = scenario.materials.begin()->second;
+  } else {
+    material = core::shipped_material("myometrium");
+  }
+  const std::string id = unique_object_id(scenario, to_string(request.kind));
+  core::SceneObject object;
+  if (!run(tr("Creating %1").arg(QString::fromStdString(id)), [&](core::Progress& progress) {
+        object = build_primitive_object(request, id, material, progress);
+      })) {
+    return false;
+  }
+  try {
+    document_.undo_stack()->push(new AddObjectCommand(document_, std::move(object), material));
+  } catch (const std::exception& e) {
+    show_error(QString::fromUtf8(e.what()));
+    return false;
+  }
+  select_object(QString::fromStdString(id));
+  return true;
+}
+
+bool MainWindow::launch_training(double duration_s) {
+  try {
+    const std::filesystem::path package = launcher_.prepare().toStdString();
+    const DocumentContent snapshot = document_.content();
+    if (!run(tr("Exporting the session package"), [&](core::Progress& progress) {
+          write_document_content(snapshot, package, progress);
+        })) {
+      return false;
+    }
+    launcher_.start(duration_s);
+  } catch (const std::exception& e) {
+    show_error(QString::fromUtf8(e.what()));
+    return false;
+  }
+  report_->setPlainText(tr("Training session running…"));
+  statusBar()->showMessage(tr("Training session running"));
+  return true;
+}
+
+QString MainWindow::report_text() const {
+  return report_->toPlainText();
+}
+
+bool MainWindow::offer_recovery(std::function<bool(const RecoveryCopy&)> ask) {
+  const auto copy = Autosave::find_recovery(options_.recovery_dir);
+  if (!copy) return false;
+  if (!ask) {
+    ask = [this](const RecoveryCopy& c) {
+      const QString of = c.original_path.empty() ? tr("an untitled document")
+                                                 : QString::fromStdString(c.original_path.string());
+      return QMessageBox::question(
+                 this, tr("Recover unsaved work"),
+                 tr("Viscera Studio did not close normally. Recover the unsaved changes to %1 "
+                    "autosaved at %2?")
+                     .arg(of, c.written.toLocalTime().toString(Qt::TextDate))) == QMessageBox::Yes;
+    };
+  }
+  if (!ask(*copy)) {
+    autosave_->discard();
+    return false;
+  }
+  DocumentContent content;
+  if (!run(tr("Recovering"), [&](core::Progress& progress) {
+        content = read_document_content(copy->package, progress);
+      })) {
+    return false;
+  }
+  document_.reset(std::move(content), copy->original_path, true);
+  return true;
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+  if (!maybe_save()) {
+    event->ignore();
+    return;
+  }
+  launcher_.stop();
+  autosave_->wait();
+  autosave_->discard();
+  event->accept();
+}
+
+bool MainWindow::maybe_save() {
+  if (!document_.is_dirty()) return true;
+  const auto answer = QMessageBox::question(
+      this, tr("Viscera Studio"), tr("Save the changes to %1?").arg(document_.display_name()),
+      QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+  if (answer == QMessageBox::Cancel) return false;
+  return answer == QMessageBox::Discard || save();
+}
+
+QStringList MainWindow::recent_files() const {
+  return QSettings().value(QStringLiteral("recent_files")).toStringList();
+}
+
+void MainWindow::remember_recent(const std::filesystem::path& path) {
+  const QString file = QString::fromStdString(std::filesystem::absolute(path).string());
+  QStringList files = recent_files();
+  files.removeAll(file);
+  files.prepend(file);
+  while (files.size() > 8)
+    files.removeLast();
+  QSettings().setValue(QStringLiteral("recent_files"), files);
+  rebuild_recent_menu();
+}
+
+}  // namespace viscera::studio

@@ -1,0 +1,116 @@
+#pragma once
+/// The studio's main window (issue 9): a 3D view of the document's scenario in the centre, the
+/// scene tree and the material panel docked on the left and right, a training report dock, and
+/// the File, Edit, Create and Training menus. It owns the document and its autosave. Every
+/// action is also a public function so tests drive the real window; errors go to a dialog with
+/// a one-line message and leave the document as it was. Long work runs off the UI thread.
+
+#include <QMainWindow>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <optional>
+
+#include "studio/document/autosave.h"
+#include "studio/document/primitive_objects.h"
+#include "studio/document/scenario_document.h"
+#include "studio/ui/training_launcher.h"
+
+class QMenu;
+class QPlainTextEdit;
+
+namespace viscera::studio {
+
+class MaterialPanel;
+class SceneTree;
+class SliceViews;
+class SceneView;
+
+/// Where the window keeps its recovery copy and how often it writes it.
+struct MainWindowOptions {
+  std::filesystem::path recovery_dir = Autosave::default_recovery_dir();
+  int autosave_interval_ms = 60'000;
+  QString simulator = TrainingLauncher::default_simulator();
+};
+
+class MainWindow : public QMainWindow {
+  Q_OBJECT
+
+ public:
+  explicit MainWindow(MainWindowOptions options = {}, QWidget* parent = nullptr);
+  ~MainWindow() override;
+
+  ScenarioDocument& document() { return document_; }
+  SceneView* scene_view() const { return view_; }
+  SceneTree* scene_tree() const { return tree_; }
+  MaterialPanel* material_panel() const { return materials_; }
+  SliceViews* slice_views() const { return slices_; }
+  Autosave& autosave() { return *autosave_; }
+  TrainingLauncher& launcher() { return launcher_; }
+
+  /// Each returns false after showing an error dialog (the document unchanged).
+  bool open_package(const std::filesystem::path& path);
+  bool save();
+  bool save_as(const std::filesystem::path& path);
+  /// A new, unsaved document from a catalogue template with parameter `overrides` (text values
+  /// as for `viscera new --set`) and `seed`, built off the UI thread.
+  bool new_from_template(const std::string& name,
+                         const std::map<std::string, std::string>& overrides = {},
+                         std::uint64_t seed = 1);
+  /// Reads an image volume (a DICOM folder or a DICOM, NIfTI, MetaImage, NRRD, VTI, INR or
+  /// MINC file, through importers::read_volume) off the UI thread and shows it in the three slice
+  /// views and as planes in the 3D view — a modelling aid, not part of the scenario.
+  bool open_image_volume(const std::filesystem::path& path);
+  /// Builds the primitive off the UI thread, adds it as one undoable command and selects it.
+  bool create_primitive(const PrimitiveRequest& request);
+  /// Selects an object in the tree, the 3D view and the material panel.
+  void select_object(const QString& id);
+  /// Exports to a temporary package and starts the headless simulator; its report appears in
+  /// the report dock when it ends (training_finished()).
+  bool launch_training(double duration_s = 0.0);
+  QString report_text() const;
+
+  /// If an earlier session left a recovery copy, asks (through `ask`, a dialog by default)
+  /// whether to recover it and opens it as an unsaved document; returns whether it did.
+  bool offer_recovery(std::function<bool(const RecoveryCopy&)> ask = {});
+  /// Replaces the error dialog (tests): receives the one-line message.
+  void set_error_handler(std::function<void(const QString&)> handler) {
+    error_handler_ = std::move(handler);
+  }
+  QStringList recent_files() const;
+
+ signals:
+  void training_finished(const viscera::studio::TrainingResult& result);
+
+ protected:
+  void closeEvent(QCloseEvent* event) override;
+
+ private:
+  void build_menus();
+  void build_docks();
+  void update_title();
+  void on_document_changed(ChangeKind kind, const QString& id);
+  void show_error(const QString& message);
+  /// Runs `work` in the background; shows its error (not a cancellation) and returns false.
+  bool run(const QString& title, const std::function<void(core::Progress&)>& work);
+  void remember_recent(const std::filesystem::path& path);
+  void rebuild_recent_menu();
+  void ask_create(PrimitiveKind kind);
+  bool ask_save_as();
+  bool maybe_save();
+
+  MainWindowOptions options_;
+  ScenarioDocument document_;
+  Autosave* autosave_ = nullptr;
+  TrainingLauncher launcher_;
+  SceneView* view_ = nullptr;
+  SceneTree* tree_ = nullptr;
+  MaterialPanel* materials_ = nullptr;
+  QPlainTextEdit* report_ = nullptr;
+  SliceViews* slices_ = nullptr;
+  class QDockWidget* slice_dock_ = nullptr;
+  QMenu* recent_menu_ = nullptr;
+  std::function<void(const QString&)> error_handler_;
+};
+
+}  // namespace viscera::studio

@@ -1,0 +1,233 @@
+#include "studio/ui/scene_view.h"
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkImageData.h>
+#include <vtkPNGReader.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkPropPicker.h>
+#include <vtkProperty.h>
+#include <vtkRenderer.h>
+#include <vtkTexture.h>
+
+#include <QMouseEvent>
+#include <cmath>
+
+#include "core/package/vtk_mesh_io.h"
+
+namespace viscera::studio {
+namespace {
+
+std::array<double, 3> role_colour(core::ObjectRole role) {
+  switch (role) {
+    case core::ObjectRole::Organ:
+      return {0.86, 0.52, 0.50};
+    case core::ObjectRole::Pathology:
+      return {0.93, 0.80, 0.55};
+    case core::ObjectRole::Vessel:
+      return {0.70, 0.12, 0.12};
+    case core::ObjectRole::Fixture:
+      return {0.62, 0.62, 0.66};
+    case core::ObjectRole::Instrument:
+      return {0.80, 0.82, 0.86};
+  }
+  return {0.8, 0.8, 0.8};
+}
+
+/// The albedo map of the object's texture as a VTK texture, or null.
+vtkSmartPointer<vtkTexture> albedo_texture(const core::Scenario& scenario,
+                                           const core::SceneObject& object,
+                                           const PackageFiles& files) {
+  const auto spec = scenario.textures.find(object.texture);
+  if (object.surface.uvs.empty() || spec == scenario.textures.end()) return nullptr;
+  const auto map = spec->second.maps.find("albedo");
+  if (map == spec->second.maps.end()) return nullptr;
+  const auto bytes = files.find(map->second);
+  if (bytes == files.end() || bytes->second.empty()) return nullptr;
+  auto reader = vtkSmartPointer<vtkPNGReader>::New();
+  reader->SetMemoryBuffer(bytes->second.data());
+  reader->SetMemoryBufferLength(static_cast<vtkIdType>(bytes->second.size()));
+  reader->Update();
+  auto texture = vtkSmartPointer<vtkTexture>::New();
+  texture->SetInputData(reader->GetOutput());
+  texture->InterpolateOn();
+  texture->RepeatOn();
+  return texture;
+}
+
+/// The 12 edges of an axis-aligned box as line cells.
+vtkSmartPointer<vtkPolyData> box_outline(const double b[6]) {
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  for (int k = 0; k < 8; ++k) {
+    points->InsertNextPoint(b[(k & 1) ? 1 : 0], b[(k & 2) ? 3 : 2], b[(k & 4) ? 5 : 4]);
+  }
+  auto lines = vtkSmartPointer<vtkCellArray>::New();
+  for (int a = 0; a < 8; ++a) {
+    for (const int bit : {1, 2, 4}) {
+      if ((a & bit) == 0) {
+        const vtkIdType edge[2] = {a, a | bit};
+        lines->InsertNextCell(2, edge);
+      }
+    }
+  }
+  auto outline = vtkSmartPointer<vtkPolyData>::New();
+  outline->SetPoints(points);
+  outline->SetLines(lines);
+  return outline;
+}
+
+}  // namespace
+
+SceneView::SceneView(QWidget* parent) : QVTKOpenGLNativeWidget(parent) {
+  auto window = vtkSmartPointer<vtkGenericOpenGLRenderWindow>::New();
+  setRenderWindow(window);
+  renderer_ = vtkSmartPointer<vtkRenderer>::New();
+  renderer_->SetBackground(0.16, 0.18, 0.22);
+  renderer_->SetBackground2(0.42, 0.46, 0.54);
+  renderer_->GradientBackgroundOn();
+  window->AddRenderer(renderer_);
+}
+
+void SceneView::show_scenario(const core::Scenario& scenario, const PackageFiles& files,
+                              bool frame) {
+  for (const auto& [id, actor] : actors_)
+    renderer_->RemoveActor(actor);
+  actors_.clear();
+  for (const auto& object : scenario.objects) {
+    if (object.surface.triangles.empty()) continue;
+    auto polydata = vtkSmartPointer<vtkPolyData>::New();
+    core::surface_to_polydata(object.surface, {}, *polydata);
+    auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+    mapper->SetInputData(polydata);
+    mapper->ScalarVisibilityOff();
+    auto actor = vtkSmartPointer<vtkActor>::New();
+    actor->SetMapper(mapper);
+    const auto colour = role_colour(object.role);
+    if (auto texture = albedo_texture(scenario, object, files)) {
+      actor->SetTexture(texture);
+      actor->GetProperty()->SetColor(1.0, 1.0, 1.0);
+    } else {
+      actor->GetProperty()->SetColor(colour[0], colour[1], colour[2]);
+    }
+    actor->GetProperty()->SetSpecular(0.25);
+    actor->GetProperty()->SetSpecularPower(20.0);
+    const QString id = QString::fromStdString(object.id);
+    actor->SetVisibility(!hidden_[id]);
+    renderer_->AddActor(actor);
+    actors_[id] = actor;
+  }
+  if (!actors_.contains(selected_)) selected_.clear();
+  update_outline();
+  if (frame) reset_camera();
+  render();
+}
+
+void SceneView::set_image_planes(const std::vector<vtkProp3D*>& planes) {
+  for (const auto& plane : image_planes_)
+    renderer_->RemoveViewProp(plane);
+  image_planes_.clear();
+  for (vtkProp3D* plane : planes) {
+    plane->SetPickable(false);
+    renderer_->AddViewProp(plane);
+    image_planes_.emplace_back(plane);
+  }
+  render();
+}
+
+void SceneView::reset_camera() {
+  renderer_->ResetCamera();
+  vtkCamera* camera = renderer_->GetActiveCamera();
+  const double* focal = camera->GetFocalPoint();
+  const double distance = camera->GetDistance();
+  const double direction[3] = {0.45, -0.8, 0.4};
+  const double length = std::sqrt(0.45 * 0.45 + 0.8 * 0.8 + 0.4 * 0.4);
+  camera->SetPosition(focal[0] + distance * direction[0] / length,
+                      focal[1] + distance * direction[1] / length,
+                      focal[2] + distance * direction[2] / length);
+  camera->SetViewUp(0.0, 0.0, 1.0);
+  renderer_->ResetCamera();
+}
+
+void SceneView::render() {
+  renderWindow()->Render();
+  update();
+}
+
+void SceneView::set_object_visible(const QString& id, bool visible) {
+  hidden_[id] = !visible;
+  const auto actor = actors_.find(id);
+  if (actor != actors_.end()) actor->second->SetVisibility(visible);
+  update_outline();
+  renderWindow()->Render();
+  update();
+}
+
+bool SceneView::object_visible(const QString& id) const {
+  const auto actor = actors_.find(id);
+  return actor != actors_.end() && actor->second->GetVisibility() != 0;
+}
+
+void SceneView::select_object(const QString& id) {
+  selected_ = actors_.contains(id) ? id : QString();
+  update_outline();
+  renderWindow()->Render();
+  update();
+}
+
+int SceneView::textured_object_count() const {
+  int count = 0;
+  for (const auto& [id, actor] : actors_)
+    count += actor->GetTexture() != nullptr ? 1 : 0;
+  return count;
+}
+
+void SceneView::update_outline() {
+  if (outline_ != nullptr) renderer_->RemoveActor(outline_);
+  outline_ = nullptr;
+  const auto actor = actors_.find(selected_);
+  if (actor == actors_.end() || actor->second->GetVisibility() == 0) return;
+  auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+  mapper->SetInputData(box_outline(actor->second->GetBounds()));
+  outline_ = vtkSmartPointer<vtkActor>::New();
+  outline_->SetMapper(mapper);
+  outline_->SetPickable(false);
+  outline_->GetProperty()->SetColor(1.0, 0.85, 0.2);
+  outline_->GetProperty()->SetLineWidth(2.0);
+  outline_->GetProperty()->LightingOff();
+  renderer_->AddActor(outline_);
+}
+
+QString SceneView::object_at(const QPoint& position) {
+  const double ratio = devicePixelRatioF();
+  const double x = position.x() * ratio;
+  const double y = (height() - 1 - position.y()) * ratio;
+  auto picker = vtkSmartPointer<vtkPropPicker>::New();
+  if (picker->Pick(x, y, 0.0, renderer_) == 0) return {};
+  vtkActor* picked = picker->GetActor();
+  for (const auto& [id, actor] : actors_) {
+    if (actor.GetPointer() == picked) return id;
+  }
+  return {};
+}
+
+void SceneView::mousePressEvent(QMouseEvent* event) {
+  press_position_ = event->pos();
+  QVTKOpenGLNativeWidget::mousePressEvent(event);
+}
+
+void SceneView::mouseReleaseEvent(QMouseEvent* event) {
+  QVTKOpenGLNativeWidget::mouseReleaseEvent(event);
+  if (event->button() == Qt::LeftButton &&
+      (event->pos() - press_position_).manhattanLength() <= 3) {
+    const QString id = object_at(event->pos());
+    select_object(id);
+    emit object_picked(id);
+  }
+}
+
+}  // namespace viscera::studio

@@ -3,34 +3,12 @@
 // (vtk_mesh_io.h) and the same mesh gives the same bytes.
 #include "core/error.h"
 #include "core/package/vtk_mesh_io.h"
+#include "core/xml_text.h"
 #include "exporters/format_writers.h"
 #include "exporters/staged_output.h"
 
 namespace viscera::exporters {
 namespace {
-
-std::string xml_escaped(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
 
 void write_multiblock(const std::vector<ExportObject>& objects, const std::filesystem::path& main,
                       const std::string& shown) {
@@ -45,13 +23,15 @@ void write_multiblock(const std::vector<ExportObject>& objects, const std::files
     const ExportObject& object = objects[b];
     const std::string surface = folder + "/" + object.id() + "_surface.vtp";
     core::write_surface_vtp(object.surface, object.source->embedding, main.parent_path() / surface);
-    xml += "    <Block index=\"" + std::to_string(b) + "\" name=\"" + xml_escaped(object.id()) +
-           "\">\n";
-    xml += "      <DataSet index=\"0\" name=\"surface\" file=\"" + xml_escaped(surface) + "\"/>\n";
+    xml += "    <Block index=\"" + std::to_string(b) + "\" name=\"" +
+           core::xml_escaped(object.id()) + "\">\n";
+    xml += "      <DataSet index=\"0\" name=\"surface\" file=\"" + core::xml_escaped(surface) +
+           "\"/>\n";
     if (object.has_body()) {
       const std::string body = folder + "/" + object.id() + "_body.vtu";
       core::write_body_vtu(object.source->body, main.parent_path() / body);
-      xml += "      <DataSet index=\"1\" name=\"body\" file=\"" + xml_escaped(body) + "\"/>\n";
+      xml +=
+          "      <DataSet index=\"1\" name=\"body\" file=\"" + core::xml_escaped(body) + "\"/>\n";
     }
     xml += "    </Block>\n";
   }

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/xml_text.h"
 #include "simulator/report/report_plots.h"
 #include "simulator/view/image_files.h"
 
@@ -13,29 +14,6 @@ namespace viscera::report {
 namespace {
 
 using nlohmann::json;
-
-std::string escape(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
 
 std::string number(const json& value, double scale = 1.0, int digits = 3) {
   if (!value.is_number()) return "&ndash;";
@@ -105,13 +83,16 @@ std::vector<std::filesystem::path> write_html_report(const json& report, const j
        << "<title>Viscera session report</title>\n"
        << kStyle << "</head><body>\n"
        << "<h1>Session report</h1>\n<table>\n"
-       << "<tr><td>Package</td><td>" << escape(text_of(report, "package")) << "</td></tr>\n"
-       << "<tr><td>Procedure</td><td>" << escape(text_of(report, "procedure")) << "</td></tr>\n"
-       << "<tr><td>Instrument</td><td>" << escape(text_of(report, "instrument_kind"))
+       << "<tr><td>Package</td><td>" << core::xml_escaped(text_of(report, "package"))
+       << "</td></tr>\n"
+       << "<tr><td>Procedure</td><td>" << core::xml_escaped(text_of(report, "procedure"))
+       << "</td></tr>\n"
+       << "<tr><td>Instrument</td><td>" << core::xml_escaped(text_of(report, "instrument_kind"))
        << "</td></tr>\n"
        << "<tr><td>Simulated time</td><td>"
        << number(report.value("simulated_time", json()), 1.0, 4) << " s</td></tr>\n"
-       << "<tr><td>Ended by</td><td>" << escape(text_of(report, "end_reason")) << "</td></tr>\n"
+       << "<tr><td>Ended by</td><td>" << core::xml_escaped(text_of(report, "end_reason"))
+       << "</td></tr>\n"
        << "<tr><td>Score</td><td>" << number(report.value("score", json())) << " / 100</td></tr>\n";
   if (reference != nullptr)
     html << "<tr><td>Reference score</td><td>" << number(reference->value("score", json()))
@@ -126,7 +107,7 @@ std::vector<std::filesystem::path> write_html_report(const json& report, const j
       reference != nullptr ? reference->value("metrics", json::object()) : json::object();
   for (const MetricSpec& m : report_metrics()) {
     const json value = metrics.value(m.key, json());
-    html << "<tr><td>" << escape(m.label) << (m.unit.empty() ? "" : " (" + m.unit + ")")
+    html << "<tr><td>" << core::xml_escaped(m.label) << (m.unit.empty() ? "" : " (" + m.unit + ")")
          << "</td><td>" << number(value, m.scale) << "</td>";
     if (reference != nullptr) {
       const json other = expert.value(m.key, json());
@@ -159,7 +140,8 @@ std::vector<std::filesystem::path> write_html_report(const json& report, const j
   for (const auto& step : report.value("procedure_steps", json::array())) {
     const json m = step.value("metrics", json::object());
     html << "<tr><td>"
-         << escape(text_of(step, "name").empty() ? text_of(step, "id") : text_of(step, "name"))
+         << core::xml_escaped(text_of(step, "name").empty() ? text_of(step, "id")
+                                                            : text_of(step, "name"))
          << "</td><td>" << number(step.value("started_at", json())) << "</td><td>"
          << number(step.value("ended_at", json())) << "</td><td>"
          << number(m.value("path_length", json()), 1000.0) << "</td><td>"
@@ -172,17 +154,18 @@ std::vector<std::filesystem::path> write_html_report(const json& report, const j
           "</th><th>Note</th></tr>\n";
   for (const auto& task : report.value("tasks", json::array())) {
     html << "<tr><td>"
-         << escape(text_of(task, "name").empty() ? text_of(task, "id") : text_of(task, "name"))
-         << "</td><td>" << escape(text_of(task, "status")) << "</td><td>"
+         << core::xml_escaped(text_of(task, "name").empty() ? text_of(task, "id")
+                                                            : text_of(task, "name"))
+         << "</td><td>" << core::xml_escaped(text_of(task, "status")) << "</td><td>"
          << number(task.value("completed_at", json())) << "</td><td>"
-         << escape(text_of(task, "note")) << "</td></tr>\n";
+         << core::xml_escaped(text_of(task, "note")) << "</td></tr>\n";
   }
   html << "</table>\n<h2>Events</h2>\n<table>\n<tr><th>Time "
           "(s)</th><th>Event</th><th>Message</th></tr>\n";
   for (const auto& event : report.value("events", json::array())) {
     html << "<tr><td>" << number(event.value("time", json()), 1.0, 4) << "</td><td>"
-         << escape(text_of(event, "kind")) << "</td><td>" << escape(text_of(event, "message"))
-         << "</td></tr>\n";
+         << core::xml_escaped(text_of(event, "kind")) << "</td><td>"
+         << core::xml_escaped(text_of(event, "message")) << "</td></tr>\n";
   }
   html << "</table>\n</body></html>\n";
   view::write_file_atomically(page, html.str());

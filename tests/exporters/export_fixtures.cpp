@@ -188,13 +188,6 @@ fs::path gmsh_tutorial_mesh(const std::string& tutorial, const std::string& argu
   return out;
 }
 
-std::string file_bytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  return bytes.str();
-}
-
 bool message_has(const std::string& message, std::initializer_list<std::string> parts) {
   for (const auto& part : parts) {
     if (message.find(part) == std::string::npos) return false;

@@ -6,6 +6,7 @@
 
 #include "core/scenario/scenario.h"
 #include "exporters/scenario_exporter.h"
+#include "tests/support/test_paths.h"
 
 namespace viscera::testing {
 
@@ -39,9 +40,6 @@ std::filesystem::path gmsh_tutorial_mesh(const std::string& tutorial, const std:
 /// A folder shared by the test processes of this build for data made once (real files unpacked
 /// or meshed, packages built through the CLI): VISCERA_TEST_TMP/real-files.
 std::filesystem::path shared_test_folder();
-
-/// The whole content of a file.
-std::string file_bytes(const std::filesystem::path& path);
 
 /// True when the message of `thrown` contains every one of `parts`.
 bool message_has(const std::string& message, std::initializer_list<std::string> parts);

@@ -20,19 +20,13 @@ namespace fs = std::filesystem;
 using testing::run_program;
 using testing::shell_quote;
 
-std::string read_bytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 /// Every regular file under `folder`, by path relative to it, with its bytes.
 std::map<std::string, std::string> all_files(const fs::path& folder) {
   std::map<std::string, std::string> files;
   for (const auto& entry : fs::recursive_directory_iterator(folder)) {
     if (entry.is_regular_file())
-      files[fs::relative(entry.path(), folder).generic_string()] = read_bytes(entry.path());
+      files[fs::relative(entry.path(), folder).generic_string()] =
+          viscera::testing::file_bytes(entry.path());
   }
   return files;
 }
@@ -90,7 +84,8 @@ std::string mpirun(int ranks) {
 
 TEST(GenerateCommand, writes_twenty_different_valid_hysteroscopy_patients_with_an_index) {
   const fs::path batch = reference_batch(20, 1);
-  const nlohmann::json index = nlohmann::json::parse(read_bytes(batch / "index.json"));
+  const nlohmann::json index =
+      nlohmann::json::parse(viscera::testing::file_bytes(batch / "index.json"));
   EXPECT_EQ(index.at("format"), "viscera-generate-index");
   EXPECT_EQ(index.at("template"), "hysteroscopy");
   EXPECT_EQ(index.at("count"), 20);
@@ -147,7 +142,7 @@ TEST(GenerateCommand, mpi_run_on_two_ranks_equals_the_single_process_run_byte_fo
       mpirun(2) + " " + shell_quote((fs::path(VISCERA_BINARY_DIR) / "bin" / "viscera").string()) +
       " " + batch_arguments(6, 1, dir / "mpi") + " >" + shell_quote((dir / "mpi.log").string()) +
       " 2>&1";
-  ASSERT_EQ(std::system(command.c_str()), 0) << read_bytes(dir / "mpi.log");
+  ASSERT_EQ(std::system(command.c_str()), 0) << viscera::testing::file_bytes(dir / "mpi.log");
   expect_same_files(reference, dir / "mpi");
 }
 

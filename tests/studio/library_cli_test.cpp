@@ -16,11 +16,6 @@ namespace fs = std::filesystem;
 using testing::run_program;
 using testing::shell_quote;
 
-std::string read_bytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
 TEST(LibraryCommand, add_list_get_rm_round_trip_through_the_library_option) {
   const fs::path dir = testing::scratch_dir();
   fs::current_path(dir);  // the programs run where the test runs; relative names are in dir
@@ -60,8 +55,10 @@ TEST(LibraryCommand, add_list_get_rm_round_trip_through_the_library_option) {
                                    shell_quote((dir / "back.png").string()),
                                dir);
   ASSERT_EQ(got.exit_code, 0) << got.err;
-  EXPECT_EQ(read_bytes(dir / "back.json"), read_bytes(material));
-  EXPECT_EQ(read_bytes(dir / "back.png"), read_bytes(dir / "thumb.png"));
+  EXPECT_EQ(viscera::testing::file_bytes(dir / "back.json"),
+            viscera::testing::file_bytes(material));
+  EXPECT_EQ(viscera::testing::file_bytes(dir / "back.png"),
+            viscera::testing::file_bytes(dir / "thumb.png"));
 
   const auto exported = run_program(
       "viscera", "library " + lib + " export tissue -o " + shell_quote((dir / "t.vasset").string()),
@@ -77,7 +74,8 @@ TEST(LibraryCommand, add_list_get_rm_round_trip_through_the_library_option) {
           "library " + other + " get tissue -o " + shell_quote((dir / "other.json").string()), dir)
           .exit_code,
       0);
-  EXPECT_EQ(read_bytes(dir / "other.json"), read_bytes(material));
+  EXPECT_EQ(viscera::testing::file_bytes(dir / "other.json"),
+            viscera::testing::file_bytes(material));
 
   const auto removed = run_program("viscera", "library " + lib + " rm tissue --json", dir);
   ASSERT_EQ(removed.exit_code, 0) << removed.err;
@@ -107,7 +105,8 @@ TEST(LibraryCommand, textures_and_packages_get_thumbnails_of_themselves) {
   ASSERT_EQ(
       run_program("viscera", "library get liver -o l.png --thumbnail lt.png" + lib, dir).exit_code,
       0);
-  EXPECT_EQ(png_size(read_bytes(dir / "lt.png")), std::make_pair(128, 64));  // aspect kept
+  EXPECT_EQ(png_size(viscera::testing::file_bytes(dir / "lt.png")),
+            std::make_pair(128, 64));  // aspect kept
 
   ASSERT_EQ(run_program("viscera", "new --template ball --set cell_size=0.012 -o ball.vscz", dir)
                 .exit_code,
@@ -120,8 +119,9 @@ TEST(LibraryCommand, textures_and_packages_get_thumbnails_of_themselves) {
   ASSERT_EQ(run_program("viscera", "library get ball -o back.vscz --thumbnail bt.png" + lib, dir)
                 .exit_code,
             0);
-  EXPECT_EQ(png_size(read_bytes(dir / "bt.png")), std::make_pair(128, 128));
-  EXPECT_EQ(read_bytes(dir / "back.vscz"), read_bytes(dir / "ball.vscz"));
+  EXPECT_EQ(png_size(viscera::testing::file_bytes(dir / "bt.png")), std::make_pair(128, 128));
+  EXPECT_EQ(viscera::testing::file_bytes(dir / "back.vscz"),
+            viscera::testing::file_bytes(dir / "ball.vscz"));
   EXPECT_EQ(run_program("viscera", "validate back.vscz", dir).exit_code, 0);
 }
 

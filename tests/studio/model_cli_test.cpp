@@ -18,11 +18,6 @@ namespace fs = std::filesystem;
 using testing::run_program;
 using testing::shell_quote;
 
-std::string read_bytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
 /// Runs `viscera <arguments>` in `dir` and expects success; returns standard output.
 std::string viscera_ok(const std::string& arguments, const fs::path& dir) {
   const auto result = run_program("viscera", arguments, dir);
@@ -141,11 +136,13 @@ TEST(ModelCommand, ball_flat_and_branching_pipe_become_a_package_the_simulator_r
   // The ball model goes into the library and comes back byte for byte.
   viscera_ok("library add ball.json --tags organ" + lib, dir);
   viscera_ok("library get ball -o ball-from-library.json --thumbnail ball.png" + lib, dir);
-  const std::string png = read_bytes(dir / "ball.png");  // rendered when the model was added
+  const std::string png =
+      viscera::testing::file_bytes(dir / "ball.png");  // rendered when the model was added
   ASSERT_GT(png.size(), 24u);
   EXPECT_EQ(png.substr(1, 3), "PNG");
   EXPECT_EQ(static_cast<unsigned char>(png[19]), 128u);  // IHDR width, big-endian
-  EXPECT_EQ(read_bytes(dir / "ball-from-library.json"), read_bytes(dir / "ball.json"));
+  EXPECT_EQ(viscera::testing::file_bytes(dir / "ball-from-library.json"),
+            viscera::testing::file_bytes(dir / "ball.json"));
 
   const auto package = viscera_json(
       "model package ball-from-library.json sheet.json pipe.json --name pelvis -o scene.vscene",
@@ -192,14 +189,16 @@ TEST(ModelCommand, every_new_command_has_help_and_a_package_is_the_same_bytes_tw
   viscera_ok("model package b.json -o one.vscene", dir);
   viscera_ok("model package b.json -o two.vscene", dir);
   for (const char* file : {"manifest.json", "objects/b/surface.vtp", "objects/b/body.vtu"})
-    EXPECT_EQ(read_bytes(dir / "one.vscene" / file), read_bytes(dir / "two.vscene" / file)) << file;
+    EXPECT_EQ(viscera::testing::file_bytes(dir / "one.vscene" / file),
+              viscera::testing::file_bytes(dir / "two.vscene" / file))
+        << file;
 }
 
 TEST(ModelCommand, bad_edits_have_typed_exit_codes_and_leave_the_model_alone) {
   const fs::path dir = testing::scratch_dir();
   fs::current_path(dir);  // the programs run where the test runs; relative names are in dir
   viscera_ok("model new ball --id b --radius 0.02 -o b.json", dir);
-  const std::string original = read_bytes(dir / "b.json");
+  const std::string original = viscera::testing::file_bytes(dir / "b.json");
   EXPECT_EQ(run_program("viscera", "model move-point b.json --point 12 --to 0,0,0", dir).exit_code,
             2);
   EXPECT_EQ(run_program("viscera", "model move-point b.json --point 0 --to 0,0", dir).exit_code, 2);
@@ -208,7 +207,7 @@ TEST(ModelCommand, bad_edits_have_typed_exit_codes_and_leave_the_model_alone) {
   EXPECT_EQ(
       run_program("viscera", "model new ball --origin 0,0,0 --radius 1 -o x.json", dir).exit_code,
       2);
-  EXPECT_EQ(read_bytes(dir / "b.json"), original);
+  EXPECT_EQ(viscera::testing::file_bytes(dir / "b.json"), original);
   EXPECT_FALSE(fs::exists(dir / "x.json"));
   std::ofstream(dir / "broken.json") << R"({"format": "viscera-model", "version": 1, "id": "x",
     "primitive": {"type": "ball", "center": [0, 0], "radius": 0.01}})";

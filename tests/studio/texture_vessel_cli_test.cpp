@@ -18,13 +18,6 @@ namespace {
 using testing::run_program;
 using testing::shell_quote;
 
-std::string read_bytes(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  return bytes.str();
-}
-
 /// The quoted absolute path of `name` in `dir`: the programs run in the test's working folder.
 std::string at(const std::filesystem::path& dir, const std::string& name) {
   return shell_quote((dir / name).string());
@@ -57,15 +50,18 @@ TEST(TextureCli, same_seed_same_png_bytes_and_maps_on_request) {
         dir);
     ASSERT_EQ(r.exit_code, 0) << r.err;
   }
-  EXPECT_EQ(read_bytes(dir / "a.png"), read_bytes(dir / "b.png"));
-  EXPECT_EQ(read_bytes(dir / "a_normal.png"), read_bytes(dir / "b_normal.png"));
+  EXPECT_EQ(viscera::testing::file_bytes(dir / "a.png"),
+            viscera::testing::file_bytes(dir / "b.png"));
+  EXPECT_EQ(viscera::testing::file_bytes(dir / "a_normal.png"),
+            viscera::testing::file_bytes(dir / "b_normal.png"));
   EXPECT_TRUE(std::filesystem::exists(dir / "a_specular.png"));
   ASSERT_EQ(
       run_program("viscera",
                   "texture --preset endometrium --seed 5 --size 96x64 -o " + at(dir, "c.png"), dir)
           .exit_code,
       0);
-  EXPECT_NE(read_bytes(dir / "a.png"), read_bytes(dir / "c.png"));
+  EXPECT_NE(viscera::testing::file_bytes(dir / "a.png"),
+            viscera::testing::file_bytes(dir / "c.png"));
 }
 
 TEST(TextureCli, usage_errors_exit_2_and_unreadable_samples_exit_3_writing_nothing) {
@@ -146,8 +142,9 @@ TEST(VesselsCli, grows_a_deterministic_tree_and_its_pipe_mesh_in_a_package_organ
                     dir);
     ASSERT_EQ(r.exit_code, 0) << r.err;
   }
-  EXPECT_EQ(read_bytes(dir / "a.json"), read_bytes(dir / "b.json"));
-  const auto json = nlohmann::json::parse(read_bytes(dir / "a.json"));
+  EXPECT_EQ(viscera::testing::file_bytes(dir / "a.json"),
+            viscera::testing::file_bytes(dir / "b.json"));
+  const auto json = nlohmann::json::parse(viscera::testing::file_bytes(dir / "a.json"));
   EXPECT_EQ(json["summary"]["terminals"], 60);
   EXPECT_EQ(json["summary"]["intersections"], 0);
   EXPECT_LT(json["summary"]["murray_max_deviation"].get<double>(), 0.01);

@@ -1,5 +1,5 @@
 #pragma once
-/// Helpers shared by the test suites: a fresh scratch folder per test.
+/// Helpers shared by the test suites: a fresh scratch folder per test, file contents.
 
 #include <filesystem>
 #include <string>
@@ -12,5 +12,8 @@ std::filesystem::path scratch_dir();
 
 /// The source tree root (for shipped data and docs/).
 std::filesystem::path source_dir();
+
+/// The whole content of a file as bytes (empty when it cannot be opened).
+std::string file_bytes(const std::filesystem::path& path);
 
 }  // namespace viscera::testing

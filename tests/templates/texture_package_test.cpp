@@ -25,13 +25,6 @@ core::Scenario small_ball() {
   return templates::build_from_template("ball", {{"radius", "0.02"}, {"cell_size", "0.008"}}, 3);
 }
 
-std::string read_bytes(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  return bytes.str();
-}
-
 core::Scenario textured_ball(std::uint64_t seed, textures::BakedTextures& baked) {
   core::Scenario scenario = small_ball();
   core::TextureSpec spec;
@@ -77,12 +70,13 @@ TEST(TexturePackage, maps_baked_onto_a_ball_are_stored_and_read_back) {
     EXPECT_TRUE(core::is_closed_and_consistently_oriented(welded));
   }
   const auto folder = dir / "ball.vscene";
-  const auto albedo =
-      textures::decode_image(read_bytes(folder / "textures/ball-skin_albedo.png"), "albedo");
+  const auto albedo = textures::decode_image(
+      viscera::testing::file_bytes(folder / "textures/ball-skin_albedo.png"), "albedo");
   EXPECT_EQ(albedo.width, 256);
   EXPECT_EQ(albedo.channels, 3);
   EXPECT_EQ(
-      textures::decode_image(read_bytes(folder / "textures/ball-skin_specular.png"), "specular")
+      textures::decode_image(
+          viscera::testing::file_bytes(folder / "textures/ball-skin_specular.png"), "specular")
           .channels,
       1);
 }

@@ -29,13 +29,6 @@ nlohmann::json scripted_report(const nlohmann::json& script) {
   return sim::report_to_json(sim::run_headless(scenario, options));
 }
 
-std::string read_bytes(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream out;
-  out << in.rdbuf();
-  return out.str();
-}
-
 TEST(MetricComparison, follows_the_direction_of_each_metric) {
   const auto find = [](const std::string& key) {
     for (const auto& m : report_metrics())
@@ -54,13 +47,13 @@ TEST(HtmlReport, novice_page_against_the_expert_references_existing_plots) {
   const auto dir = viscera::testing::scratch_dir();
   const auto written = write_html_report(novice, &expert, dir);
   ASSERT_EQ(written.front(), dir / "report.html");
-  const std::string html = read_bytes(dir / "report.html");
+  const std::string html = viscera::testing::file_bytes(dir / "report.html");
   const auto images = referenced_images(html);
   ASSERT_EQ(images.size(), 4u);
   for (const std::string& image : images) {
     SCOPED_TRACE(image);
     EXPECT_EQ(image.find('/'), std::string::npos) << "images sit beside the page";
-    const std::string bytes = read_bytes(dir / image);
+    const std::string bytes = viscera::testing::file_bytes(dir / image);
     ASSERT_GT(bytes.size(), 2000u);
     const auto png = view::decode_png(bytes, image);
     int dims[3];
@@ -72,7 +65,8 @@ TEST(HtmlReport, novice_page_against_the_expert_references_existing_plots) {
     EXPECT_GT(stats.luminance_stddev, 10.0);
   }
   // The path plot colours samples by wall distance: red near the wall and blue far from it.
-  const auto path = view::decode_png(read_bytes(dir / "path_xy.png"), "path_xy.png");
+  const auto path =
+      view::decode_png(viscera::testing::file_bytes(dir / "path_xy.png"), "path_xy.png");
   int red = 0, blue = 0;
   const auto* p = static_cast<const unsigned char*>(path->GetScalarPointer());
   const int channels = path->GetNumberOfScalarComponents();

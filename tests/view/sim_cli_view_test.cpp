@@ -22,13 +22,6 @@ namespace {
 using testing::run_program;
 using testing::shell_quote;
 
-std::string read_bytes(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream out;
-  out << in.rdbuf();
-  return out.str();
-}
-
 /// Packets of an Ogg stream: the lacing values below 255 that end one (RFC 3533 §6).
 long long ogg_packets(const std::string& bytes, int& pages) {
   long long packets = 0;
@@ -80,7 +73,7 @@ TEST(SimCliView, run_writes_a_snapshot_of_the_endoscopic_view) {
                   dir);
   ASSERT_EQ(result.exit_code, 0) << result.err;
   EXPECT_NE(result.out.find("snapshot "), std::string::npos) << result.out;
-  const auto frame = view::decode_png(read_bytes(png), png.string());
+  const auto frame = view::decode_png(viscera::testing::file_bytes(png), png.string());
   int dims[3];
   frame->GetDimensions(dims);
   EXPECT_EQ(dims[0], 640);
@@ -122,7 +115,7 @@ TEST(SimCliView, replay_renders_an_ogg_theora_video_and_stays_identical) {
   const std::size_t at = result.out.find("(", result.out.find("video "));
   ASSERT_NE(at, std::string::npos) << result.out;
   const long long frames = std::stoll(result.out.substr(at + 1));
-  const std::string bytes = read_bytes(video);
+  const std::string bytes = viscera::testing::file_bytes(video);
   ASSERT_GT(bytes.size(), 100u);
   EXPECT_EQ(bytes.compare(0, 4, "OggS"), 0);
   EXPECT_EQ(bytes.compare(28, 7, "\x80theora"), 0) << "the first packet is Theora's header";

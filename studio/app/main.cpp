@@ -23,9 +23,16 @@ int main(int argc, char** argv) {
   parser.addVersionOption();
   parser.addPositionalArgument(QStringLiteral("package"),
                                QStringLiteral("Scenario package to open (.vscene or .vscz)"));
+  const QCommandLineOption library(
+      QStringLiteral("library"),
+      QStringLiteral("Asset library database (default: $VISCERA_LIBRARY, else XDG data folder)"),
+      QStringLiteral("path"));
+  parser.addOption(library);
   parser.process(app);
 
-  viscera::studio::MainWindow window;
+  viscera::studio::MainWindowOptions options;
+  options.library = parser.value(library).toStdString();
+  viscera::studio::MainWindow window(options);
   window.show();
   const bool recovered = window.offer_recovery();
   if (!recovered && !parser.positionalArguments().isEmpty()) {

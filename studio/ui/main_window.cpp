@@ -91,6 +91,7 @@ void MainWindow::build_docks() {
   slice_dock_->hide();
   connect(slices_, &SliceViews::changed, view_, &SceneView::render);
 
+  build_asset_docks();
   resizeDocks({tree_dock, material_dock}, {240, 320}, Qt::Horizontal);
 }
 

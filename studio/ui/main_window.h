@@ -14,6 +14,7 @@
 #include "studio/document/autosave.h"
 #include "studio/document/primitive_objects.h"
 #include "studio/document/scenario_document.h"
+#include "studio/document/variant_batch.h"
 #include "studio/ui/training_launcher.h"
 
 class QMenu;
@@ -25,12 +26,16 @@ class MaterialPanel;
 class SceneTree;
 class SliceViews;
 class SceneView;
+class VariantsGallery;
+class LibraryBrowser;
 
 /// Where the window keeps its recovery copy and how often it writes it.
 struct MainWindowOptions {
   std::filesystem::path recovery_dir = Autosave::default_recovery_dir();
   int autosave_interval_ms = 60'000;
   QString simulator = TrainingLauncher::default_simulator();
+  /// The asset library database; empty: VISCERA_LIBRARY, else XDG (core::resolve_library_path).
+  std::string library;
 };
 
 class MainWindow : public QMainWindow {
@@ -70,6 +75,23 @@ class MainWindow : public QMainWindow {
   bool launch_training(double duration_s = 0.0);
   QString report_text() const;
 
+  /// Generates `request.count` variants of the document off the UI thread (progress, Cancel;
+  /// variant_batch.h) and shows them in the variants gallery dock.
+  bool generate_variants(const VariantRequest& request);
+  /// Opens gallery row `row` as a new, unsaved document after offering to save a dirty one.
+  bool open_variant(int row);
+  VariantsGallery* variants_gallery() const { return variants_; }
+
+  /// Adds the selected object (as a one-object package) / its material to the asset library
+  /// under `name` (empty: the object's / material's id) and lists it in the library browser.
+  bool add_selected_object_to_library(const std::string& name = {});
+  bool add_selected_material_to_library(const std::string& name = {});
+  /// A library entry dropped (kAssetMimeType) on object `target` ("" for none) of the 3D view or
+  /// scene tree: a model is added to the scene as one undoable command, a material assigned to
+  /// the target. Returns whether the drop changed the document (errors go to the dialog).
+  bool drop_asset(const class QMimeData* mime, const QString& target);
+  LibraryBrowser* library_browser() const { return library_; }
+
   /// If an earlier session left a recovery copy, asks (through `ask`, a dialog by default)
   /// whether to recover it and opens it as an unsaved document; returns whether it did.
   bool offer_recovery(std::function<bool(const RecoveryCopy&)> ask = {});
@@ -88,6 +110,7 @@ class MainWindow : public QMainWindow {
  private:
   void build_menus();
   void build_docks();
+  void build_asset_docks();  // main_window_assets.cpp: variants gallery, asset library
   void update_title();
   void on_document_changed(ChangeKind kind, const QString& id);
   void show_error(const QString& message);
@@ -110,6 +133,9 @@ class MainWindow : public QMainWindow {
   SliceViews* slices_ = nullptr;
   class QDockWidget* slice_dock_ = nullptr;
   QMenu* recent_menu_ = nullptr;
+  VariantsGallery* variants_ = nullptr;
+  class QDockWidget* variants_dock_ = nullptr;
+  LibraryBrowser* library_ = nullptr;
   std::function<void(const QString&)> error_handler_;
 };
 

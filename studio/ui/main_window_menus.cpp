@@ -11,6 +11,7 @@
 #include "studio/ui/main_window.h"
 #include "studio/ui/scene_view.h"
 #include "studio/ui/template_dialog.h"
+#include "studio/ui/variants_dialog.h"
 #include "templates/template_catalog.h"
 
 namespace viscera::studio {
@@ -82,6 +83,11 @@ void MainWindow::build_menus() {
   create->addAction(tr("&Ball…"), this, [this] { ask_create(PrimitiveKind::Ball); });
   create->addAction(tr("&Flat…"), this, [this] { ask_create(PrimitiveKind::Flat); });
   create->addAction(tr("&Pipe…"), this, [this] { ask_create(PrimitiveKind::Pipe); });
+  create->addSeparator();
+  create->addAction(tr("Generate &variants…"), this, [this] {
+    VariantsDialog dialog(document_.scenario(), this);
+    if (dialog.exec() == QDialog::Accepted) generate_variants(dialog.request());
+  });
 
   QMenu* training = menuBar()->addMenu(tr("&Training"));
   training->addAction(tr("&Launch headless session…"), this, [this] {

@@ -272,6 +272,24 @@ AssetEntry AssetLibrary::get(const std::string& name, int version) const {
   return entry;
 }
 
+std::string AssetLibrary::thumbnail(const std::string& name, int version) const {
+  const SqliteDatabase db{db_, path_.string()};
+  SqliteTransaction snapshot(db, false);
+  SqliteStatement select(db,
+                         "SELECT thumbnail FROM entries WHERE name = ?1 AND "
+                         "(version = ?2 OR (?2 = 0 AND version = (SELECT max(version) FROM "
+                         "entries WHERE name = ?1)))");
+  select.bind(1, name);
+  select.bind(2, std::int64_t{version});
+  if (!select.step()) {
+    throw InputError(version == 0 ? "the library has no entry \"" + name + "\""
+                                  : "the library has no version " + std::to_string(version) +
+                                        " of \"" + name + "\"",
+                     {path_.string(), "", name});
+  }
+  return select.blob(0);
+}
+
 int AssetLibrary::remove(const std::string& name, int version) {
   const SqliteDatabase db{db_, path_.string()};
   SqliteTransaction transaction(db);

@@ -96,6 +96,10 @@ class AssetLibrary {
   /// entry when it is missing, ValidationError when its payload fails its checksum.
   AssetEntry get(const std::string& name, int version = 0) const;
 
+  /// Only the PNG thumbnail of `name` at `version` (0 = newest), empty when it has none — for
+  /// listings that should not read (and checksum) every payload. Throws InputError as get().
+  std::string thumbnail(const std::string& name, int version = 0) const;
+
   /// Removes `name` at `version` (0 = every version) in one transaction; returns how many
   /// versions went. Throws InputError when there is none, OutputError when the write fails.
   int remove(const std::string& name, int version = 0);

@@ -38,10 +38,10 @@ std::vector<core::VariabilityRule> document_rules(const templates::ScenarioTempl
 Variant from_template(const core::Scenario& base, const VariantRequest& request, std::uint64_t k,
                       core::Progress& progress) {
   const templates::ScenarioTemplate* t = catalogue_template(base.provenance.template_name);
-  if (t == nullptr)
+  if (t == nullptr || t->default_variability().empty())
     throw core::UsageError(
-        "the document was not built from a catalogue template, so it has no "
-        "template variants; vary the scenario instead");
+        "the document was not built from a catalogue template with variability rules, so it has "
+        "no template variants; vary the scenario instead");
   templates::GenerationOptions options;
   options.max_attempts = request.max_attempts;
   options.validation = request.validation;
@@ -104,7 +104,8 @@ Variant from_scenario(const core::Scenario& base, const VariantRequest& request,
 }  // namespace
 
 bool has_template_source(const core::Scenario& scenario) {
-  return catalogue_template(scenario.provenance.template_name) != nullptr;
+  const templates::ScenarioTemplate* t = catalogue_template(scenario.provenance.template_name);
+  return t != nullptr && !t->default_variability().empty();
 }
 
 std::string variant_source_name(const core::Scenario& base, VariantSource source) {

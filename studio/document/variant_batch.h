@@ -3,10 +3,10 @@
 /// current document, drawn with the same library as `viscera generate`.
 ///
 /// Two sources, chosen by the user where both apply:
-/// - Template: the document was built from a catalogue template (its provenance names the
-///   template and its parameters). The template's VariantGenerator draws each patient: the
-///   template's default variability rules vary, every other parameter stays fixed at the
-///   document's value. Edits made to the document after it was built are not in these variants
+/// - Template: the document was built from a catalogue template with variability rules (its
+///   provenance names the template and its parameters). The template's VariantGenerator draws each
+///   patient: the template's default variability rules vary, every other parameter stays fixed at
+///   the document's value. Edits made to the document after it was built are not in these variants
 ///   (they are rebuilt from the template).
 /// - Scenario: any document, e.g. an organ meshed from an image volume. Each draw is
 ///   vary_scenario (templates/variability/scenario_variation.h): one smooth random deformation
@@ -54,7 +54,9 @@ struct Variant {
   std::optional<core::Scenario> scenario;  ///< absent when no draw could be built
 };
 
-/// True when `scenario`'s provenance names a catalogue template (the Template source applies).
+/// True when `scenario`'s provenance names a catalogue template that has variability rules (the
+/// Template source applies); a template without rules (ball) would give N copies of one patient,
+/// so its documents vary as scenarios.
 bool has_template_source(const core::Scenario& scenario);
 
 /// The source name used for the seeds: the template's name or "scenario:<metadata name>".

@@ -172,7 +172,7 @@ void LibraryBrowser::show_entries() {
                          .arg(QString::fromStdString(s.payload_format)));
     if (s.has_thumbnail && library) {
       try {
-        const std::string png = library->get(s.name, s.version).thumbnail;
+        const std::string png = library->thumbnail(s.name, s.version);
         QImage image;
         if (image.loadFromData(reinterpret_cast<const uchar*>(png.data()),
                                static_cast<int>(png.size()), "PNG"))

@@ -56,6 +56,9 @@ TEST(AssetLibrary, adding_a_name_again_makes_the_next_version_and_get_reads_eith
   EXPECT_EQ(oldest.payload, "{\"a\":1}");
   EXPECT_EQ(oldest.thumbnail, kPng);
   EXPECT_EQ(oldest.summary.tags, (std::vector<std::string>{"abdomen", "soft"}));
+  EXPECT_EQ(library.thumbnail("liver", 1), kPng);
+  EXPECT_EQ(library.thumbnail("liver"), "");
+  EXPECT_THROW(library.thumbnail("spleen"), InputError);
 
   const auto newest_only = library.list();
   ASSERT_EQ(newest_only.size(), 2u);

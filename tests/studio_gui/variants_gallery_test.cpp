@@ -101,8 +101,15 @@ class VariantsGalleryTest : public QObject {
 
   void scenarioVariantsShowFailedChecks() {
     studio::MainWindow window(options());
+    QStringList errors;
+    window.set_error_handler([&](const QString& m) { errors << m; });
     QVERIFY(window.new_from_template("ball", {{"cell_size", "0.012"}}, 1));
+    // The ball template has no variability rules: its documents vary as scenarios.
+    QVERIFY(!studio::has_template_source(window.document().scenario()));
     studio::VariantRequest request;
+    request.source = studio::VariantSource::Template;
+    QVERIFY(!window.generate_variants(request));
+    QCOMPARE(errors.size(), 1);
     request.source = studio::VariantSource::Scenario;
     request.count = 3;
     request.seed = 9;

@@ -92,6 +92,16 @@ Variant from_scenario(const core::Scenario& base, const VariantRequest& request,
     variant.failed_check = variant.failure.substr(0, variant.failure.find(": "));
     variant.validation = validation.to_json();
     variant.validation["drawn"] = draw.drawn;
+    // Not the template's patient any more: the provenance names the variation instead.
+    draw.scenario.provenance.template_name.clear();
+    draw.scenario.provenance.template_version.clear();
+    draw.scenario.provenance.seed = seed;
+    draw.scenario.provenance.parameters = {{"source", "scenario-variation"},
+                                           {"base", base.metadata.name},
+                                           {"base_template", base.provenance.template_name},
+                                           {"batch_seed", request.seed},
+                                           {"index", k},
+                                           {"drawn", draw.drawn}};
     draw.scenario.metadata.name =
         (base.metadata.name.empty() ? std::string("scenario") : base.metadata.name) + " variant " +
         std::to_string(k);

@@ -16,6 +16,8 @@
 /// "scenario:<metadata name>" — so a variant does not depend on N or on the others. An invalid
 /// draw is redrawn up to max_attempts times; a variant that never passes is returned as failed
 /// with its last failing check (and, for the scenario source, that last draw, to inspect).
+/// A scenario variant's provenance names no template: its seed is the draw's and its parameters
+/// {"source": "scenario-variation", "base", "base_template", "batch_seed", "index", "drawn"}.
 
 #include <cstdint>
 #include <optional>

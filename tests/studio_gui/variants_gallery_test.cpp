@@ -119,6 +119,10 @@ class VariantsGalleryTest : public QObject {
     for (int i = 0; i < 3; ++i) {
       QVERIFY2(gallery->variant(i).valid, gallery->variant(i).failure.c_str());
       QVERIFY(gallery->variant(i).validation.at("drawn").contains("lipschitz_bound"));
+      const core::Provenance& provenance = gallery->variant(i).scenario->provenance;
+      QVERIFY(provenance.template_name.empty());
+      QCOMPARE(provenance.seed, gallery->variant(i).draw_seed);
+      QCOMPARE(provenance.parameters.at("base_template").get<std::string>(), std::string("ball"));
     }
     const auto& a = gallery->variant(0).scenario->objects[0].surface.vertices;
     const auto& b = gallery->variant(1).scenario->objects[0].surface.vertices;
@@ -190,6 +194,14 @@ class VariantsGalleryTest : public QObject {
     QVERIFY(window.document().is_dirty());
     QVERIFY(window.document().path().empty());
     QCOMPARE(window.document().undo_stack()->count(), 0);
+    // A variant is a complete package: it saves and reads back as it is.
+    QStringList errors;
+    window.set_error_handler([&](const QString& m) { errors << m; });
+    QVERIFY2(window.save_as(dir() / "variant.vscene"), qPrintable(errors.join("; ")));
+    const core::Scenario opened = window.document().scenario();
+    QVERIFY(window.open_package(dir() / "variant.vscene"));
+    QVERIFY(window.document().scenario().provenance == opened.provenance);
+    QCOMPARE(window.document().scenario().objects.size(), opened.objects.size());
   }
 };
 

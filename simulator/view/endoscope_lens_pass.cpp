@@ -14,6 +14,8 @@
 #include <vtkTextureObject.h>
 #include <vtk_glew.h>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace viscera::view {
@@ -57,17 +59,19 @@ const char* kBody = R"(
   }
   float z = eyeDepth(uv);
   float radius = min(maxBlur, blurPerDioptre * abs(1.0 / z - focusDioptres));
-  vec4 sum = texture(colour, uv);
-  float weight = 1.0;
+  vec3 rgb = texture(colour, uv).rgb;
   if (radius > 0.5) {
-    // One ring of eight taps at three quarters of the circle of confusion.
-    for (int i = 0; i < 8; ++i) {
-      float a = float(i) * 0.785398;
-      sum += texture(colour, uv + 0.75 * radius * vec2(cos(a), sin(a)) * pixel);
-      weight += 1.0;
-    }
+    // One ring of six bilinear taps (a hexagon) at three quarters of the circle of confusion;
+    // the offsets are constants, so the shader does no trigonometry per pixel.
+    vec2 s = 0.75 * radius * pixel;
+    rgb += texture(colour, uv + s * vec2(1.0, 0.0)).rgb;
+    rgb += texture(colour, uv + s * vec2(0.5, 0.866025)).rgb;
+    rgb += texture(colour, uv + s * vec2(-0.5, 0.866025)).rgb;
+    rgb += texture(colour, uv + s * vec2(-1.0, 0.0)).rgb;
+    rgb += texture(colour, uv + s * vec2(-0.5, -0.866025)).rgb;
+    rgb += texture(colour, uv + s * vec2(0.5, -0.866025)).rgb;
+    rgb *= 1.0 / 7.0;
   }
-  vec3 rgb = sum.rgb / weight;
   // The rod lens loses light towards the rim of the field (cos^4 law, gently).
   float fall = 1.0 - 0.35 * r2 * r2;
   gl_FragData[0] = vec4(rgb * fall, 1.0);
@@ -89,14 +93,18 @@ void EndoscopeLensPass::Render(const vtkRenderState* state) {
   int origin[2];
   renderer->GetTiledSizeAndOrigin(&size[0], &size[1], &origin[0], &origin[1]);
   const int width = size[0], height = size[1];
+  // The scene's resolution: the output's, scaled down by render_scale.
+  const double scale = std::clamp(render_scale, 0.25, 1.0);
+  const int scene_width = std::max(1, static_cast<int>(std::lround(width * scale)));
+  const int scene_height = std::max(1, static_cast<int>(std::lround(height * scale)));
 
   if (!colour_) {
     colour_ = vtkSmartPointer<vtkTextureObject>::New();
     colour_->SetContext(window);
   }
-  if (colour_->GetWidth() != static_cast<unsigned>(width) ||
-      colour_->GetHeight() != static_cast<unsigned>(height)) {
-    colour_->Create2D(static_cast<unsigned>(width), static_cast<unsigned>(height), 4,
+  if (colour_->GetWidth() != static_cast<unsigned>(scene_width) ||
+      colour_->GetHeight() != static_cast<unsigned>(scene_height)) {
+    colour_->Create2D(static_cast<unsigned>(scene_width), static_cast<unsigned>(scene_height), 4,
                       VTK_UNSIGNED_CHAR, false);
   }
   colour_->SetMinificationFilter(vtkTextureObject::Linear);
@@ -107,9 +115,9 @@ void EndoscopeLensPass::Render(const vtkRenderState* state) {
     depth_ = vtkSmartPointer<vtkTextureObject>::New();
     depth_->SetContext(window);
   }
-  if (depth_->GetWidth() != static_cast<unsigned>(width) ||
-      depth_->GetHeight() != static_cast<unsigned>(height)) {
-    depth_->AllocateDepth(static_cast<unsigned>(width), static_cast<unsigned>(height),
+  if (depth_->GetWidth() != static_cast<unsigned>(scene_width) ||
+      depth_->GetHeight() != static_cast<unsigned>(scene_height)) {
+    depth_->AllocateDepth(static_cast<unsigned>(scene_width), static_cast<unsigned>(scene_height),
                           vtkTextureObject::Float32);
   }
   if (!framebuffer_) {
@@ -118,7 +126,10 @@ void EndoscopeLensPass::Render(const vtkRenderState* state) {
   }
 
   gl->PushFramebufferBindings();
-  RenderDelegate(state, width, height, width, height, framebuffer_, colour_, depth_);
+  // Same size in and out: RenderDelegate keeps the camera's view angle (the aspect ratio is
+  // the renderer's), so only the resolution drops.
+  RenderDelegate(state, scene_width, scene_height, scene_width, scene_height, framebuffer_, colour_,
+                 depth_);
   gl->PopFramebufferBindings();
 
   if (!quad_) {

@@ -1,6 +1,7 @@
 // Frames per second of the endoscopic view (issue 8 point 9: ≥ 30 fps at 1280 × 720 on Mesa
 // llvmpipe): the hysteroscopy template with baked textures, the camera sweeping through the
-// cavity, full lens pass (distortion, depth of field, field stop) and overlay, offscreen.
+// cavity, full lens pass (distortion, depth of field, field stop) and overlay, offscreen. The
+// fourth argument is the lens pass's render scale in percent (the scene's resolution).
 // Needs an X server: xvfb-run -a build/bin/viscera_view_bench.
 
 #include <benchmark/benchmark.h>
@@ -45,6 +46,7 @@ void BM_EndoscopicViewFrame(benchmark::State& state) {
   options.height = static_cast<int>(state.range(1));
   options.offscreen = true;
   options.lens_effects = state.range(2) != 0;
+  options.render_scale = static_cast<double>(state.range(3)) / 100.0;
   viscera::view::EndoscopicView view(scenario, package, options);
   const viscera::sim::InstrumentState start = viscera::sim::starting_pose(scenario, 30.0);
   view.set_instrument(start, 30.0);
@@ -61,9 +63,11 @@ void BM_EndoscopicViewFrame(benchmark::State& state) {
       benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_EndoscopicViewFrame)
-    ->Args({1280, 720, 1})
-    ->Args({1280, 720, 0})
-    ->Args({640, 360, 1})
+    ->ArgNames({"width", "height", "lens", "scale%"})
+    ->Args({1280, 720, 1, 50})   // the window's setting
+    ->Args({1280, 720, 1, 100})  // snapshots and videos
+    ->Args({1280, 720, 0, 100})
+    ->Args({640, 360, 1, 100})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 

@@ -30,7 +30,6 @@ namespace {
 const char* kDeclarations = R"(
 uniform sampler2D colour;
 uniform sampler2D depth;
-uniform vec2 pixel;          // size of one pixel in texture coordinates
 uniform float aspect;        // width / height
 uniform float nearPlane;
 uniform float farPlane;
@@ -38,6 +37,7 @@ uniform float distortion;    // k of r_scene = r (1 + k r^2)
 uniform float focusDioptres; // 1 / focus distance, 1/m
 uniform float blurPerDioptre;
 uniform float maxBlur;       // px
+uniform float texelsPerPixel; // scene texels per output pixel (the render scale)
 uniform int fieldStop;
 float eyeDepth(vec2 uv) {
   float d = texture(depth, uv).r;
@@ -59,19 +59,10 @@ const char* kBody = R"(
   }
   float z = eyeDepth(uv);
   float radius = min(maxBlur, blurPerDioptre * abs(1.0 / z - focusDioptres));
-  vec3 rgb = texture(colour, uv).rgb;
-  if (radius > 0.5) {
-    // One ring of six bilinear taps (a hexagon) at three quarters of the circle of confusion;
-    // the offsets are constants, so the shader does no trigonometry per pixel.
-    vec2 s = 0.75 * radius * pixel;
-    rgb += texture(colour, uv + s * vec2(1.0, 0.0)).rgb;
-    rgb += texture(colour, uv + s * vec2(0.5, 0.866025)).rgb;
-    rgb += texture(colour, uv + s * vec2(-0.5, 0.866025)).rgb;
-    rgb += texture(colour, uv + s * vec2(-1.0, 0.0)).rgb;
-    rgb += texture(colour, uv + s * vec2(-0.5, -0.866025)).rgb;
-    rgb += texture(colour, uv + s * vec2(0.5, -0.866025)).rgb;
-    rgb *= 1.0 / 7.0;
-  }
+  // The circle of confusion as one trilinear fetch from the scene's mipmap chain: level L
+  // averages 2^L texels, so L = log2(diameter in scene texels) blurs over about the disc.
+  float lod = log2(max(1.0, 2.0 * radius * texelsPerPixel));
+  vec3 rgb = textureLod(colour, uv, lod).rgb;
   // The rod lens loses light towards the rim of the field (cos^4 law, gently).
   float fall = 1.0 - 0.35 * r2 * r2;
   gl_FragData[0] = vec4(rgb * fall, 1.0);
@@ -107,7 +98,7 @@ void EndoscopeLensPass::Render(const vtkRenderState* state) {
     colour_->Create2D(static_cast<unsigned>(scene_width), static_cast<unsigned>(scene_height), 4,
                       VTK_UNSIGNED_CHAR, false);
   }
-  colour_->SetMinificationFilter(vtkTextureObject::Linear);
+  colour_->SetMinificationFilter(vtkTextureObject::LinearMipmapLinear);
   colour_->SetMagnificationFilter(vtkTextureObject::Linear);
   colour_->SetWrapS(vtkTextureObject::ClampToEdge);
   colour_->SetWrapT(vtkTextureObject::ClampToEdge);
@@ -154,11 +145,11 @@ void EndoscopeLensPass::Render(const vtkRenderState* state) {
   gl->vtkglScissor(origin[0], origin[1], width, height);
 
   colour_->Activate();
+  // The depth-of-field blur reads coarser levels: rebuild them from this frame (on the GPU).
+  glGenerateMipmap(GL_TEXTURE_2D);
   depth_->Activate();
   program->SetUniformi("colour", colour_->GetTextureUnit());
   program->SetUniformi("depth", depth_->GetTextureUnit());
-  const float pixel[2] = {1.0f / static_cast<float>(width), 1.0f / static_cast<float>(height)};
-  program->SetUniform2f("pixel", pixel);
   program->SetUniformf("aspect", static_cast<float>(width) / static_cast<float>(height));
   const double* range = renderer->GetActiveCamera()->GetClippingRange();
   program->SetUniformf("nearPlane", static_cast<float>(range[0]));
@@ -167,6 +158,8 @@ void EndoscopeLensPass::Render(const vtkRenderState* state) {
   program->SetUniformf("focusDioptres", static_cast<float>(1.0 / focus_distance));
   program->SetUniformf("blurPerDioptre", static_cast<float>(blur_per_dioptre));
   program->SetUniformf("maxBlur", static_cast<float>(max_blur));
+  program->SetUniformf("texelsPerPixel",
+                       static_cast<float>(scene_width) / static_cast<float>(width));
   program->SetUniformi("fieldStop", field_stop ? 1 : 0);
   quad_->Render();
   depth_->Deactivate();

@@ -30,7 +30,8 @@ namespace {
 const char* kDeclarations = R"(
 uniform sampler2D colour;
 uniform sampler2D depth;
-uniform float aspect;        // width / height
+uniform float aspect;        // width / height of the output
+uniform float sceneAspect;   // width / height of the rendered scene (1: the field's square)
 uniform float nearPlane;
 uniform float farPlane;
 uniform float distortion;    // k of r_scene = r (1 + k r^2)
@@ -53,7 +54,7 @@ const char* kBody = R"(
   if (fieldStop == 1 && r2 > 1.0) { gl_FragData[0] = vec4(0.0, 0.0, 0.0, 1.0); return; }
   vec2 q = p * (1.0 + distortion * r2);
   // The field edge (r = 1, q = 1 + k) meets the top of the rendered image.
-  vec2 uv = q / ((1.0 + distortion) * 2.0 * vec2(aspect, 1.0)) + 0.5;
+  vec2 uv = q / ((1.0 + distortion) * 2.0 * vec2(sceneAspect, 1.0)) + 0.5;
   if (uv.x < 0.0 || uv.x > 1.0 || uv.y < 0.0 || uv.y > 1.0) {
     gl_FragData[0] = vec4(0.0, 0.0, 0.0, 1.0); return;
   }
@@ -86,8 +87,12 @@ void EndoscopeLensPass::Render(const vtkRenderState* state) {
   const int width = size[0], height = size[1];
   // The scene's resolution: the output's, scaled down by render_scale.
   const double scale = std::clamp(render_scale, 0.25, 1.0);
-  const int scene_width = std::max(1, static_cast<int>(std::lround(width * scale)));
+  // With the field stop only the centred square the round field spans is ever sampled (the
+  // field's edge maps to the top and bottom of the scene), so only that square is rendered.
+  const bool square = field_stop && width >= height;
   const int scene_height = std::max(1, static_cast<int>(std::lround(height * scale)));
+  const int scene_width =
+      square ? scene_height : std::max(1, static_cast<int>(std::lround(width * scale)));
 
   if (!colour_) {
     colour_ = vtkSmartPointer<vtkTextureObject>::New();
@@ -116,12 +121,28 @@ void EndoscopeLensPass::Render(const vtkRenderState* state) {
     framebuffer_->SetContext(window);
   }
 
+  // The scene into the colour and depth textures at their size, through the renderer's own
+  // camera with the textures' aspect ratio (vtkDepthImageProcessingPass::RenderDelegate would
+  // render through a copy of the camera that drops an explicit aspect ratio).
+  vtkCamera* camera = renderer->GetActiveCamera();
+  const bool explicit_aspect = camera->GetUseExplicitAspectRatio();
+  const double explicit_ratio = camera->GetExplicitAspectRatio();
+  camera->SetUseExplicitAspectRatio(true);
+  camera->SetExplicitAspectRatio(static_cast<double>(scene_width) / scene_height);
   gl->PushFramebufferBindings();
-  // Same size in and out: RenderDelegate keeps the camera's view angle (the aspect ratio is
-  // the renderer's), so only the resolution drops.
-  RenderDelegate(state, scene_width, scene_height, scene_width, scene_height, framebuffer_, colour_,
-                 depth_);
+  vtkRenderState scene(renderer);
+  scene.SetPropArrayAndCount(state->GetPropArray(), state->GetPropArrayCount());
+  scene.SetFrameBuffer(framebuffer_);
+  framebuffer_->Bind();
+  framebuffer_->AddColorAttachment(0, colour_);
+  framebuffer_->ActivateDrawBuffer(0);
+  framebuffer_->AddDepthAttachment(depth_);
+  framebuffer_->StartNonOrtho(scene_width, scene_height);
+  DelegatePass->Render(&scene);
+  NumberOfRenderedProps += DelegatePass->GetNumberOfRenderedProps();
   gl->PopFramebufferBindings();
+  camera->SetExplicitAspectRatio(explicit_ratio);
+  camera->SetUseExplicitAspectRatio(explicit_aspect);
 
   if (!quad_) {
     std::string fragment = vtkOpenGLRenderUtilities::GetFullScreenQuadFragmentShaderTemplate();
@@ -143,6 +164,14 @@ void EndoscopeLensPass::Render(const vtkRenderState* state) {
   gl->vtkglDisable(GL_DEPTH_TEST);
   gl->vtkglViewport(origin[0], origin[1], width, height);
   gl->vtkglScissor(origin[0], origin[1], width, height);
+  vtkOpenGLState::ScopedglEnableDisable scissor_test(gl, GL_SCISSOR_TEST);
+  gl->vtkglEnable(GL_SCISSOR_TEST);
+  if (square) {
+    // Black outside the field's square (a clear costs little), the shader only inside it.
+    gl->vtkglClearColor(0.0, 0.0, 0.0, 1.0);
+    gl->vtkglClear(GL_COLOR_BUFFER_BIT);
+    gl->vtkglScissor(origin[0] + (width - height) / 2, origin[1], height, height);
+  }
 
   colour_->Activate();
   // The depth-of-field blur reads coarser levels: rebuild them from this frame (on the GPU).
@@ -151,6 +180,8 @@ void EndoscopeLensPass::Render(const vtkRenderState* state) {
   program->SetUniformi("colour", colour_->GetTextureUnit());
   program->SetUniformi("depth", depth_->GetTextureUnit());
   program->SetUniformf("aspect", static_cast<float>(width) / static_cast<float>(height));
+  program->SetUniformf("sceneAspect",
+                       static_cast<float>(scene_width) / static_cast<float>(scene_height));
   const double* range = renderer->GetActiveCamera()->GetClippingRange();
   program->SetUniformf("nearPlane", static_cast<float>(range[0]));
   program->SetUniformf("farPlane", static_cast<float>(range[1]));
@@ -162,6 +193,7 @@ void EndoscopeLensPass::Render(const vtkRenderState* state) {
                        static_cast<float>(scene_width) / static_cast<float>(width));
   program->SetUniformi("fieldStop", field_stop ? 1 : 0);
   quad_->Render();
+  gl->vtkglScissor(origin[0], origin[1], width, height);
   depth_->Deactivate();
   colour_->Deactivate();
 }

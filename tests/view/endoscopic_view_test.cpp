@@ -101,6 +101,27 @@ TEST(EndoscopicView, lens_pass_stops_the_field_and_distorts_the_image) {
   EXPECT_GT(testing::mean_abs_difference(pinhole, optics, 0.9), 2.0);
 }
 
+TEST(EndoscopicView, without_distortion_the_lens_shows_the_pinhole_picture_in_the_field) {
+  const auto& patient = testing::hysteroscopy_patient();
+  const double angle = patient.scenario.session.instrument.optics_angle;
+  const sim::InstrumentState pose = sim::starting_pose(patient.scenario, angle);
+  view::EndoscopicView plain(patient.scenario, patient.package, offscreen(false));
+  plain.set_instrument(pose, angle);
+  const auto pinhole = plain.capture();
+  view::ViewOptions options = offscreen(true);
+  options.distortion = 0.0;  // only the depth of field and the field stop remain
+  view::EndoscopicView lens(patient.scenario, patient.package, options);
+  lens.set_instrument(pose, angle);
+  const double same = testing::mean_abs_difference(pinhole, lens.capture(), 0.9);
+  // Mapped 1:1, the field differs from the pinhole image by the blur alone; a scene sampled
+  // with the wrong scale or aspect would differ like a different picture (as k = 0.2 does).
+  options.distortion = 0.2;
+  view::EndoscopicView distorted(patient.scenario, patient.package, options);
+  distorted.set_instrument(pose, angle);
+  const double moved = testing::mean_abs_difference(pinhole, distorted.capture(), 0.9);
+  EXPECT_LT(same, 0.5 * moved);
+}
+
 TEST(EndoscopicView, half_resolution_scene_under_the_lens_keeps_the_picture) {
   const auto& patient = testing::hysteroscopy_patient();
   const double angle = patient.scenario.session.instrument.optics_angle;

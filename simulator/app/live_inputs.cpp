@@ -52,7 +52,9 @@ LiveInputs open_live_input(const sim::InputSpec& spec, const sim::InstrumentStat
                                 "instrument"
                           : "no gamepad found: the keyboard and mouse drive the instrument (a "
                             "pad plugged in later is picked up)";
-      inputs.bindings += "\n" + sim::gamepad_bindings_text();
+      inputs.bindings = (inputs.pad->connected() ? "Gamepad: " + inputs.pad->name()
+                                                 : std::string("No gamepad found: keyboard")) +
+                        "\n" + inputs.bindings + "\n" + sim::gamepad_bindings_text();
       inputs.live = std::move(gamepad);
 #else
       inputs.status =

@@ -13,6 +13,7 @@
 
 #include "core/package/scenario_package.h"
 #include "simulator/session/manual_control.h"
+#include "simulator/session/session_runner.h"
 #include "simulator/view/endoscopic_view.h"
 
 namespace {
@@ -70,5 +71,34 @@ BENCHMARK(BM_EndoscopicViewFrame)
     ->Args({640, 360, 1, 100})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
+
+/// A frame of a session in the window: the session's state into the view (every surface's
+/// embedded positions and normals re-uploaded, the overlay's texts and bars), then the render
+/// at the window's setting (1280 × 720, lens pass, scene at half resolution). The session
+/// steps once per frame; its physics is not part of the view's cost but is timed with it.
+void BM_EndoscopicViewSessionFrame(benchmark::State& state) {
+  const auto& [package, scenario] = patient();
+  viscera::view::ViewOptions options;
+  options.offscreen = true;
+  options.render_scale = 0.5;
+  viscera::view::EndoscopicView view(scenario, package, options);
+  const viscera::sim::InstrumentState start = viscera::sim::starting_pose(scenario, 30.0);
+  const viscera::sim::RecordedInput resting({{0, start}});
+  viscera::sim::HeadlessRunOptions run;
+  run.instrument = &resting;
+  run.duration = 1e6;
+  viscera::sim::SessionRunner runner(scenario, run);
+  view.update(runner);
+  view.render();
+  for (auto _ : state) {
+    runner.step(start);
+    view.update(runner);
+    view.render();
+    view.window()->WaitForCompletion();
+  }
+  state.counters["fps"] =
+      benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_EndoscopicViewSessionFrame)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace

@@ -28,7 +28,10 @@ std::uint16_t free_port() {
   return probe.local().port;
 }
 
-TEST(SimCliInput, a_device_over_udp_drives_a_headless_run_and_gets_force_packets) {
+/// Runs `viscera-sim run PATIENT --device udp:PORT` with `mode` (" --headless" or a window's
+/// size) for 1 s while a simulated device pushes the tool 2 mm along its shaft; checks the
+/// force packets, the recorded states and the bit-identical replay.
+void drive_with_device(const std::string& mode) {
   const auto& patient = testing::hysteroscopy_patient();
   const auto dir = testing::scratch_dir();
   const auto trace = dir / "device.json";
@@ -51,16 +54,15 @@ TEST(SimCliInput, a_device_over_udp_drives_a_headless_run_and_gets_force_packets
       pose.orientation = {q.w(), q.x(), q.y(), q.z()};
       pose.outflow_valve = 0.5F;
       client.send(pose);
-      while (client.receive(2))
+      for (auto feedback = client.receive(1); feedback; feedback = client.receive(0))
         ++forces;
     }
   });
-  const auto result =
-      run_program("viscera-sim",
-                  "run " + shell_quote(patient.package.string()) +
-                      " --headless --duration 1 --device udp:" + std::to_string(port) +
-                      " --record " + shell_quote(trace.string()),
-                  dir);
+  const auto result = run_program("viscera-sim",
+                                  "run " + shell_quote(patient.package.string()) + mode +
+                                      " --duration 1 --device udp:" + std::to_string(port) +
+                                      " --record " + shell_quote(trace.string()),
+                                  dir);
   done = true;
   device.join();
   ASSERT_EQ(result.exit_code, 0) << result.err;
@@ -77,6 +79,14 @@ TEST(SimCliInput, a_device_over_udp_drives_a_headless_run_and_gets_force_packets
   const auto replay = run_program("viscera-sim", "replay " + shell_quote(trace.string()), dir);
   EXPECT_EQ(replay.exit_code, 0) << replay.err;
   EXPECT_NE(replay.out.find("replay identical"), std::string::npos) << replay.out;
+}
+
+TEST(SimCliInput, a_device_over_udp_drives_a_headless_run_and_gets_force_packets) {
+  drive_with_device(" --headless");
+}
+
+TEST(SimCliInput, a_device_over_udp_drives_the_window) {
+  drive_with_device(" --width 320 --height 240");
 }
 
 TEST(SimCliInput, a_recorded_trace_is_an_input_and_stays_identical) {

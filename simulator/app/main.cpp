@@ -150,7 +150,8 @@ int run(RunOptions options) {
     run.perforation_depth = script->perforation_depth();
     run.force_warning = script->force_warning();
     if (options.duration <= 0.0) run.duration = script->duration();
-  } else if (recorded) {
+  } else if (recorded && (!recorded->body.empty() || !recorded->script.is_null() ||
+                          !recorded->inputs.empty())) {
     replayed = recorded->input();
     script_json = recorded->script;
     run.instrument = replayed.get();
@@ -158,8 +159,8 @@ int run(RunOptions options) {
     run.instrument_stiffness = recorded->stiffness;
     run.perforation_depth = recorded->perforation_depth;
     run.force_warning = recorded->force_warning;
-    if (options.duration <= 0.0) run.duration = recorded->duration;
   }
+  if (recorded && options.duration <= 0.0) run.duration = recorded->duration;
   run.record_inputs = !options.record.empty() || !options.report_dir.empty() || !options.headless;
   SessionReport report;
   const viscera::sim::InstrumentState start = viscera::sim::starting_pose(scenario, optics_angle);

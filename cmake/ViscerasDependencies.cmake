@@ -55,3 +55,12 @@ endif()
 if(VISCERA_BUILD_BENCHMARKS)
   find_package(benchmark REQUIRED)
 endif()
+
+# SDL2 reads gamepads in the simulator window (dev.sh installs libsdl2-dev). Optional: a build
+# without it lacks only the gamepad input (viscera-sim says so when asked for one).
+find_package(SDL2 CONFIG QUIET)
+if(TARGET SDL2::SDL2)
+  message(STATUS "SDL2 ${SDL2_VERSION}: gamepad input enabled")
+else()
+  message(STATUS "SDL2 not found: viscera-sim builds without gamepad input")
+endif()

@@ -6,11 +6,13 @@
 /// a one-line message and leave the document as it was. Long work runs off the UI thread.
 
 #include <QMainWindow>
+#include <array>
 #include <filesystem>
 #include <functional>
 #include <map>
 #include <optional>
 
+#include "core/image/image_volume.h"
 #include "studio/document/autosave.h"
 #include "studio/document/primitive_objects.h"
 #include "studio/document/scenario_document.h"
@@ -23,6 +25,7 @@ namespace viscera::studio {
 
 class MaterialPanel;
 class SceneTree;
+class SegmentationPanel;
 class SliceViews;
 class SceneView;
 
@@ -45,6 +48,7 @@ class MainWindow : public QMainWindow {
   SceneTree* scene_tree() const { return tree_; }
   MaterialPanel* material_panel() const { return materials_; }
   SliceViews* slice_views() const { return slices_; }
+  SegmentationPanel* segmentation_panel() const { return segmentation_; }
   Autosave& autosave() { return *autosave_; }
   TrainingLauncher& launcher() { return launcher_; }
 
@@ -61,6 +65,9 @@ class MainWindow : public QMainWindow {
   /// MINC file, through importers::read_volume) off the UI thread and shows it in the three slice
   /// views and as planes in the 3D view — a modelling aid, not part of the scenario.
   bool open_image_volume(const std::filesystem::path& path);
+  /// Replaces the shown image volume by its block average over `factors` voxels
+  /// (core::downsample), a coarser working copy for segmentation; labels start over.
+  bool downsample_image_volume(const std::array<int, 3>& factors);
   /// Builds the primitive off the UI thread, adds it as one undoable command and selects it.
   bool create_primitive(const PrimitiveRequest& request);
   /// Selects an object in the tree, the 3D view and the material panel.
@@ -96,6 +103,7 @@ class MainWindow : public QMainWindow {
   void remember_recent(const std::filesystem::path& path);
   void rebuild_recent_menu();
   void ask_create(PrimitiveKind kind);
+  void show_image_volume(const core::ImageVolume& volume);
   bool ask_save_as();
   bool maybe_save();
 
@@ -109,6 +117,7 @@ class MainWindow : public QMainWindow {
   QPlainTextEdit* report_ = nullptr;
   SliceViews* slices_ = nullptr;
   class QDockWidget* slice_dock_ = nullptr;
+  SegmentationPanel* segmentation_ = nullptr;
   QMenu* recent_menu_ = nullptr;
   std::function<void(const QString&)> error_handler_;
 };

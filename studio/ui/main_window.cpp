@@ -18,6 +18,7 @@
 #include "studio/ui/scene_view.h"
 #include "studio/ui/segmentation_panel.h"
 #include "studio/ui/slice_views.h"
+#include "studio/ui/volume_rendering.h"
 #include "templates/template_catalog.h"
 
 namespace viscera::studio {
@@ -104,6 +105,7 @@ void MainWindow::build_docks() {
   connect(segmentation_, &SegmentationPanel::organ_added, this, &MainWindow::select_object);
   connect(slices_, &SliceViews::point_clicked, segmentation_,
           [this](int, const core::Vec3& point) { segmentation_->set_seed(point); });
+  build_volume_views();
 
   resizeDocks({tree_dock, material_dock}, {240, 320}, Qt::Horizontal);
 }
@@ -220,6 +222,7 @@ bool MainWindow::downsample_image_volume(const std::array<int, 3>& factors) {
 void MainWindow::show_image_volume(const core::ImageVolume& volume) {
   slices_->set_volume(volume);
   segmentation_->set_volume(volume);
+  volume_rendering_->set_volume(volume);
   slice_dock_->show();
   view_->set_image_planes(
       {slices_->plane_in_3d(0), slices_->plane_in_3d(1), slices_->plane_in_3d(2)});

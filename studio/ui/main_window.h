@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 
 #include "core/image/image_volume.h"
@@ -26,6 +27,8 @@ namespace viscera::studio {
 class MaterialPanel;
 class SceneTree;
 class SegmentationPanel;
+class LabelOverlay;
+class VolumeRendering;
 class SliceViews;
 class SceneView;
 
@@ -49,6 +52,8 @@ class MainWindow : public QMainWindow {
   MaterialPanel* material_panel() const { return materials_; }
   SliceViews* slice_views() const { return slices_; }
   SegmentationPanel* segmentation_panel() const { return segmentation_; }
+  LabelOverlay* label_overlay() const { return overlay_; }
+  VolumeRendering& volume_rendering() { return *volume_rendering_; }
   Autosave& autosave() { return *autosave_; }
   TrainingLauncher& launcher() { return launcher_; }
 
@@ -68,6 +73,13 @@ class MainWindow : public QMainWindow {
   /// Replaces the shown image volume by its block average over `factors` voxels
   /// (core::downsample), a coarser working copy for segmentation; labels start over.
   bool downsample_image_volume(const std::array<int, 3>& factors);
+  /// Shows or hides the volume rendering of the image volume in the 3D view
+  /// (main_window_volume.cpp).
+  void set_volume_rendering(bool shown);
+  bool volume_rendering_shown() const;
+  /// Applies a transfer-function preset ("CT soft tissue", "CT bone", "MR default") and shows
+  /// the volume rendering; false (with an error) for an unknown name or without a volume.
+  bool set_volume_preset(const QString& name);
   /// Builds the primitive off the UI thread, adds it as one undoable command and selects it.
   bool create_primitive(const PrimitiveRequest& request);
   /// Selects an object in the tree, the 3D view and the material panel.
@@ -104,6 +116,8 @@ class MainWindow : public QMainWindow {
   void rebuild_recent_menu();
   void ask_create(PrimitiveKind kind);
   void show_image_volume(const core::ImageVolume& volume);
+  void build_volume_views();
+  void build_volume_menu(QMenu* view);
   bool ask_save_as();
   bool maybe_save();
 
@@ -118,6 +132,10 @@ class MainWindow : public QMainWindow {
   SliceViews* slices_ = nullptr;
   class QDockWidget* slice_dock_ = nullptr;
   SegmentationPanel* segmentation_ = nullptr;
+  LabelOverlay* overlay_ = nullptr;
+  std::unique_ptr<VolumeRendering> volume_rendering_;
+  class QActionGroup* preset_actions_ = nullptr;
+  class QAction* volume_action_ = nullptr;
   QMenu* recent_menu_ = nullptr;
   std::function<void(const QString&)> error_handler_;
 };

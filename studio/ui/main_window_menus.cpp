@@ -113,6 +113,7 @@ void MainWindow::build_menus() {
   QMenu* view = menuBar()->addMenu(tr("&View"));
   view->addAction(tr("&Reset camera"), this,
                   [this] { view_->show_scenario(document_.scenario(), document_.files(), true); });
+  build_volume_menu(view);
 }
 
 void MainWindow::rebuild_recent_menu() {

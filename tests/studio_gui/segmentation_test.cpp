@@ -17,10 +17,13 @@
 #include "core/mesh/surface_mesh.h"
 #include "core/mesh/tet_mesh.h"
 #include "core/segmentation/region_growing.h"
+#include "studio/ui/label_overlay.h"
 #include "studio/ui/main_window.h"
 #include "studio/ui/scene_view.h"
 #include "studio/ui/segmentation_panel.h"
 #include "studio/ui/slice_views.h"
+#include "studio/ui/volume_rendering.h"
+#include "tests/studio_gui/image_checks.h"
 
 namespace fs = std::filesystem;
 using namespace viscera;
@@ -175,6 +178,64 @@ class SegmentationTest : public QObject {
     QVERIFY(errors[0].contains("label 7"));
     QCOMPARE(window.document().scenario().objects.size(), objects);
     QCOMPARE(undo->count(), steps + 1);
+  }
+
+  void volumeRenderingPresetsAndLabelOverlay() {
+    studio::MainWindow window(options());
+    QStringList errors;
+    window.set_error_handler([&](const QString& m) { errors << m; });
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QVERIFY(!window.set_volume_preset("CT bone"));  // no volume yet: an error, nothing shown
+    QCOMPARE(errors.size(), 1);
+    QVERIFY(open_liver(window));
+    studio::SceneView* view = window.scene_view();
+    const auto grab = [view] {
+      view->render();
+      return view->grabFramebuffer();
+    };
+    // The slice planes alone are grey: no warm pixels.
+    QVERIFY(!window.volume_rendering_shown());
+    const double planes_only = studio_tests::tissue_share(grab());
+    QVERIFY(planes_only < 0.002);
+    std::vector<double> shares;
+    std::vector<QImage> images;
+    for (const auto& preset : studio::volume_presets()) {
+      QVERIFY(window.set_volume_preset(QString::fromStdString(preset.name)));
+      QVERIFY(window.volume_rendering_shown());
+      QCOMPARE(window.volume_rendering().preset(), preset.name);
+      images.push_back(grab());
+      shares.push_back(studio_tests::tissue_share(images.back()));
+      qInfo("%s: %.1f %% warm pixels", preset.name.c_str(), 100.0 * shares.back());
+      QVERIFY(shares.back() > 0.01);  // the liver (255) is drawn in the preset's colours
+    }
+    QVERIFY(images[0] != images[1] && images[1] != images[2]);
+    QVERIFY(!window.set_volume_preset("CT lung"));
+    QCOMPARE(errors.size(), 2);
+    window.set_volume_rendering(false);
+    QVERIFY(studio_tests::tissue_share(grab()) < 0.002);
+
+    // The label overlay: the thresholded liver in label 1's red over the grey axial slice.
+    studio::SliceViews* slices = window.slice_views();
+    slices->set_slice(2, 41);
+    QVERIFY(studio_tests::tissue_share(slices->grab_view(2)) < 0.002);
+    QVERIFY(window.segmentation_panel()->segment_threshold(128.0, 255.0, 1));
+    const double red = studio_tests::tissue_share(slices->grab_view(2));
+    qInfo("overlay: %.1f %% red pixels in the axial view", 100.0 * red);
+    QVERIFY(red > 0.02);
+    window.label_overlay()->set_opacity(0.0);
+    QVERIFY(studio_tests::tissue_share(slices->grab_view(2)) < 0.002);
+    window.label_overlay()->set_opacity(0.5);
+    // A slice below the liver has no labels.
+    slices->set_slice(2, 0);
+    QVERIFY(studio_tests::tissue_share(slices->grab_view(2)) < 0.002);
+    // Label files on another grid are refused, the labels kept.
+    const fs::path other = dir() / "other.vti";
+    studio_tests::write_phantom(other, {8, 8, 8}, 0.004);
+    const std::size_t labelled = window.segmentation_panel()->segmentation().voxel_count(1);
+    QVERIFY(!window.segmentation_panel()->load_label_map(other));
+    QCOMPARE(errors.size(), 3);
+    QCOMPARE(window.segmentation_panel()->segmentation().voxel_count(1), labelled);
   }
 
   void cancelWhileMeshingLeavesTheDocumentUnchanged() {

@@ -14,9 +14,12 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "core/image/downsample.h"
+#include "core/image/image_volume_io.h"
 #include "core/mesh/surface_mesh.h"
 #include "core/mesh/tet_mesh.h"
 #include "core/segmentation/region_growing.h"
+#include "importers/volume/volume_reader.h"
 #include "studio/ui/label_overlay.h"
 #include "studio/ui/main_window.h"
 #include "studio/ui/scene_view.h"
@@ -58,6 +61,17 @@ class SegmentationTest : public QObject {
   /// (109 × 88 × 82 voxels of about 2.5 mm).
   bool open_liver(studio::MainWindow& window) {
     return window.open_image_volume(liver()) && window.downsample_image_volume({4, 4, 2});
+  }
+
+  /// The same downsampled liver, saved once as .vti by the library functions the window calls
+  /// (reading the full 25 M voxels for every test would dominate the suite's time).
+  bool open_coarse_liver(studio::MainWindow& window) {
+    const fs::path coarse = dir() / "liver_coarse.vti";
+    if (!fs::exists(coarse)) {
+      core::write_volume_vti(core::downsample(importers::read_volume(liver()).volume, {4, 4, 2}),
+                             coarse);
+    }
+    return window.open_image_volume(coarse);
   }
 
   /// The voxel of the axial slice `near`[2] nearest `near` whose 5 × 5 × 3 neighbourhood holds
@@ -188,7 +202,9 @@ class SegmentationTest : public QObject {
     QVERIFY(QTest::qWaitForWindowExposed(&window));
     QVERIFY(!window.set_volume_preset("CT bone"));  // no volume yet: an error, nothing shown
     QCOMPARE(errors.size(), 1);
-    QVERIFY(open_liver(window));
+    QVERIFY(open_coarse_liver(window));
+    QCOMPARE(window.segmentation_panel()->segmentation().volume().dims,
+             (std::array<int, 3>{109, 88, 82}));
     studio::SceneView* view = window.scene_view();
     const auto grab = [view] {
       view->render();
@@ -244,7 +260,7 @@ class SegmentationTest : public QObject {
     window.set_error_handler([&](const QString& m) { errors << m; });
     window.show();
     QVERIFY(QTest::qWaitForWindowExposed(&window));
-    QVERIFY(open_liver(window));
+    QVERIFY(open_coarse_liver(window));
     studio::SegmentationPanel* panel = window.segmentation_panel();
     QVERIFY(panel->segment_threshold(128.0, 255.0, 1));
     const bool dirty = window.document().is_dirty();

@@ -4,6 +4,7 @@
 #include <QDockWidget>
 #include <QMessageBox>
 #include <QPlainTextEdit>
+#include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
 
@@ -97,7 +98,10 @@ void MainWindow::build_docks() {
   segmentation_ = new SegmentationPanel(document_, this);
   auto* segmentation_dock = new QDockWidget(tr("Segmentation"), this);
   segmentation_dock->setObjectName("segmentation-dock");
-  segmentation_dock->setWidget(segmentation_);
+  auto* segmentation_scroll = new QScrollArea(segmentation_dock);
+  segmentation_scroll->setWidget(segmentation_);
+  segmentation_scroll->setWidgetResizable(true);
+  segmentation_dock->setWidget(segmentation_scroll);
   addDockWidget(Qt::RightDockWidgetArea, segmentation_dock);
   tabifyDockWidget(material_dock, segmentation_dock);
   material_dock->raise();

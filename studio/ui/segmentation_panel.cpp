@@ -2,8 +2,8 @@
 
 #include <QDoubleSpinBox>
 #include <QFormLayout>
+#include <QGridLayout>
 #include <QGroupBox>
-#include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
@@ -110,16 +110,17 @@ SegmentationPanel::SegmentationPanel(ScenarioDocument& document, QWidget* parent
   connect(grow_button, &QPushButton::clicked, this, [this] { grow_from_seed(); });
 
   auto* clean = new QGroupBox(tr("Clean up"), this);
-  auto* clean_layout = new QHBoxLayout(clean);
+  auto* clean_layout = new QGridLayout(clean);
   radius_ = count_box(clean, 1, 20, 1);
   radius_->setSuffix(tr(" voxels"));
   auto* open_button = new QPushButton(tr("Open"), clean);
   auto* close_button = new QPushButton(tr("Close"), clean);
   auto* largest_button = new QPushButton(tr("Keep largest"), clean);
-  clean_layout->addWidget(radius_);
-  clean_layout->addWidget(open_button);
-  clean_layout->addWidget(close_button);
-  clean_layout->addWidget(largest_button);
+  clean_layout->addWidget(new QLabel(tr("Radius"), clean), 0, 0);
+  clean_layout->addWidget(radius_, 0, 1);
+  clean_layout->addWidget(open_button, 1, 0);
+  clean_layout->addWidget(close_button, 1, 1);
+  clean_layout->addWidget(largest_button, 2, 0, 1, 2);
   layout->addWidget(clean);
   connect(open_button, &QPushButton::clicked, this, [this] { open_labels(radius_->value()); });
   connect(close_button, &QPushButton::clicked, this, [this] { close_labels(radius_->value()); });

@@ -71,6 +71,17 @@ void VolumeRendering::set_volume(const core::ImageVolume& volume) {
   apply_preset(preset_);
 }
 
+std::string VolumeRendering::last_render_mode() const {
+  switch (static_cast<vtkSmartVolumeMapper*>(volume_->GetMapper())->GetLastUsedRenderMode()) {
+    case vtkSmartVolumeMapper::GPURenderMode:
+      return "GPU";
+    case vtkSmartVolumeMapper::RayCastRenderMode:
+      return "CPU";
+    default:
+      return "none";
+  }
+}
+
 bool VolumeRendering::apply_preset(const std::string& name) {
   for (const auto& preset : volume_presets()) {
     if (preset.name == name) {

@@ -47,6 +47,9 @@ class VolumeRendering {
   /// Applies a preset by name; returns false for an unknown name.
   bool apply_preset(const std::string& name);
   const std::string& preset() const { return preset_; }
+  /// The ray caster of the last render: "GPU", "CPU" or "none" (not rendered yet, or no
+  /// supported path).
+  std::string last_render_mode() const;
   /// The prop to add to a renderer.
   vtkVolume* prop() const { return volume_; }
 

@@ -222,7 +222,9 @@ class SegmentationTest : public QObject {
       QCOMPARE(window.volume_rendering().preset(), preset.name);
       images.push_back(grab());
       shares.push_back(studio_tests::tissue_share(images.back()));
-      qInfo("%s: %.1f %% warm pixels", preset.name.c_str(), 100.0 * shares.back());
+      qInfo("%s: %.1f %% warm pixels (%s ray casting)", preset.name.c_str(), 100.0 * shares.back(),
+            window.volume_rendering().last_render_mode().c_str());
+      QVERIFY(window.volume_rendering().last_render_mode() != "none");
       QVERIFY(shares.back() > 0.01);  // the liver (255) is drawn in the preset's colours
     }
     QVERIFY(images[0] != images[1] && images[1] != images[2]);
@@ -252,6 +254,15 @@ class SegmentationTest : public QObject {
     QVERIFY(!window.segmentation_panel()->load_label_map(other));
     QCOMPARE(errors.size(), 3);
     QCOMPARE(window.segmentation_panel()->segmentation().voxel_count(1), labelled);
+    // A label file on the volume's grid replaces the labels (as `viscera segment` writes them).
+    const fs::path saved = dir() / "liver_labels.vti";
+    core::LabelMap relabelled = window.segmentation_panel()->segmentation().labels();
+    for (std::size_t v = 0; v < relabelled.image.voxel_count(); ++v)
+      if (relabelled.label(v) == 1) relabelled.set_label(v, 3);
+    core::write_label_map_vti(relabelled, saved);
+    QVERIFY(window.segmentation_panel()->load_label_map(saved));
+    QCOMPARE(window.segmentation_panel()->segmentation().voxel_count(1), std::size_t{0});
+    QCOMPARE(window.segmentation_panel()->segmentation().voxel_count(3), labelled);
   }
 
   void cancelWhileMeshingLeavesTheDocumentUnchanged() {

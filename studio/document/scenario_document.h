@@ -75,6 +75,7 @@ class ScenarioDocument : public QObject {
 
   // Mutators for QUndoCommands only: each emits changed().
   core::Scenario& edit_scenario() { return content_.scenario; }
+  PackageFiles& edit_files() { return content_.files; }
   void notify_changed(ChangeKind kind, const QString& id = {});
 
  signals:

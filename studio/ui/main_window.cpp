@@ -13,6 +13,7 @@
 #include "studio/document/document_commands.h"
 #include "studio/ui/background_task.h"
 #include "studio/ui/material_panel.h"
+#include "studio/ui/organ_panels.h"
 #include "studio/ui/scene_tree.h"
 #include "studio/ui/scene_view.h"
 #include "studio/ui/slice_views.h"
@@ -91,6 +92,10 @@ void MainWindow::build_docks() {
   slice_dock_->hide();
   connect(slices_, &SliceViews::changed, view_, &SceneView::render);
 
+  organ_panels_ = new OrganPanels(document_, *view_, *this);
+  connect(organ_panels_, &OrganPanels::failed, this, &MainWindow::show_error);
+  connect(organ_panels_, &OrganPanels::select_requested, this, &MainWindow::select_object);
+
   resizeDocks({tree_dock, material_dock}, {240, 320}, Qt::Horizontal);
 }
 
@@ -110,6 +115,7 @@ void MainWindow::select_object(const QString& id) {
   view_->select_object(id);
   tree_->select_object(view_->selected_object());
   materials_->show_object(view_->selected_object());
+  organ_panels_->show_object(view_->selected_object());
 }
 
 void MainWindow::show_error(const QString& message) {

@@ -22,6 +22,7 @@ class QPlainTextEdit;
 namespace viscera::studio {
 
 class MaterialPanel;
+class OrganPanels;
 class SceneTree;
 class SliceViews;
 class SceneView;
@@ -45,6 +46,8 @@ class MainWindow : public QMainWindow {
   SceneTree* scene_tree() const { return tree_; }
   MaterialPanel* material_panel() const { return materials_; }
   SliceViews* slice_views() const { return slices_; }
+  /// Texture, vessel and pathology panels (organ_panels.h).
+  OrganPanels* organ_panels() const { return organ_panels_; }
   Autosave& autosave() { return *autosave_; }
   TrainingLauncher& launcher() { return launcher_; }
 
@@ -108,6 +111,7 @@ class MainWindow : public QMainWindow {
   MaterialPanel* materials_ = nullptr;
   QPlainTextEdit* report_ = nullptr;
   SliceViews* slices_ = nullptr;
+  OrganPanels* organ_panels_ = nullptr;
   class QDockWidget* slice_dock_ = nullptr;
   QMenu* recent_menu_ = nullptr;
   std::function<void(const QString&)> error_handler_;

@@ -1,0 +1,51 @@
+#include "studio/ui/organ_panels.h"
+
+#include <QDockWidget>
+#include <QMainWindow>
+
+#include "studio/ui/material_fit_panel.h"
+#include "studio/ui/pathology_panel.h"
+#include "studio/ui/scene_view.h"
+#include "studio/ui/texture_panel.h"
+#include "studio/ui/vessel_panel.h"
+
+namespace viscera::studio {
+
+OrganPanels::OrganPanels(ScenarioDocument& document, SceneView& view, QMainWindow& window)
+    : QObject(&window) {
+  texture_ = new TexturePanel(document, &window);
+  vessels_ = new VesselPanel(document, &window);
+  pathologies_ = new PathologyPanel(document, &window);
+  material_fit_ = new MaterialFitPanel(document, &window);
+  // Tabbed with the material dock when there is one, so the 3D view keeps its width.
+  QDockWidget* first = window.findChild<QDockWidget*>(QStringLiteral("material-dock"));
+  QDockWidget* raised = first;
+  const std::pair<OrganPanel*, QString> panels[] = {{texture_, tr("Texture")},
+                                                    {vessels_, tr("Vessels")},
+                                                    {pathologies_, tr("Pathologies")},
+                                                    {material_fit_, tr("Stress–strain")}};
+  for (const auto& [panel, title] : panels) {
+    auto* dock = new QDockWidget(title, &window);
+    dock->setObjectName(QString(panel->metaObject()->className()).section("::", -1) + "-dock");
+    dock->setWidget(panel);
+    window.addDockWidget(Qt::RightDockWidgetArea, dock);
+    if (first != nullptr) {
+      window.tabifyDockWidget(first, dock);
+    } else {
+      first = raised = dock;
+    }
+    connect(panel, &OrganPanel::failed, this, &OrganPanels::failed);
+  }
+  raised->raise();
+  connect(&view, &SceneView::surface_clicked, pathologies_, &PathologyPanel::on_surface_clicked);
+  connect(pathologies_, &PathologyPanel::placed, this, &OrganPanels::select_requested);
+}
+
+void OrganPanels::show_object(const QString& id) {
+  texture_->show_object(id);
+  vessels_->show_object(id);
+  pathologies_->show_object(id);
+  material_fit_->show_object(id);
+}
+
+}  // namespace viscera::studio

@@ -3,6 +3,7 @@
 #include <QDockWidget>
 #include <QMainWindow>
 
+#include "studio/ui/control_points.h"
 #include "studio/ui/material_fit_panel.h"
 #include "studio/ui/pathology_panel.h"
 #include "studio/ui/scene_view.h"
@@ -17,13 +18,15 @@ OrganPanels::OrganPanels(ScenarioDocument& document, SceneView& view, QMainWindo
   vessels_ = new VesselPanel(document, &window);
   pathologies_ = new PathologyPanel(document, &window);
   material_fit_ = new MaterialFitPanel(document, &window);
+  control_points_ = new ControlPointPanel(document, view, &window);
   // Tabbed with the material dock when there is one, so the 3D view keeps its width.
   QDockWidget* first = window.findChild<QDockWidget*>(QStringLiteral("material-dock"));
   QDockWidget* raised = first;
   const std::pair<OrganPanel*, QString> panels[] = {{texture_, tr("Texture")},
                                                     {vessels_, tr("Vessels")},
                                                     {pathologies_, tr("Pathologies")},
-                                                    {material_fit_, tr("Stress–strain")}};
+                                                    {material_fit_, tr("Stress–strain")},
+                                                    {control_points_, tr("Control points")}};
   for (const auto& [panel, title] : panels) {
     auto* dock = new QDockWidget(title, &window);
     dock->setObjectName(QString(panel->metaObject()->className()).section("::", -1) + "-dock");
@@ -39,6 +42,7 @@ OrganPanels::OrganPanels(ScenarioDocument& document, SceneView& view, QMainWindo
   raised->raise();
   connect(&view, &SceneView::surface_clicked, pathologies_, &PathologyPanel::on_surface_clicked);
   connect(pathologies_, &PathologyPanel::placed, this, &OrganPanels::select_requested);
+  connect(control_points_, &ControlPointPanel::created, this, &OrganPanels::select_requested);
 }
 
 void OrganPanels::show_object(const QString& id) {
@@ -46,6 +50,7 @@ void OrganPanels::show_object(const QString& id) {
   vessels_->show_object(id);
   pathologies_->show_object(id);
   material_fit_->show_object(id);
+  control_points_->show_object(id);
 }
 
 }  // namespace viscera::studio

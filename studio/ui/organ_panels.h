@@ -1,8 +1,9 @@
 #pragma once
 /// The organ panels of the main window (issue 9 §5) and their docks: texture, vessels,
-/// pathologies and the stress–strain fit, tabbed on the right. They follow the selection; the
-/// pathology panel listens to clicks on surfaces in the 3D view. The main window constructs this
-/// once and forwards the selection; tests reach every panel's public actions through it.
+/// pathologies, the stress–strain fit and model control points, tabbed on the right. They follow
+/// the selection; the pathology panel listens to clicks on surfaces in the 3D view. The main window
+/// constructs this once and forwards the selection; tests reach every panel's public actions
+/// through it.
 
 #include <QObject>
 
@@ -12,6 +13,7 @@ class QMainWindow;
 
 namespace viscera::studio {
 
+class ControlPointPanel;
 class MaterialFitPanel;
 class PathologyPanel;
 class SceneView;
@@ -32,6 +34,7 @@ class OrganPanels : public QObject {
   VesselPanel* vessels() const { return vessels_; }
   PathologyPanel* pathologies() const { return pathologies_; }
   MaterialFitPanel* material_fit() const { return material_fit_; }
+  ControlPointPanel* control_points() const { return control_points_; }
 
  signals:
   /// A panel's action failed (one sentence).
@@ -44,6 +47,7 @@ class OrganPanels : public QObject {
   VesselPanel* vessels_ = nullptr;
   PathologyPanel* pathologies_ = nullptr;
   MaterialFitPanel* material_fit_ = nullptr;
+  ControlPointPanel* control_points_ = nullptr;
 };
 
 }  // namespace viscera::studio

@@ -6,8 +6,11 @@
 #include "studio/ui/organ_panels.h"
 
 #include <QVTKOpenGLNativeWidget.h>
+#include <vtkHandleWidget.h>
+#include <vtkRenderer.h>
 
 #include <QElapsedTimer>
+#include <QMouseEvent>
 #include <QSurfaceFormat>
 #include <QTemporaryDir>
 #include <QTreeWidget>
@@ -17,7 +20,10 @@
 #include <fstream>
 
 #include "core/materials/material_constants.h"
+#include "core/modelling/model_document.h"
 #include "core/package/scenario_package.h"
+#include "studio/document/model_objects.h"
+#include "studio/ui/control_points.h"
 #include "studio/ui/main_window.h"
 #include "studio/ui/material_fit_panel.h"
 #include "studio/ui/pathology_panel.h"
@@ -326,6 +332,82 @@ class OrganPanelsTest : public QObject {
     QVERIFY(panel->fit()->rms_error > 100.0);
     QVERIFY(std::abs(panel->fit()->cubic[1] - truth[1]) > 1.0);
     qInfo("material test: %lld ms", static_cast<long long>(clock.elapsed()));
+  }
+
+  void draggingAControlPointReshapesTheSurface() {
+    QElapsedTimer clock;
+    clock.start();
+    studio::MainWindow window(options());
+    QStringList errors;
+    open_ball(window, errors);
+    // A 4 × 4 open sheet above the ball, facing the camera's side.
+    core::ModelDocument sheet;
+    sheet.id = "sheet";
+    sheet.name = "Sheet";
+    sheet.kind = core::ModelKind::Flat;
+    sheet.flat = core::make_flat(core::Vec3(-0.03, -0.03, 0.06), core::Vec3(0.06, 0.0, 0.0),
+                                 core::Vec3(0.0, 0.06, 0.0), 4, 4);
+    sheet.flat.open = true;
+    studio::ControlPointPanel* panel = window.organ_panels()->control_points();
+    QCOMPARE(panel->add_model(sheet), QString("sheet"));
+    QVERIFY2(errors.isEmpty(), qPrintable(errors.join('\n')));
+    QCOMPARE(window.scene_view()->selected_object(), QString("sheet"));
+    QCOMPARE(panel->handle_count(), 16);
+    window.scene_view()->reset_camera();
+    window.scene_view()->render();
+    QTest::qWait(50);
+    const core::SurfaceMesh before = window.document().scenario().find_object("sheet")->surface;
+    const std::string model_before = window.document().files().at(studio::model_file_path("sheet"));
+
+    // Drag control point 5 (row 1, column 1) 40 pixels up on the screen with the mouse.
+    const int index = 5;
+    const core::Vec3 start = panel->handle_position(index);
+    QVERIFY((start - sheet.flat.control_points[index]).norm() < 1e-12);
+    studio::SceneView* view = window.scene_view();
+    vtkRenderer* renderer = view->renderer();
+    renderer->SetWorldPoint(start.x(), start.y(), start.z(), 1.0);
+    renderer->WorldToDisplay();
+    const double* display = renderer->GetDisplayPoint();
+    const double ratio = view->devicePixelRatioF();
+    const QPoint from(static_cast<int>(std::lround(display[0] / ratio)),
+                      static_cast<int>(std::lround(view->height() - 1 - display[1] / ratio)));
+    const auto send = [&](QEvent::Type type, QPoint at, Qt::MouseButtons buttons) {
+      QMouseEvent event(type, at, view->mapToGlobal(at), Qt::LeftButton, buttons, Qt::NoModifier);
+      QApplication::sendEvent(view, &event);
+    };
+    const int undo_steps = window.document().undo_stack()->count();
+    send(QEvent::MouseButtonPress, from, Qt::LeftButton);
+    for (int step = 1; step <= 4; ++step)
+      send(QEvent::MouseMove, from - QPoint(0, 10 * step), Qt::LeftButton);
+    send(QEvent::MouseButtonRelease, from - QPoint(0, 40), Qt::NoButton);
+    QTRY_COMPARE_WITH_TIMEOUT(window.document().undo_stack()->count(), undo_steps + 1, 5000);
+    QVERIFY2(errors.isEmpty(), qPrintable(errors.join('\n')));
+
+    // The model's point moved with the mouse, the surface with it; the handles follow.
+    const auto moved = studio::object_model(window.document().files(), "sheet");
+    QVERIFY(moved.has_value());
+    const core::Vec3 to = core::model_control_points(*moved)[index];
+    qInfo("point %d moved by %.2f mm", index, 1000.0 * (to - start).norm());
+    QVERIFY((to - start).norm() > 0.002);
+    QVERIFY((to - panel->handle_position(index)).norm() < 1e-9);
+    const core::SurfaceMesh& after = window.document().scenario().find_object("sheet")->surface;
+    QCOMPARE(after.vertices.size(), before.vertices.size());
+    double largest = 0.0;
+    for (std::size_t i = 0; i < after.vertices.size(); ++i)
+      largest = std::max(largest, (after.vertices[i] - before.vertices[i]).norm());
+    QVERIFY2(largest > 0.5 * (to - start).norm(), qPrintable(QString::number(largest)));
+
+    window.document().undo_stack()->undo();
+    QVERIFY(window.document().scenario().find_object("sheet")->surface == before);
+    QCOMPARE(window.document().files().at(studio::model_file_path("sheet")), model_before);
+    QVERIFY((panel->handle_position(index) - start).norm() < 1e-12);
+
+    // The model travels with the package.
+    const fs::path saved = dir() / "sheet.vscene";
+    QVERIFY(window.save_as(saved));
+    const studio::DocumentContent reopened = studio::read_document_content(saved);
+    QCOMPARE(reopened.files.at(studio::model_file_path("sheet")), model_before);
+    qInfo("control point test: %lld ms", static_cast<long long>(clock.elapsed()));
   }
 
   void placementRefusesWithoutRoomOrObject() {

@@ -138,4 +138,37 @@ void ReplaceMaterialCommand::undo() {
   set(old_);
 }
 
+SetActiveDeformationCommand::SetActiveDeformationCommand(ScenarioDocument& document,
+                                                         core::ActiveDeformation deformation)
+    : document_(document), new_(std::move(deformation)) {
+  if (document_.scenario().find_object(new_.target_object) == nullptr)
+    throw core::UsageError("the scenario has no object \"" + new_.target_object + "\"");
+  for (const auto& existing : document_.scenario().active_deformations) {
+    if (existing.id == new_.id) old_ = existing;
+  }
+  setText(QObject::tr("Set %1").arg(q(new_.id)));
+}
+
+void SetActiveDeformationCommand::set(const std::optional<core::ActiveDeformation>& deformation) {
+  auto& list = document_.edit_scenario().active_deformations;
+  const auto it = std::find_if(list.begin(), list.end(),
+                               [&](const auto& entry) { return entry.id == new_.id; });
+  if (!deformation) {
+    if (it != list.end()) list.erase(it);
+  } else if (it != list.end()) {
+    *it = *deformation;
+  } else {
+    list.push_back(*deformation);
+  }
+  document_.notify_changed(ChangeKind::Objects, q(new_.target_object));
+}
+
+void SetActiveDeformationCommand::redo() {
+  set(new_);
+}
+
+void SetActiveDeformationCommand::undo() {
+  set(old_);
+}
+
 }  // namespace viscera::studio

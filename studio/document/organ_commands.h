@@ -71,4 +71,20 @@ class ReplaceMaterialCommand : public QUndoCommand {
   core::Material old_, new_;
 };
 
+/// Adds an active deformation (pulse or motility), or replaces the one with the same id.
+class SetActiveDeformationCommand : public QUndoCommand {
+ public:
+  /// Throws core::UsageError when its target object is unknown.
+  SetActiveDeformationCommand(ScenarioDocument& document, core::ActiveDeformation deformation);
+  void redo() override;
+  void undo() override;
+
+ private:
+  void set(const std::optional<core::ActiveDeformation>& deformation);
+
+  ScenarioDocument& document_;
+  core::ActiveDeformation new_;
+  std::optional<core::ActiveDeformation> old_;
+};
+
 }  // namespace viscera::studio

@@ -4,6 +4,7 @@
 #include <QMainWindow>
 
 #include "studio/ui/control_points.h"
+#include "studio/ui/deformation_panel.h"
 #include "studio/ui/material_fit_panel.h"
 #include "studio/ui/pathology_panel.h"
 #include "studio/ui/scene_view.h"
@@ -19,12 +20,14 @@ OrganPanels::OrganPanels(ScenarioDocument& document, SceneView& view, QMainWindo
   pathologies_ = new PathologyPanel(document, &window);
   material_fit_ = new MaterialFitPanel(document, &window);
   control_points_ = new ControlPointPanel(document, view, &window);
+  deformation_ = new DeformationPanel(document, view, &window);
   // Tabbed with the material dock when there is one, so the 3D view keeps its width.
   QDockWidget* first = window.findChild<QDockWidget*>(QStringLiteral("material-dock"));
   QDockWidget* raised = first;
   const std::pair<OrganPanel*, QString> panels[] = {{texture_, tr("Texture")},
                                                     {vessels_, tr("Vessels")},
                                                     {pathologies_, tr("Pathologies")},
+                                                    {deformation_, tr("Motion")},
                                                     {material_fit_, tr("Stress–strain")},
                                                     {control_points_, tr("Control points")}};
   for (const auto& [panel, title] : panels) {
@@ -51,6 +54,7 @@ void OrganPanels::show_object(const QString& id) {
   pathologies_->show_object(id);
   material_fit_->show_object(id);
   control_points_->show_object(id);
+  deformation_->show_object(id);
 }
 
 }  // namespace viscera::studio

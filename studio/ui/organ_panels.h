@@ -1,9 +1,9 @@
 #pragma once
 /// The organ panels of the main window (issue 9 §5) and their docks: texture, vessels,
-/// pathologies, the stress–strain fit and model control points, tabbed on the right. They follow
-/// the selection; the pathology panel listens to clicks on surfaces in the 3D view. The main window
-/// constructs this once and forwards the selection; tests reach every panel's public actions
-/// through it.
+/// pathologies, active deformation, the stress–strain fit and model control points, tabbed on the
+/// right. They follow the selection; the pathology panel listens to clicks on surfaces in the 3D
+/// view. The main window constructs this once and forwards the selection; tests reach every panel's
+/// public actions through it.
 
 #include <QObject>
 
@@ -14,6 +14,7 @@ class QMainWindow;
 namespace viscera::studio {
 
 class ControlPointPanel;
+class DeformationPanel;
 class MaterialFitPanel;
 class PathologyPanel;
 class SceneView;
@@ -35,6 +36,7 @@ class OrganPanels : public QObject {
   PathologyPanel* pathologies() const { return pathologies_; }
   MaterialFitPanel* material_fit() const { return material_fit_; }
   ControlPointPanel* control_points() const { return control_points_; }
+  DeformationPanel* deformation() const { return deformation_; }
 
  signals:
   /// A panel's action failed (one sentence).
@@ -48,6 +50,7 @@ class OrganPanels : public QObject {
   PathologyPanel* pathologies_ = nullptr;
   MaterialFitPanel* material_fit_ = nullptr;
   ControlPointPanel* control_points_ = nullptr;
+  DeformationPanel* deformation_ = nullptr;
 };
 
 }  // namespace viscera::studio

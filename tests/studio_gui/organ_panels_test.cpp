@@ -6,9 +6,13 @@
 #include "studio/ui/organ_panels.h"
 
 #include <QVTKOpenGLNativeWidget.h>
+#include <vtkActor.h>
 #include <vtkHandleWidget.h>
+#include <vtkMapper.h>
+#include <vtkPolyData.h>
 #include <vtkRenderer.h>
 
+#include <QDockWidget>
 #include <QElapsedTimer>
 #include <QMouseEvent>
 #include <QSurfaceFormat>
@@ -22,8 +26,10 @@
 #include "core/materials/material_constants.h"
 #include "core/modelling/model_document.h"
 #include "core/package/scenario_package.h"
+#include "simulator/physics/organ_motility.h"
 #include "studio/document/model_objects.h"
 #include "studio/ui/control_points.h"
+#include "studio/ui/deformation_panel.h"
 #include "studio/ui/main_window.h"
 #include "studio/ui/material_fit_panel.h"
 #include "studio/ui/pathology_panel.h"
@@ -408,6 +414,73 @@ class OrganPanelsTest : public QObject {
     const studio::DocumentContent reopened = studio::read_document_content(saved);
     QCOMPARE(reopened.files.at(studio::model_file_path("sheet")), model_before);
     qInfo("control point test: %lld ms", static_cast<long long>(clock.elapsed()));
+  }
+
+  void motilityIsAppliedAndPreviewedBySimulatorMotion() {
+    QElapsedTimer clock;
+    clock.start();
+    studio::MainWindow window(options());
+    QStringList errors;
+    open_ball(window, errors);
+    studio::DeformationPanel* panel = window.organ_panels()->deformation();
+    core::MotilitySpec spec;
+    spec.amplitude_mean = 0.003;
+    spec.wave_speed = 0.02;
+    spec.wave_direction = core::Vec3(0.0, 0.0, 1.0);
+    spec.frequency = 1.0;
+    spec.frequency_disturbance = 0.1;
+    spec.contraction_interval_mean = 2.0;
+    panel->set_motility(spec);
+    QVERIFY(panel->motility() == spec);
+    QVERIFY(panel->apply_motility());
+    QVERIFY2(errors.isEmpty(), qPrintable(errors.join('\n')));
+    const auto& deformations = window.document().scenario().active_deformations;
+    QCOMPARE(deformations.size(), std::size_t{1});
+    QCOMPARE(deformations.front().id, std::string("ball-motility"));
+    QCOMPARE(deformations.front().target_object, std::string("ball"));
+    QVERIFY(std::get<core::MotilitySpec>(deformations.front().spec) == spec);
+    window.document().undo_stack()->undo();
+    QVERIFY(window.document().scenario().active_deformations.empty());
+    window.document().undo_stack()->redo();
+
+    // The preview moves the drawn surface exactly as sim::OrganMotility moves the knots.
+    auto* dock = window.findChild<QDockWidget*>("DeformationPanel-dock");
+    QVERIFY(dock != nullptr);
+    dock->raise();
+    QTest::qWait(20);
+    QVERIFY(panel->isVisible());
+    QVERIFY(panel->start_preview());
+    QVERIFY(panel->previewing());
+    const auto& rest = window.document().scenario().find_object("ball")->surface.vertices;
+    const sim::OrganMotility motion(spec, rest, studio::DeformationPanel::kPreviewSeed);
+    panel->preview_at(0.37);
+    auto* polydata = vtkPolyData::SafeDownCast(
+        window.scene_view()->object_actor("ball")->GetMapper()->GetInputDataObject(0, 0));
+    QCOMPARE(polydata->GetNumberOfPoints(), static_cast<vtkIdType>(rest.size()));
+    const auto expected = motion.positions(0.37);
+    double largest_error = 0.0, largest_motion = 0.0;
+    for (std::size_t i = 0; i < rest.size(); ++i) {
+      double p[3];
+      polydata->GetPoint(static_cast<vtkIdType>(i), p);
+      const core::Vec3 drawn(p[0], p[1], p[2]);
+      largest_error = std::max(largest_error, (drawn - expected[i]).norm());
+      largest_motion = std::max(largest_motion, (drawn - rest[i]).norm());
+    }
+    QVERIFY2(largest_error < 1e-6, qPrintable(QString::number(largest_error)));
+    QVERIFY2(largest_motion > 0.002, qPrintable(QString::number(largest_motion)));
+    // The timer animates it; closing the panel stops it and puts the surface back.
+    QTest::qWait(120);
+    QVERIFY(panel->previewing());
+    dock->close();
+    QVERIFY(!panel->previewing());
+    polydata = vtkPolyData::SafeDownCast(
+        window.scene_view()->object_actor("ball")->GetMapper()->GetInputDataObject(0, 0));
+    for (std::size_t i = 0; i < rest.size(); i += 7) {
+      double p[3];
+      polydata->GetPoint(static_cast<vtkIdType>(i), p);
+      QVERIFY((core::Vec3(p[0], p[1], p[2]) - rest[i]).norm() < 1e-6);
+    }
+    qInfo("motility test: %lld ms", static_cast<long long>(clock.elapsed()));
   }
 
   void placementRefusesWithoutRoomOrObject() {

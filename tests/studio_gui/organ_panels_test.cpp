@@ -443,6 +443,22 @@ class OrganPanelsTest : public QObject {
     QVERIFY(window.document().scenario().active_deformations.empty());
     window.document().undo_stack()->redo();
 
+    // A pulse on a tree grown in the ball; a pulse the seed's checks refuse is not added.
+    studio::VesselRequest vessels;
+    vessels.terminals = 12;
+    QVERIFY(window.organ_panels()->vessels()->generate_vessels(vessels));
+    const QString tree = QString::fromStdString(window.document().scenario().vessel_trees[0].id);
+    QVERIFY(panel->apply_pulse(tree, 72.0, 6.0, 0.04));
+    const auto& pulse = window.document().scenario().active_deformations.back();
+    QCOMPARE(pulse.id, tree.toStdString() + "-pulse");
+    QCOMPARE(std::get<core::PulseSpec>(pulse.spec).heart_rate, 72.0);
+    QCOMPARE(std::get<core::PulseSpec>(pulse.spec).vessel_tree, tree.toStdString());
+    QVERIFY(!panel->apply_pulse(tree, -5.0, 6.0, 0.04));
+    QVERIFY(!panel->apply_pulse("no-such-tree", 72.0, 6.0, 0.04));
+    QCOMPARE(errors.size(), 2);
+    errors.clear();
+    QCOMPARE(window.document().scenario().active_deformations.size(), std::size_t{2});
+
     // The preview moves the drawn surface exactly as sim::OrganMotility moves the knots.
     auto* dock = window.findChild<QDockWidget*>("DeformationPanel-dock");
     QVERIFY(dock != nullptr);

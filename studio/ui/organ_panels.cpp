@@ -2,6 +2,7 @@
 
 #include <QDockWidget>
 #include <QMainWindow>
+#include <QScrollArea>
 
 #include "studio/ui/control_points.h"
 #include "studio/ui/deformation_panel.h"
@@ -33,7 +34,12 @@ OrganPanels::OrganPanels(ScenarioDocument& document, SceneView& view, QMainWindo
   for (const auto& [panel, title] : panels) {
     auto* dock = new QDockWidget(title, &window);
     dock->setObjectName(QString(panel->metaObject()->className()).section("::", -1) + "-dock");
-    dock->setWidget(panel);
+    // In a scroll area, so the tallest or widest panel does not squeeze the 3D view.
+    auto* scroll = new QScrollArea(dock);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidget(panel);
+    dock->setWidget(scroll);
     window.addDockWidget(Qt::RightDockWidgetArea, dock);
     if (first != nullptr) {
       window.tabifyDockWidget(first, dock);

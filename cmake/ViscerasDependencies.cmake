@@ -25,7 +25,7 @@ find_package(VTK 9.1 REQUIRED COMPONENTS
   IOXML IOLegacy IOGeometry IOImage
   FiltersCore FiltersGeneral FiltersGeometry
   ImagingCore ImagingGeneral ImagingMorphological ImagingSources IOMINC
-  GUISupportQt RenderingCore RenderingOpenGL2 RenderingVolumeOpenGL2 InteractionStyle
+  GUISupportQt RenderingCore RenderingOpenGL2 RenderingVolumeOpenGL2 InteractionStyle InteractionWidgets
   ChartsCore ViewsContext2D RenderingContextOpenGL2 IOOggTheora RenderingFreeType RenderingContext2D)
 
 # DICOM through GDCM's VTK reader (BUILD_NOTES.md). GDCMConfig.cmake does not load the

@@ -11,14 +11,15 @@
 #include <QtTest>
 #include <filesystem>
 
-#include "core/materials/shipped_materials.h"
-#include "core/mesh/surface_embedding.h"
-#include "core/segmentation/threshold.h"
-#include "importers/meshing/label_body.h"
-#include "importers/volume/volume_reader.h"
-#include "studio/document/document_commands.h"
+#include "studio/document/organ_authoring.h"
+#include "studio/document/segmentation.h"
 #include "studio/ui/main_window.h"
+#include "studio/ui/organ_panels.h"
+#include "studio/ui/pathology_panel.h"
+#include "studio/ui/segmentation_panel.h"
+#include "studio/ui/texture_panel.h"
 #include "studio/ui/variants_gallery.h"
+#include "studio/ui/vessel_panel.h"
 #include "tests/studio_gui/image_checks.h"
 
 namespace fs = std::filesystem;
@@ -49,29 +50,37 @@ class AuthoringPathTest : public QObject {
     QVERIFY(window.open_image_volume(volume));
     QVERIFY2(errors.isEmpty(), qPrintable(errors.join("; ")));
 
-    // 2. The organ: threshold the bright sphere and mesh it (surface, tets, embedding), added as
-    //    one undoable command. (Library calls until the segmentation panel is on main.)
-    {
-      const core::LabelMap labels =
-          core::threshold(importers::read_volume(volume).volume, 0.0, 2000.0, 1);
-      importers::LabelBodyOptions meshing;
-      meshing.tets.cell_size = 0.008;
-      const importers::LabelBody body =
-          importers::mesh_label_body(labels, meshing, volume.string());
-      const core::Material tissue = core::shipped_material("myometrium");
-      core::SceneObject organ;
-      organ.id = "organ";
-      organ.name = "Organ";
-      organ.material = tissue.id;
-      organ.body_kind = core::BodyKind::TetMesh;
-      organ.surface = body.surface.mesh;
-      organ.body = body.body;
-      organ.body.node_mass = core::lumped_node_masses(organ.body, tissue.density);
-      organ.embedding = body.embedding;
-      window.document().undo_stack()->push(
-          new studio::AddObjectCommand(window.document(), organ, tissue));
-    }
-    QCOMPARE(window.document().scenario().objects.size(), std::size_t{1});
+    // 2. Segment the bright sphere and mesh it into an organ (segmentation panel).
+    studio::SegmentationPanel* segmentation = window.segmentation_panel();
+    QVERIFY(segmentation->segment_threshold(0.0, 2000.0, 1));
+    QVERIFY(segmentation->keep_largest());
+    studio::OrganMeshRequest mesh = segmentation->mesh_request();
+    mesh.label = 1;
+    mesh.target_tets = 2000;
+    mesh.triangles = 2000;
+    mesh.material = "myometrium";
+    const QString organ = segmentation->mesh_segmentation(mesh);
+    QVERIFY2(!organ.isEmpty(), qPrintable(errors.join("; ")));
+    window.select_object(organ);
+
+    // 3.–5. A polyp on top of the organ, a texture baked onto it and a vessel tree inside it.
+    studio::OrganPanels* panels = window.organ_panels();
+    const QString polyp = panels->pathologies()->place_pathology_on(
+        organ, core::Vec3(0.0, 0.0, 0.03), "polyp", 0.008);
+    QVERIFY2(!polyp.isEmpty(), qPrintable(errors.join("; ")));
+    window.select_object(organ);
+    studio::TextureRequest texture;
+    texture.width = texture.height = 128;
+    QVERIFY2(panels->texture()->apply_texture(texture), qPrintable(errors.join("; ")));
+    studio::VesselRequest vessels;
+    vessels.terminals = 20;
+    QVERIFY2(panels->vessels()->generate_vessels(vessels), qPrintable(errors.join("; ")));
+    const core::Scenario& authored = window.document().scenario();
+    QCOMPARE(authored.pathologies.size(), std::size_t{1});
+    QCOMPARE(authored.vessel_trees.size(), std::size_t{1});
+    QVERIFY(!authored.find_object(organ.toStdString())->texture.empty());
+    QVERIFY(!window.document().files().empty());
+    QVERIFY(window.save_as(dir() / "authored.vscene"));
 
     // 6. Variants of the scenario (no template): each validated.
     studio::VariantRequest request;
@@ -80,11 +89,20 @@ class AuthoringPathTest : public QObject {
     request.seed = 5;
     QVERIFY(window.generate_variants(request));
     QCOMPARE(window.variants_gallery()->count(), 2);
-    for (int i = 0; i < 2; ++i)
-      QVERIFY2(window.variants_gallery()->variant(i).valid,
-               window.variants_gallery()->variant(i).failure.c_str());
+    for (int i = 0; i < 2; ++i) {
+      const studio::Variant& v = window.variants_gallery()->variant(i);
+      QVERIFY2(v.valid, v.failure.c_str());
+      // Everything authored travels with the variant; the polyp's size was drawn again.
+      QCOMPARE(v.scenario->vessel_trees.size(), std::size_t{1});
+      QCOMPARE(v.scenario->pathologies.size(), std::size_t{1});
+      QVERIFY(v.scenario->pathologies[0].size != authored.pathologies[0].size);
+      QVERIFY(!v.scenario->find_object(organ.toStdString())->texture.empty());
+    }
+    // The saved document is clean, so a variant opens without a question, with its texture maps.
+    QVERIFY(window.open_variant(1));
+    QVERIFY(!window.document().files().empty());
 
-    // 7. A headless training session of the authored scenario returns its report.
+    // 7. A headless training session of the opened variant returns its report.
     QSignalSpy finished(&window, &studio::MainWindow::training_finished);
     QVERIFY(window.launch_training(0.1));
     QVERIFY(finished.wait(120'000));

@@ -18,8 +18,8 @@ namespace viscera::sim {
 /// Something that happened during a session, at a time in s.
 struct SessionEvent {
   double time = 0.0;
-  std::string kind;  ///< "perforation", "excessive-force", "time-limit", "abort", "task-completed",
-                     ///< "step-started"
+  std::string kind;  ///< "perforation", "tissue-tear", "excessive-force", "force-warning",
+                     ///< "time-limit", "abort", "task-completed", "step-started"
   std::string message;
 };
 
@@ -93,7 +93,7 @@ struct SessionReport {
   std::vector<std::pair<long long, InstrumentState>> inputs;
   std::vector<SessionEvent> events;
   std::string end_reason =
-      "duration";  ///< "duration", "time-limit", "completed", "perforation", "abort"
+      "duration";  ///< "duration", "time-limit", "completed", "perforation", "tissue-tear", "abort"
 };
 
 /// Score of a period in [0, 100]: the mean of task completion (completed over available),

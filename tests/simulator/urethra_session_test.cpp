@@ -6,12 +6,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 
 #include "core/error.h"
 #include "core/scenario/procedure.h"
 #include "simulator/session/headless_session.h"
 #include "simulator/session/instrument_input.h"
+#include "simulator/session/urethra_tissue.h"
 #include "tests/support/test_paths.h"
 
 namespace viscera::sim {
@@ -128,6 +130,40 @@ TEST(UrethraSession, an_unknown_instrument_body_is_an_input_error) {
   const core::Scenario scenario = urethra_scenario();
   const RecordedInput still({{0, InstrumentState{}}});
   EXPECT_THROW(run(scenario, still, 0.1, "bladder"), core::InputError);
+}
+
+TEST(UrethraTissue, maps_the_pose_to_the_endoscope_state_of_the_force_model) {
+  const core::UrethraLatticeSpec spec;
+  const double z = 0.08, pitch = std::atan(2.0 * spec.curvature * z);
+  InstrumentState at;
+  at.tip = core::Vec3(0.0, spec.curvature * z * z, z);
+  at.axis = core::Vec3(0.0, std::sin(pitch), std::cos(pitch));
+  at.up = core::Vec3(0.0, std::cos(pitch), -std::sin(pitch));
+  UrethraTissue tissue(spec, at);
+  EXPECT_NEAR(tissue.endoscope().pitch, pitch, 1e-12);
+  EXPECT_NEAR(tissue.endoscope().yaw, 0.0, 1e-12);
+  EXPECT_TRUE(tissue.in_contact());  // the 4 mm scope in the 1 mm lumen stretches the wall
+  const std::string rest = tissue.state_hash();
+
+  // 0.5 mm along the axis and a 0.01 rad roll about it in 1 ms: 0.5 m/s and 10 rad/s.
+  InstrumentState next = at;
+  next.tip += 0.0005 * at.axis;
+  next.up = std::cos(0.01) * at.up + std::sin(0.01) * at.axis.cross(at.up);
+  tissue.move(next, 0.001);
+  EXPECT_NEAR(tissue.endoscope().velocity.dot(at.axis), 0.5, 1e-9);
+  EXPECT_NEAR(tissue.endoscope().spin_rate, 10.0, 1e-6);
+  // Friction and the sloping wall resist the insertion; the roll meets a torque about the axis.
+  EXPECT_LT(tissue.force().dot(at.axis), 0.0);
+  EXPECT_TRUE(tissue.force().isApprox(tissue.feedback().force));
+  EXPECT_LT(tissue.feedback().torque_z, 0.0);
+  EXPECT_NE(tissue.state_hash(), rest);
+
+  // Turned out of the plane of symmetry: yaw from the axis' x component.
+  next.axis =
+      core::Vec3(std::sin(0.1) * std::cos(pitch), std::sin(pitch), std::cos(0.1) * std::cos(pitch));
+  tissue.move(next, 0.001);
+  EXPECT_NEAR(tissue.endoscope().yaw, 0.1, 1e-9);
+  EXPECT_LT(tissue.feedback().torque_y, 0.0);
 }
 
 }  // namespace

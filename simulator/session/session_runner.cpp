@@ -99,6 +99,7 @@ SessionRunner::SessionRunner(const core::Scenario& scenario, const HeadlessRunOp
     if (options.record_inputs) report_.inputs.emplace_back(0, state_);
     report_.metrics.start_at(state_.tip);
     report_.has_instrument = true;
+    if (scenario.fluid.enabled) fluid_.emplace(scenario.fluid);
     if (tissue_->body() != nullptr) surface_object = tissue_->name();
   }
 
@@ -261,6 +262,7 @@ void SessionRunner::step(const InstrumentState& input) {
     const bool contact = tissue_->in_contact();
     const double dt = world_.time_step();
     report_.metrics.record(state_.tip, force, contact, dt, state_.inflow);
+    balance_fluid(dt);
     if (current_ >= 0 && current_ < static_cast<int>(report_.procedure_steps.size())) {
       report_.procedure_steps[static_cast<std::size_t>(current_)].metrics.record(
           state_.tip, force, contact, dt, state_.inflow);
@@ -370,6 +372,22 @@ void SessionRunner::end(const std::string& reason, const std::string& message) {
     report_.events.push_back({world_.time(), reason, message});
 }
 
+void SessionRunner::balance_fluid(double dt) {
+  if (!fluid_) return;
+  const double used_before = fluid_->totals().used;
+  fluid_->step(state_.inflow, state_.outflow, dt);
+  const double used = fluid_->totals().used - used_before;
+  report_.metrics.record_fluid(used);
+  if (current_ >= 0 && current_ < static_cast<int>(report_.procedure_steps.size()))
+    report_.procedure_steps[static_cast<std::size_t>(current_)].metrics.record_fluid(used);
+  if (fluid_->overloaded() && !finished_) {
+    end("fluid-overload", "the fluid deficit reached " +
+                              std::to_string(fluid_->totals().deficit() * 1e6) +
+                              " ml, the overload limit of " +
+                              std::to_string(fluid_->fluid().overload_volume * 1e6) + " ml");
+  }
+}
+
 SessionReport SessionRunner::finish() {
   if (current_ >= 0 && current_ < static_cast<int>(report_.procedure_steps.size())) {
     auto& metrics = report_.procedure_steps[static_cast<std::size_t>(current_)].metrics;
@@ -390,6 +408,10 @@ SessionReport SessionRunner::finish() {
   report_.steps = world_.steps();
   report_.simulated_time = world_.time();
   report_.final_state_hash = state_hash();
+  if (fluid_) {
+    report_.fluid = fluid_->totals();
+    report_.final_cavity_pressure = fluid_->pressure();
+  }
   report_.max_penetration = world_.max_penetration();
   report_.contact_stiffness =
       world_.bodies().size() > 1 ? scenario_.session.contact_stiffness : 0.0;

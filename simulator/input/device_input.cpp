@@ -33,7 +33,7 @@ InstrumentState DeviceInput::next(double) {
 
 void DeviceInput::after_step(const SessionRunner& runner) {
   const ClampedFeedback clamped =
-      clamp_to_device(runner.world().instrument_force(), core::Vec3::Zero(), state_.axis, limits_);
+      clamp_to_device(runner.instrument_force(), core::Vec3::Zero(), state_.axis, limits_);
   DeviceFeedback feedback;
   feedback.sequence = ++sequence_;
   feedback.time_ns = static_cast<std::uint64_t>(runner.world().time() * 1e9);

@@ -20,8 +20,8 @@ namespace viscera::sim {
 /// Something that happened during a session, at a time in s.
 struct SessionEvent {
   double time = 0.0;
-  std::string kind;  ///< "perforation", "excessive-force", "time-limit", "abort", "task-completed",
-                     ///< "step-started"
+  std::string kind;  ///< "perforation", "tissue-tear", "excessive-force", "force-warning",
+                     ///< "time-limit", "abort", "task-completed", "step-started"
   std::string message;
 };
 
@@ -98,7 +98,7 @@ struct SessionReport {
   std::optional<FluidTotals> fluid;
   double final_cavity_pressure = 0.0;   ///< Pa
   std::string end_reason = "duration";  ///< "duration", "time-limit", "completed", "perforation",
-                                        ///< "fluid-overload", "abort"
+                                        ///< "fluid-overload", "tissue-tear", "abort"
 };
 
 /// Score of a period in [0, 100]: the mean of task completion (completed over available),

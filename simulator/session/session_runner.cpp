@@ -9,6 +9,9 @@
 #include "core/mesh/surface_embedding.h"
 #include "core/scenario/procedure.h"
 #include "core/scenario/scenario_json.h"
+#include "core/sha256.h"
+#include "simulator/session/urethra_tissue.h"
+#include "simulator/session/world_tissue.h"
 
 namespace viscera::sim {
 
@@ -35,6 +38,27 @@ std::map<std::string, TaskTarget> landmarks_of(const core::Scenario& scenario) {
     out[mark.at("id").get<std::string>()] = target;
   }
   return out;
+}
+
+/// The tissue under the instrument: the urethra lattice named by `instrument_body` (or the first
+/// one when the scenario has no World body), else the named (or first) World body.
+std::unique_ptr<InstrumentTissue> make_tissue(const core::Scenario& scenario, World& world,
+                                              const HeadlessRunOptions& options,
+                                              const InstrumentState& start,
+                                              double perforation_depth) {
+  for (const auto& lattice : scenario.urethra_lattices) {
+    if (lattice.object == options.instrument_body ||
+        (options.instrument_body.empty() && world.bodies().empty()))
+      return std::make_unique<UrethraTissue>(lattice, start);
+  }
+  for (std::size_t b = 0; b < world.bodies().size(); ++b) {
+    if (options.instrument_body.empty() || world.bodies()[b].name() == options.instrument_body) {
+      return std::make_unique<WorldTissue>(world, static_cast<int>(b), options.instrument_stiffness,
+                                           start.tip, perforation_depth);
+    }
+  }
+  throw core::InputError("the scenario has no simulated object \"" + options.instrument_body +
+                         "\" for the instrument");
 }
 
 bool needs_target(const std::string& kind) {
@@ -70,26 +94,13 @@ SessionRunner::SessionRunner(const core::Scenario& scenario, const HeadlessRunOp
 
   std::string surface_object;
   if (options.instrument != nullptr) {
-    for (std::size_t b = 0; b < world_.bodies().size(); ++b) {
-      if (options.instrument_body.empty() || world_.bodies()[b].name() == options.instrument_body) {
-        instrument_body_ = static_cast<int>(b);
-        break;
-      }
-    }
-    if (instrument_body_ < 0) {
-      throw core::InputError("the scenario has no simulated object \"" + options.instrument_body +
-                             "\" for the instrument");
-    }
     state_ = options.instrument->state(0, 0.0);
-    world_.attach_instrument(instrument_body_, options.instrument_stiffness, state_.tip);
+    tissue_ = make_tissue(scenario, world_, options, state_, perforation_depth_);
     if (options.record_inputs) report_.inputs.emplace_back(0, state_);
     report_.metrics.start_at(state_.tip);
     report_.has_instrument = true;
     if (scenario.fluid.enabled) fluid_.emplace(scenario.fluid);
-    const DeformableBody& body = world_.bodies()[static_cast<std::size_t>(instrument_body_)];
-    surface_object = body.name();
-    wall_ = std::make_unique<SurfaceBvh>(body.surface_faces(), body.rest_positions());
-    thickness_.assign(body.surface_faces().size(), -1.0);
+    if (tissue_->body() != nullptr) surface_object = tissue_->name();
   }
 
   // The camera observes the surface the instrument works in, restricted to the region the
@@ -110,9 +121,8 @@ SessionRunner::SessionRunner(const core::Scenario& scenario, const HeadlessRunOp
     if (object != nullptr && !object->surface.triangles.empty()) {
       surface = object->surface;
     } else {
-      const DeformableBody& body = world_.bodies()[static_cast<std::size_t>(instrument_body_)];
-      surface.vertices = body.positions();
-      surface.triangles = body.surface_faces();
+      surface.vertices = tissue_->body()->positions();
+      surface.triangles = tissue_->body()->surface_faces();
     }
     try {
       coverage_ = std::make_unique<SurfaceCoverage>(surface, attribute, value);
@@ -231,35 +241,9 @@ void SessionRunner::advance_steps() {
   }
 }
 
-double SessionRunner::wall_thickness(int triangle) {
-  if (wall_ == nullptr || triangle < 0) return std::numeric_limits<double>::infinity();
-  double& t = thickness_[static_cast<std::size_t>(triangle)];
-  if (t < 0.0) {
-    // Rest thickness under the triangle: from its centre straight into the tissue to the far side.
-    const auto& tri = wall_->triangles()[static_cast<std::size_t>(triangle)];
-    const auto& p = wall_->positions();
-    const core::Vec3 centre = (p[tri[0]] + p[tri[1]] + p[tri[2]]) / 3.0;
-    const core::Vec3 inward = -(p[tri[1]] - p[tri[0]]).cross(p[tri[2]] - p[tri[0]]).normalized();
-    const RayHit hit = wall_->cast(centre + 1e-7 * inward, inward, 1.0);
-    t = hit.triangle >= 0 ? hit.distance : std::numeric_limits<double>::infinity();
-  }
-  return t;
-}
-
-double SessionRunner::penetration() const {
-  // How deep the tool is in the wall: the proxy–tip distance (the spring's stretch), or how
-  // far the tip lies below the rest position of the touched face, whichever is larger — a soft
-  // wall gives way, but a tool through its rest thickness has gone through it.
-  const double spring = world_.instrument_force().norm() / options_.instrument_stiffness;
-  const ProxyContact contact = world_.instrument_contact();
-  if (wall_ == nullptr || contact.triangle < 0) return spring;
-  const auto& tri = wall_->triangles()[static_cast<std::size_t>(contact.triangle)];
-  const auto& p = wall_->positions();
-  const core::Vec3 rest_point = contact.barycentric[0] * p[tri[0]] +
-                                contact.barycentric[1] * p[tri[1]] +
-                                contact.barycentric[2] * p[tri[2]];
-  const core::Vec3 outward = (p[tri[1]] - p[tri[0]]).cross(p[tri[2]] - p[tri[0]]).normalized();
-  return std::max(spring, (rest_point - state_.tip).dot(outward));
+std::string SessionRunner::state_hash() const {
+  const std::string own = tissue_ ? tissue_->state_hash() : std::string();
+  return own.empty() ? world_.state_hash() : core::sha256_hex(world_.state_hash() + own);
 }
 
 void SessionRunner::step(const InstrumentState& input) {
@@ -269,13 +253,13 @@ void SessionRunner::step(const InstrumentState& input) {
     if (options_.record_inputs && !(input == state_))
       report_.inputs.emplace_back(world_.steps() + 1, input);
     state_ = input;
-    world_.set_instrument_tip(state_.tip);
+    tissue_->move(state_, world_.time_step());
   }
   world_.step();
   const double now = world_.time();
   if (has_instrument) {
-    const core::Vec3 force = world_.instrument_force();
-    const bool contact = world_.instrument_in_contact();
+    const core::Vec3 force = tissue_->force();
+    const bool contact = tissue_->in_contact();
     const double dt = world_.time_step();
     report_.metrics.record(state_.tip, force, contact, dt, state_.inflow);
     balance_fluid(dt);
@@ -283,17 +267,10 @@ void SessionRunner::step(const InstrumentState& input) {
       report_.procedure_steps[static_cast<std::size_t>(current_)].metrics.record(
           state_.tip, force, contact, dt, state_.inflow);
     }
-    if (contact) {
-      const double depth = penetration();
-      const double limit = perforation_depth_ > 0.0
-                               ? perforation_depth_
-                               : wall_thickness(world_.instrument_contact().triangle);
-      if (depth > limit) {
-        end("perforation", "the tool went " + std::to_string(depth * 1000.0) +
-                               " mm into the wall, past its " + std::to_string(limit * 1000.0) +
-                               " mm");
-      }
-    }
+    for (const TissueEvent& warning : tissue_->warnings())
+      report_.events.push_back({now, warning.kind, warning.message});
+    if (const auto complication = tissue_->complication())
+      end(complication->kind, complication->message);
     const bool excessive = force_warning_ > 0.0 && force.norm() > force_warning_;
     if (excessive && !over_force_) {
       report_.events.push_back({now, "excessive-force",
@@ -304,7 +281,7 @@ void SessionRunner::step(const InstrumentState& input) {
   }
   const long long s = world_.steps();
   if (options_.checkpoint_interval > 0 && s % options_.checkpoint_interval == 0) {
-    report_.checkpoints.emplace_back(s, world_.state_hash());
+    report_.checkpoints.emplace_back(s, state_hash());
   }
   if (coverage_ != nullptr && has_instrument && s % look_every_ == 0) look();
   if (s % sample_every_ == 0 || s >= total_steps_ || finished_) sample();
@@ -318,7 +295,7 @@ void SessionRunner::step(const InstrumentState& input) {
 }
 
 void SessionRunner::look() {
-  const DeformableBody& body = world_.bodies()[static_cast<std::size_t>(instrument_body_)];
+  const DeformableBody& body = *tissue_->body();
   const core::SceneObject* object = scenario_.find_object(body.name());
   if (body.max_displacement() > 1e-6) {
     if (object != nullptr && !object->surface.triangles.empty()) {
@@ -334,7 +311,7 @@ void SessionRunner::look() {
   last_view_distance_ = sample.centre_distance;
   const bool good = sample.centre_distance >= instrument_.min_view_distance &&
                     sample.centre_distance <= instrument_.max_view_distance &&
-                    !world_.instrument_in_contact();
+                    !tissue_->in_contact();
   const double dt = options_.camera_interval;
   report_.metrics.record_view(good, dt);
   if (current_ >= 0 && current_ < static_cast<int>(report_.procedure_steps.size())) {
@@ -356,8 +333,8 @@ void SessionRunner::sample() {
     PathSample p;
     p.time = world_.time();
     p.tip = state_.tip;
-    p.force = world_.instrument_force().norm();
-    p.in_contact = world_.instrument_in_contact();
+    p.force = tissue_->force().norm();
+    p.in_contact = tissue_->in_contact();
     p.step = current_ < static_cast<int>(report_.procedure_steps.size()) ? current_ : -1;
     if (coverage_ != nullptr) p.wall_distance = coverage_->bvh().nearest(state_.tip).distance;
     report_.path.push_back(p);
@@ -366,10 +343,9 @@ void SessionRunner::sample() {
   context.time = world_.time();
   context.state = state_;
   context.view = view_direction(state_, instrument_.optics_angle);
-  context.in_contact = world_.instrument_in_contact();
-  if (context.in_contact)
-    context.contact_object = world_.bodies()[static_cast<std::size_t>(instrument_body_)].name();
-  context.force = world_.instrument_force().norm();
+  context.in_contact = tissue_ != nullptr && tissue_->in_contact();
+  if (context.in_contact) context.contact_object = tissue_->name();
+  context.force = tissue_ != nullptr ? tissue_->force().norm() : 0.0;
   context.kinetic_energy = e.kinetic;
   context.camera = coverage_.get();
   context.fraction_seen = coverage_ ? coverage_->fraction_seen() : 0.0;
@@ -431,7 +407,7 @@ SessionReport SessionRunner::finish() {
   report_.score = period_score(report_.metrics, force_warning_);
   report_.steps = world_.steps();
   report_.simulated_time = world_.time();
-  report_.final_state_hash = world_.state_hash();
+  report_.final_state_hash = state_hash();
   if (fluid_) {
     report_.fluid = fluid_->totals();
     report_.final_cavity_pressure = fluid_->pressure();

@@ -1,7 +1,7 @@
 #pragma once
 /// One training session stepped at the fixed physics step (DESIGN.md §5, seed 000 §11): the
 /// world with its instrument, the procedure's steps and tasks, the metrics of every step, the
-/// complications that end it (perforation, time limit, abort) and the record that replays it.
+/// complications that end it (perforation, tear, time limit, abort) and the record that replays it.
 /// The headless run and the interactive view both drive a SessionRunner, one step at a time.
 
 #include <memory>
@@ -13,6 +13,7 @@
 #include "simulator/camera/surface_coverage.h"
 #include "simulator/fluid/distension_balance.h"
 #include "simulator/session/instrument_input.h"
+#include "simulator/session/instrument_tissue.h"
 #include "simulator/session/session_report.h"
 #include "simulator/world/world.h"
 
@@ -24,9 +25,10 @@ struct HeadlessRunOptions {
   double sample_interval = 0.02;  ///< s between path, energy and task samples
   double camera_interval = 0.1;   ///< s between looks through the optics for the surface seen
   std::string package;            ///< package path, recorded in the report
-  /// When set, an instrument whose tip follows this input presses on the body of object
-  /// `instrument_body` (empty: the first simulated body) with a proxy spring of
-  /// `instrument_stiffness` N/m.
+  /// When set, an instrument whose tip follows this input acts on object `instrument_body`
+  /// (empty: the first simulated body, else the first urethra lattice): a World body it presses
+  /// on with a proxy spring of `instrument_stiffness` N/m, or a urethra lattice whose seed-002
+  /// force model it meets (see InstrumentTissue).
   const InstrumentInput* instrument = nullptr;
   std::string instrument_body;
   double instrument_stiffness = 200.0;
@@ -45,8 +47,9 @@ struct HeadlessRunOptions {
 /// A session in progress.
 class SessionRunner {
  public:
-  /// Builds the world and the task monitors; throws core::InputError for an unknown
-  /// instrument body and core::UsageError for a non-positive duration.
+  /// Builds the world, the tissue under the instrument and the task monitors; throws
+  /// core::InputError for an unknown instrument body and core::UsageError for a non-positive
+  /// duration.
   SessionRunner(const core::Scenario& scenario, const HeadlessRunOptions& options);
   ~SessionRunner();
 
@@ -63,6 +66,10 @@ class SessionRunner {
   const World& world() const { return world_; }
   const SessionReport& report() const { return report_; }
   const InstrumentState& instrument_state() const { return state_; }
+  /// Force of the tissue on the instrument, N (zero without instrument).
+  core::Vec3 instrument_force() const { return tissue_ ? tissue_->force() : core::Vec3::Zero(); }
+  /// The tissue the instrument acts on, or null without instrument.
+  const InstrumentTissue* tissue() const { return tissue_.get(); }
   const core::InstrumentSpec& instrument() const { return instrument_; }
   /// Index of the procedure step under way, −1 without steps.
   int current_step() const { return current_; }
@@ -77,8 +84,7 @@ class SessionRunner {
   void advance_steps();
   void open_step(int index);
   void close_step(int index);
-  double wall_thickness(int triangle);
-  double penetration() const;
+  std::string state_hash() const;
 
   const core::Scenario& scenario_;
   HeadlessRunOptions options_;
@@ -86,7 +92,7 @@ class SessionRunner {
   core::InstrumentSpec instrument_;
   SessionReport report_;
   InstrumentState state_;
-  int instrument_body_ = -1;
+  std::unique_ptr<InstrumentTissue> tissue_;
   std::unique_ptr<SurfaceCoverage> coverage_;
   std::vector<core::Vec3> coverage_rest_;  ///< visual vertices when the surface has no embedding
   std::vector<Monitor> monitors_;
@@ -95,8 +101,6 @@ class SessionRunner {
   long long total_steps_ = 0, sample_every_ = 1, look_every_ = 1;
   bool finished_ = false, over_force_ = false;
   double last_view_distance_ = -1.0;
-  std::unique_ptr<SurfaceBvh> wall_;  ///< the instrument body's surface at rest, for wall thickness
-  std::vector<double> thickness_;     ///< per body surface triangle, −1 until measured
   double started_wall_clock_ = 0.0;
   /// The cavity's distension fluid, when the scenario enables it and an instrument drives the
   /// valves.

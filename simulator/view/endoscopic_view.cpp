@@ -107,7 +107,7 @@ void EndoscopicView::update(const sim::SessionRunner& runner) {
   OverlayState state;
   state.elapsed = runner.world().time();
   state.time_limit = runner.time_limit();
-  state.force = runner.world().instrument_force();
+  state.force = runner.instrument_force();
   state.force_warning = report.force_warning;
   state.tip = runner.instrument_state().tip;
   state.optics_angle = angle;

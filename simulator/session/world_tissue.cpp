@@ -1,0 +1,76 @@
+#include "simulator/session/world_tissue.h"
+
+#include <limits>
+
+namespace viscera::sim {
+
+WorldTissue::WorldTissue(World& world, int body, double stiffness, const core::Vec3& tip,
+                         double perforation_depth)
+    : world_(world),
+      body_(body),
+      stiffness_(stiffness),
+      perforation_depth_(perforation_depth),
+      tip_(tip) {
+  world_.attach_instrument(body_, stiffness_, tip_);
+  const DeformableBody& b = world_.bodies()[static_cast<std::size_t>(body_)];
+  wall_ = std::make_unique<SurfaceBvh>(b.surface_faces(), b.rest_positions());
+  thickness_.assign(b.surface_faces().size(), -1.0);
+}
+
+const std::string& WorldTissue::name() const {
+  return body()->name();
+}
+
+const DeformableBody* WorldTissue::body() const {
+  return &world_.bodies()[static_cast<std::size_t>(body_)];
+}
+
+void WorldTissue::move(const InstrumentState& state, double /*dt*/) {
+  tip_ = state.tip;
+  world_.set_instrument_tip(tip_);
+}
+
+std::optional<TissueEvent> WorldTissue::complication() {
+  if (!world_.instrument_in_contact()) return std::nullopt;
+  const double depth = penetration();
+  const double limit = perforation_depth_ > 0.0
+                           ? perforation_depth_
+                           : wall_thickness(world_.instrument_contact().triangle);
+  if (depth <= limit) return std::nullopt;
+  return TissueEvent{"perforation", "the tool went " + std::to_string(depth * 1000.0) +
+                                        " mm into the wall, past its " +
+                                        std::to_string(limit * 1000.0) + " mm"};
+}
+
+double WorldTissue::wall_thickness(int triangle) {
+  if (wall_ == nullptr || triangle < 0) return std::numeric_limits<double>::infinity();
+  double& t = thickness_[static_cast<std::size_t>(triangle)];
+  if (t < 0.0) {
+    // Rest thickness under the triangle: from its centre straight into the tissue to the far side.
+    const auto& tri = wall_->triangles()[static_cast<std::size_t>(triangle)];
+    const auto& p = wall_->positions();
+    const core::Vec3 centre = (p[tri[0]] + p[tri[1]] + p[tri[2]]) / 3.0;
+    const core::Vec3 inward = -(p[tri[1]] - p[tri[0]]).cross(p[tri[2]] - p[tri[0]]).normalized();
+    const RayHit hit = wall_->cast(centre + 1e-7 * inward, inward, 1.0);
+    t = hit.triangle >= 0 ? hit.distance : std::numeric_limits<double>::infinity();
+  }
+  return t;
+}
+
+double WorldTissue::penetration() const {
+  // How deep the tool is in the wall: the proxy–tip distance (the spring's stretch), or how
+  // far the tip lies below the rest position of the touched face, whichever is larger — a soft
+  // wall gives way, but a tool through its rest thickness has gone through it.
+  const double spring = world_.instrument_force().norm() / stiffness_;
+  const ProxyContact contact = world_.instrument_contact();
+  if (wall_ == nullptr || contact.triangle < 0) return spring;
+  const auto& tri = wall_->triangles()[static_cast<std::size_t>(contact.triangle)];
+  const auto& p = wall_->positions();
+  const core::Vec3 rest_point = contact.barycentric[0] * p[tri[0]] +
+                                contact.barycentric[1] * p[tri[1]] +
+                                contact.barycentric[2] * p[tri[2]];
+  const core::Vec3 outward = (p[tri[1]] - p[tri[0]]).cross(p[tri[2]] - p[tri[0]]).normalized();
+  return std::max(spring, (rest_point - tip_).dot(outward));
+}
+
+}  // namespace viscera::sim

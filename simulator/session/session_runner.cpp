@@ -85,6 +85,7 @@ SessionRunner::SessionRunner(const core::Scenario& scenario, const HeadlessRunOp
     if (options.record_inputs) report_.inputs.emplace_back(0, state_);
     report_.metrics.start_at(state_.tip);
     report_.has_instrument = true;
+    if (scenario.fluid.enabled) fluid_.emplace(scenario.fluid);
     const DeformableBody& body = world_.bodies()[static_cast<std::size_t>(instrument_body_)];
     surface_object = body.name();
     wall_ = std::make_unique<SurfaceBvh>(body.surface_faces(), body.rest_positions());
@@ -93,11 +94,10 @@ SessionRunner::SessionRunner(const core::Scenario& scenario, const HeadlessRunOp
 
   // The camera observes the surface the instrument works in, restricted to the region the
   // first inspect-surface task on it names.
-  std::string region_problem;
+  std::string region_problem, attribute;
+  double value = 1.0;
   if (!surface_object.empty()) {
     const core::SceneObject* object = scenario.find_object(surface_object);
-    std::string attribute;
-    double value = 1.0;
     for (const core::TaskSpec* task : core::all_tasks(scenario.session)) {
       if (task->kind == "inspect-surface" &&
           task->parameters.value("object", surface_object) == surface_object) {
@@ -152,6 +152,12 @@ SessionRunner::SessionRunner(const core::Scenario& scenario, const HeadlessRunOp
             "only the surface the instrument works in (\"" + surface_object + "\") is observed";
       else if (!region_problem.empty())
         missing = region_problem;
+      else if (task.parameters.value("region_attribute", std::string()) != attribute ||
+               task.parameters.value("region_value", 1.0) != value)
+        missing =
+            "only one region of the surface is observed, that of the first inspect-surface "
+            "task (\"" +
+            attribute + "\" = " + std::to_string(value) + ")";
     }
     if ((task.kind == "touch" || task.kind == "centre-target" || task.kind == "reach" ||
          task.kind == "withdraw") &&
@@ -272,6 +278,7 @@ void SessionRunner::step(const InstrumentState& input) {
     const bool contact = world_.instrument_in_contact();
     const double dt = world_.time_step();
     report_.metrics.record(state_.tip, force, contact, dt, state_.inflow);
+    balance_fluid(dt);
     if (current_ >= 0 && current_ < static_cast<int>(report_.procedure_steps.size())) {
       report_.procedure_steps[static_cast<std::size_t>(current_)].metrics.record(
           state_.tip, force, contact, dt, state_.inflow);
@@ -389,6 +396,22 @@ void SessionRunner::end(const std::string& reason, const std::string& message) {
     report_.events.push_back({world_.time(), reason, message});
 }
 
+void SessionRunner::balance_fluid(double dt) {
+  if (!fluid_) return;
+  const double used_before = fluid_->totals().used;
+  fluid_->step(state_.inflow, state_.outflow, dt);
+  const double used = fluid_->totals().used - used_before;
+  report_.metrics.record_fluid(used);
+  if (current_ >= 0 && current_ < static_cast<int>(report_.procedure_steps.size()))
+    report_.procedure_steps[static_cast<std::size_t>(current_)].metrics.record_fluid(used);
+  if (fluid_->overloaded() && !finished_) {
+    end("fluid-overload", "the fluid deficit reached " +
+                              std::to_string(fluid_->totals().deficit() * 1e6) +
+                              " ml, the overload limit of " +
+                              std::to_string(fluid_->fluid().overload_volume * 1e6) + " ml");
+  }
+}
+
 SessionReport SessionRunner::finish() {
   if (current_ >= 0 && current_ < static_cast<int>(report_.procedure_steps.size())) {
     auto& metrics = report_.procedure_steps[static_cast<std::size_t>(current_)].metrics;
@@ -409,6 +432,10 @@ SessionReport SessionRunner::finish() {
   report_.steps = world_.steps();
   report_.simulated_time = world_.time();
   report_.final_state_hash = world_.state_hash();
+  if (fluid_) {
+    report_.fluid = fluid_->totals();
+    report_.final_cavity_pressure = fluid_->pressure();
+  }
   report_.max_penetration = world_.max_penetration();
   report_.contact_stiffness =
       world_.bodies().size() > 1 ? scenario_.session.contact_stiffness : 0.0;

@@ -15,6 +15,7 @@
 #include "studio/document/document_commands.h"
 #include "studio/ui/background_task.h"
 #include "studio/ui/material_panel.h"
+#include "studio/ui/organ_panels.h"
 #include "studio/ui/scene_tree.h"
 #include "studio/ui/scene_view.h"
 #include "studio/ui/segmentation_panel.h"
@@ -110,6 +111,9 @@ void MainWindow::build_docks() {
   connect(slices_, &SliceViews::point_clicked, segmentation_,
           [this](int, const core::Vec3& point) { segmentation_->set_seed(point); });
   build_volume_views();
+  organ_panels_ = new OrganPanels(document_, *view_, *this);
+  connect(organ_panels_, &OrganPanels::failed, this, &MainWindow::show_error);
+  connect(organ_panels_, &OrganPanels::select_requested, this, &MainWindow::select_object);
 
   resizeDocks({tree_dock, material_dock}, {240, 320}, Qt::Horizontal);
 }
@@ -130,6 +134,7 @@ void MainWindow::select_object(const QString& id) {
   view_->select_object(id);
   tree_->select_object(view_->selected_object());
   materials_->show_object(view_->selected_object());
+  organ_panels_->show_object(view_->selected_object());
 }
 
 void MainWindow::show_error(const QString& message) {

@@ -25,6 +25,7 @@ class QPlainTextEdit;
 namespace viscera::studio {
 
 class MaterialPanel;
+class OrganPanels;
 class SceneTree;
 class SegmentationPanel;
 class LabelOverlay;
@@ -54,6 +55,8 @@ class MainWindow : public QMainWindow {
   SegmentationPanel* segmentation_panel() const { return segmentation_; }
   LabelOverlay* label_overlay() const { return overlay_; }
   VolumeRendering& volume_rendering() { return *volume_rendering_; }
+  /// Texture, vessel and pathology panels (organ_panels.h).
+  OrganPanels* organ_panels() const { return organ_panels_; }
   Autosave& autosave() { return *autosave_; }
   TrainingLauncher& launcher() { return launcher_; }
 
@@ -130,6 +133,7 @@ class MainWindow : public QMainWindow {
   MaterialPanel* materials_ = nullptr;
   QPlainTextEdit* report_ = nullptr;
   SliceViews* slices_ = nullptr;
+  OrganPanels* organ_panels_ = nullptr;
   class QDockWidget* slice_dock_ = nullptr;
   SegmentationPanel* segmentation_ = nullptr;
   LabelOverlay* overlay_ = nullptr;

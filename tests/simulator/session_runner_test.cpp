@@ -78,6 +78,45 @@ TEST(SessionRunner, expert_and_novice_separate_on_every_metric_in_the_expected_d
     EXPECT_LE(p.wall_distance, viscera::testing::kCavityRadius + 1e-3);
 }
 
+TEST(SessionRunner, distension_fluid_is_balanced_and_an_overload_ends_the_session) {
+  core::Scenario scenario = viscera::testing::cavity_scenario();
+  scenario.fluid.enabled = true;
+  const core::Vec3 centre(0.0, 0.0, 0.0), up(0.0, 0.0, 0.02);
+  // Inflow open, outflow shut, the scope held still at the centre of the cavity.
+  nlohmann::json still =
+      viscera::testing::cavity_script({{0.0, {centre, up}}, {3.0, {centre, up}}});
+  still["waypoints"][0]["inflow"] = 1.0;
+  still["waypoints"][0]["outflow"] = 0.0;
+  const auto script = ScriptedTrajectory::from_json(still, "still");
+
+  SessionReport report = run(scenario, script, 3.0);
+  ASSERT_TRUE(report.fluid.has_value());
+  const FluidTotals& fluid = *report.fluid;
+  // Nothing drains with the outflow shut: what went in is in the cavity or absorbed.
+  EXPECT_EQ(fluid.drained, 0.0);
+  const DistensionChannels channels;
+  EXPECT_NEAR(fluid.used,
+              channels.cavity_compliance * report.final_cavity_pressure + fluid.absorbed, 1e-12);
+  EXPECT_GT(report.final_cavity_pressure, 5000.0);  // the pump filled the cavity
+  EXPECT_DOUBLE_EQ(report_to_json(report)["metrics"]["distension_fluid_used"].get<double>(),
+                   fluid.used);
+  EXPECT_EQ(report.end_reason, "duration");
+
+  // The same with a 2 ml overload limit: the deficit reaches it within a second or two.
+  scenario.fluid.overload_volume = 2e-6;
+  report = run(scenario, script, 3.0);
+  EXPECT_EQ(report.end_reason, "fluid-overload");
+  EXPECT_EQ(report.events.back().kind, "fluid-overload");
+  EXPECT_LT(report.simulated_time, 3.0);
+  EXPECT_GE(report.fluid->deficit(), 2e-6);
+
+  // Without fluid in the scenario the metric says so.
+  scenario.fluid.enabled = false;
+  report = run(scenario, script, 0.2);
+  EXPECT_FALSE(report.fluid.has_value());
+  EXPECT_TRUE(report_to_json(report)["metrics"]["distension_fluid_used"].is_null());
+}
+
 TEST(SessionRunner, pushing_through_the_wall_perforates_it_and_ends_the_session) {
   const core::Scenario scenario = viscera::testing::cavity_scenario();
   const core::Vec3 up(0.0, 0.0, 0.02);
@@ -157,6 +196,40 @@ TEST(SessionRunner, a_recorded_session_replays_bit_identically_and_a_nudge_depar
   nudged[touching].second.tip.x() += 1e-6;
   const RecordedInput nudged_input(nudged);
   EXPECT_NE(run(scenario, nudged_input, 6.0).final_state_hash, recorded.final_state_hash);
+}
+
+TEST(SessionRunner, surface_seen_counts_only_the_inspect_tasks_region) {
+  // The camera circles outside the sphere, looking at its outer skin: with the procedure's
+  // cavity task nothing it sees counts, without a task the whole surface does.
+  const double far = viscera::testing::kCavityRadius + viscera::testing::kWallThickness + 0.012;
+  std::vector<std::pair<double, std::pair<core::Vec3, core::Vec3>>> outside;
+  for (int k = 0; k <= 4; ++k) {
+    const double a = 1.5 * k;
+    outside.push_back({0.5 * k, {{far * std::cos(a), far * std::sin(a), 0.0}, core::Vec3::Zero()}});
+  }
+  const auto script =
+      ScriptedTrajectory::from_json(viscera::testing::cavity_script(outside), "outside");
+  const core::Scenario with_task = viscera::testing::cavity_scenario();
+  const SessionReport cavity_only = run(with_task, script, 2.0);
+  EXPECT_EQ(cavity_only.metrics.contacts(), 0);
+  EXPECT_EQ(cavity_only.metrics.surface_seen(), 0.0);
+  EXPECT_EQ(task(cavity_only, "inspect-cavity").status, "not-completed");
+
+  core::Scenario without_task = with_task;
+  without_task.session.steps.clear();
+  const SessionReport whole = run(without_task, script, 2.0);
+  EXPECT_GT(whole.metrics.surface_seen(), 0.1);
+
+  // A second inspect task on another region cannot be scored by the one camera region.
+  core::Scenario two_regions = with_task;
+  core::TaskSpec outer = two_regions.session.steps[1].substeps[0].tasks[0];
+  outer.id = "inspect-outside";
+  outer.parameters["region_value"] = 0;
+  two_regions.session.steps[1].substeps[0].tasks.push_back(outer);
+  const SessionReport report = run(two_regions, script, 0.2);
+  EXPECT_EQ(task(report, "inspect-outside").status, "unavailable");
+  EXPECT_NE(task(report, "inspect-outside").note.find("\"cavity\""), std::string::npos)
+      << task(report, "inspect-outside").note;
 }
 
 }  // namespace

@@ -17,7 +17,8 @@
 namespace viscera::studio {
 
 /// A label map being built on an image volume. Every edit draws over the labels already there,
-/// in the CLI's order of operations; it never changes the volume.
+/// in the CLI's order of operations; it never changes the volume. An edit that throws leaves
+/// the labels as they were (each computes its result before it changes them).
 class Segmentation {
  public:
   /// Starts over on `volume` with an empty label map.

@@ -175,17 +175,18 @@ bool SegmentationPanel::run(const QString& title,
   return false;
 }
 
-bool SegmentationPanel::segment_threshold(double lower, double upper, int label) {
-  Segmentation edited = segmentation_;
-  if (!run(tr("Thresholding"), [&](core::Progress&) {
-        edited.threshold(lower, upper, static_cast<std::uint16_t>(label));
-      })) {
-    return false;
-  }
-  segmentation_ = std::move(edited);
+bool SegmentationPanel::edit(const QString& title, const std::function<void()>& change) {
+  // Every Segmentation edit computes its result before it changes the labels, so a failed one
+  // leaves them as they were; the modal progress dialog keeps the user out meanwhile.
+  if (!run(title, [&](core::Progress&) { change(); })) return false;
   update_status();
   emit labels_changed();
   return true;
+}
+
+bool SegmentationPanel::segment_threshold(double lower, double upper, int label) {
+  return edit(tr("Thresholding"),
+              [&] { segmentation_.threshold(lower, upper, static_cast<std::uint16_t>(label)); });
 }
 
 void SegmentationPanel::set_seed(const core::Vec3& point) {
@@ -198,16 +199,8 @@ void SegmentationPanel::set_seed(const core::Vec3& point) {
 }
 
 bool SegmentationPanel::grow_region_at(const core::Vec3& point, double tolerance, int label) {
-  Segmentation edited = segmentation_;
-  if (!run(tr("Growing a region"), [&](core::Progress&) {
-        edited.grow_at(point, tolerance, static_cast<std::uint16_t>(label));
-      })) {
-    return false;
-  }
-  segmentation_ = std::move(edited);
-  update_status();
-  emit labels_changed();
-  return true;
+  return edit(tr("Growing a region"),
+              [&] { segmentation_.grow_at(point, tolerance, static_cast<std::uint16_t>(label)); });
 }
 
 bool SegmentationPanel::grow_from_seed() {
@@ -219,53 +212,28 @@ bool SegmentationPanel::grow_from_seed() {
 }
 
 bool SegmentationPanel::open_labels(int radius) {
-  Segmentation edited = segmentation_;
-  if (!run(tr("Opening"), [&](core::Progress&) { edited.open(radius); })) return false;
-  segmentation_ = std::move(edited);
-  update_status();
-  emit labels_changed();
-  return true;
+  return edit(tr("Opening"), [&] { segmentation_.open(radius); });
 }
 
 bool SegmentationPanel::close_labels(int radius) {
-  Segmentation edited = segmentation_;
-  if (!run(tr("Closing"), [&](core::Progress&) { edited.close(radius); })) return false;
-  segmentation_ = std::move(edited);
-  update_status();
-  emit labels_changed();
-  return true;
+  return edit(tr("Closing"), [&] { segmentation_.close(radius); });
 }
 
 bool SegmentationPanel::keep_largest() {
-  Segmentation edited = segmentation_;
-  if (!run(tr("Keeping the largest component"), [&](core::Progress&) { edited.keep_largest(); })) {
-    return false;
-  }
-  segmentation_ = std::move(edited);
-  update_status();
-  emit labels_changed();
-  return true;
+  return edit(tr("Keeping the largest component"), [&] { segmentation_.keep_largest(); });
 }
 
 bool SegmentationPanel::load_label_map(const std::filesystem::path& path) {
-  Segmentation edited = segmentation_;
-  if (!run(tr("Reading %1").arg(QString::fromStdString(path.filename().string())),
-           [&](core::Progress&) {
-             if (!edited.has_volume()) {
-               throw core::UsageError("open an image volume before its label map");
-             }
-             core::LabelMap labels =
-                 path.extension() == ".vti"
-                     ? core::read_label_map_vti(path)
-                     : labels_from_volume(importers::read_volume(path).volume, path.string());
-             edited.set_labels(std::move(labels), path.string());
-           })) {
-    return false;
-  }
-  segmentation_ = std::move(edited);
-  update_status();
-  emit labels_changed();
-  return true;
+  return edit(tr("Reading %1").arg(QString::fromStdString(path.filename().string())), [&] {
+    if (!segmentation_.has_volume()) {
+      throw core::UsageError("open an image volume before its label map");
+    }
+    core::LabelMap labels =
+        path.extension() == ".vti"
+            ? core::read_label_map_vti(path)
+            : labels_from_volume(importers::read_volume(path).volume, path.string());
+    segmentation_.set_labels(std::move(labels), path.string());
+  });
 }
 
 OrganMeshRequest SegmentationPanel::mesh_request() const {

@@ -66,6 +66,8 @@ class SegmentationPanel : public QWidget {
 
  private:
   bool run(const QString& title, const std::function<void(core::Progress&)>& work);
+  /// Runs a change of the labels in the background; on success updates status and overlay.
+  bool edit(const QString& title, const std::function<void()>& change);
   void report(const QString& message);
   void update_status();
 

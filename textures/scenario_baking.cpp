@@ -1,5 +1,7 @@
 #include "textures/scenario_baking.h"
 
+#include <algorithm>
+#include <cmath>
 #include <set>
 
 #include "core/error.h"
@@ -32,8 +34,53 @@ void apply_uv_atlas(core::SceneObject& object, const UvAtlas& atlas) {
   // keeps pointing at the first uncut surface.
   auto& weld = object.surface.vertex_attributes[kSeamVertexAttribute];
   if (weld.empty()) {
-    for (const int v : atlas.original_vertex) weld.push_back(static_cast<double>(v));
+    for (const int v : atlas.original_vertex)
+      weld.push_back(static_cast<double>(v));
   }
+}
+
+core::SurfaceMesh welded_surface(const core::SurfaceMesh& surface) {
+  const auto found = surface.vertex_attributes.find(kSeamVertexAttribute);
+  if (found == surface.vertex_attributes.end()) return surface;
+  const std::vector<double>& original = found->second;
+  const std::size_t n = surface.vertices.size();
+  if (original.size() != n) {
+    throw core::InputError("the seam_vertex attribute has " + std::to_string(original.size()) +
+                           " values for " + std::to_string(n) + " vertices");
+  }
+  std::vector<int> target(n);
+  int count = 0;
+  for (std::size_t v = 0; v < n; ++v) {
+    const double index = original[v];
+    if (!(index >= 0.0) || index >= static_cast<double>(n) || index != std::floor(index)) {
+      throw core::InputError("seam_vertex of vertex " + std::to_string(v) + " is " +
+                             std::to_string(index) + ", not a vertex of the uncut surface");
+    }
+    target[v] = static_cast<int>(index);
+    count = std::max(count, target[v] + 1);
+  }
+  core::SurfaceMesh welded;
+  welded.vertices.assign(static_cast<std::size_t>(count), core::Vec3::Zero());
+  if (!surface.normals.empty())
+    welded.normals.assign(static_cast<std::size_t>(count), core::Vec3::Zero());
+  for (const auto& [name, values] : surface.vertex_attributes) {
+    if (name != kSeamVertexAttribute)
+      welded.vertex_attributes[name].assign(static_cast<std::size_t>(count), 0.0);
+  }
+  for (std::size_t v = 0; v < n; ++v) {
+    const auto t = static_cast<std::size_t>(target[v]);
+    welded.vertices[t] = surface.vertices[v];
+    if (!surface.normals.empty()) welded.normals[t] = surface.normals[v];
+    for (const auto& [name, values] : surface.vertex_attributes) {
+      if (name != kSeamVertexAttribute) welded.vertex_attributes[name][t] = values[v];
+    }
+  }
+  welded.triangles.reserve(surface.triangles.size());
+  for (const auto& tri : surface.triangles)
+    welded.triangles.push_back({target[static_cast<std::size_t>(tri[0])],
+                                target[static_cast<std::size_t>(tri[1])],
+                                target[static_cast<std::size_t>(tri[2])]});
+  return welded;
 }
 
 BakedTextures bake_textures_into(core::Scenario& scenario, const ScenarioBakeOptions& options,

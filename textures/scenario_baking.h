@@ -69,4 +69,11 @@ inline constexpr const char* kSeamVertexAttribute = "seam_vertex";
 /// and records the original index in the kSeamVertexAttribute attribute.
 void apply_uv_atlas(core::SceneObject& object, const UvAtlas& atlas);
 
+/// The closed surface an atlas cut at its seams: every copy is merged back into the vertex its
+/// kSeamVertexAttribute names, triangles are re-indexed, texture coordinates dropped and the
+/// other vertex attributes and normals taken from one copy of each vertex. A surface without
+/// the attribute is returned as it is. Throws core::InputError when the attribute has the wrong
+/// length or names a vertex beyond the surface's vertex count.
+core::SurfaceMesh welded_surface(const core::SurfaceMesh& surface);
+
 }  // namespace viscera::textures

@@ -6,10 +6,12 @@
 #include "core/error.h"
 #include "core/lsystem/lsystem.h"
 #include "core/materials/shipped_materials.h"
+#include "core/mesh/tet_quality.h"
 #include "core/random.h"
 #include "templates/geometry/surface_queries.h"
 #include "templates/hysteroscopy/uterine_pathologies.h"
 #include "templates/template_parts.h"
+#include "templates/validation/patient_validation.h"
 #include "templates/vessels/cco_vessel_generator.h"
 #include "templates/vessels/lsystem_vessel_tree.h"
 #include "templates/vessels/perfusion_domain.h"
@@ -127,15 +129,6 @@ PathologyParts build_pathology_at(const core::Scenario& scenario, const std::str
   templates::PathologyRequest shape_request;
   shape_request.edge_length = std::clamp(0.25 * size, 0.0015, 0.003);
   core::Rng rng(seed);
-  std::optional<templates::PlacedPathology> placed;
-  for (int attempt = 0; attempt < 20 && !placed; ++attempt)
-    placed = templates::shape_pathology_at(tissue, point, kind, size, hang, shape_request, rng);
-  if (!placed) {
-    throw core::InputError("no room for a " + kind + " of " + std::to_string(size * 1000.0) +
-                           " mm on the wall of \"" + host_id + "\" there");
-  }
-  progress.step();
-
   const bool myoma = kind.starts_with("myoma");
   const std::string material_id = myoma ? "myoma" : "endometrium";
   PathologyParts parts;
@@ -146,10 +139,6 @@ PathologyParts build_pathology_at(const core::Scenario& scenario, const std::str
   const std::string texture = myoma && scenario.textures.contains("myoma-surface")
                                   ? std::string("myoma-surface")
                                   : host.texture;
-
-  // The template's own steps on a copy: tets by gmsh, then the base joined to the nearest knots.
-  core::Scenario copy = scenario;
-  if (parts.material) copy.materials[material_id] = *parts.material;
   const std::string base = myoma ? "myoma" : kind;
   const auto taken = [&](const std::string& candidate) {
     return scenario.find_object(candidate) != nullptr ||
@@ -159,8 +148,29 @@ PathologyParts build_pathology_at(const core::Scenario& scenario, const std::str
   std::string id = base;
   for (int n = 2; taken(id); ++n)
     id = base + "-" + std::to_string(n);
-  templates::add_tet_object(copy, id, kind, core::ObjectRole::Pathology, material_id, texture,
-                            placed->surface, material.density, progress);
+
+  // The template's own steps on a copy: the shape, tets by gmsh, then the base joined to the
+  // nearest knots. A draw that does not fit, or whose tets gmsh leaves with a sliver the
+  // validation refuses, is drawn again, as the variant generator does.
+  const templates::ValidationBounds bounds;
+  std::optional<templates::PlacedPathology> placed;
+  core::Scenario copy;
+  for (int attempt = 0; attempt < 20 && !placed; ++attempt) {
+    placed = templates::shape_pathology_at(tissue, point, kind, size, hang, shape_request, rng);
+    if (!placed) continue;
+    copy = scenario;
+    if (parts.material) copy.materials[material_id] = *parts.material;
+    templates::add_tet_object(copy, id, kind, core::ObjectRole::Pathology, material_id, texture,
+                              placed->surface, material.density, core::Progress::none());
+    const core::TetQualityReport quality = core::tet_quality(copy.objects.back().body);
+    if (quality.inverted > 0 || quality.min_dihedral_degrees < bounds.min_dihedral_degrees)
+      placed.reset();
+  }
+  if (!placed) {
+    throw core::InputError("no room for a " + kind + " of " + std::to_string(size * 1000.0) +
+                           " mm on the wall of \"" + host_id + "\" there");
+  }
+  progress.step();
   progress.step();
   templates::attach(copy, host_id, id, placed->base, 0.75 * mean_knot_spacing(host.body));
   progress.step();

@@ -17,7 +17,8 @@
 /// |               | (host vertex attribute "cavity" = 1, when the host has one)                 |
 /// | attachments   | each pathology is connected to its host by ≥ 3 node pairs                   |
 /// | connections   | every connection names two objects, valid nodes, ≥ 3 pairs, positive        |
-/// |               | stiffness, and its paired nodes lie within max_connection_gap               |
+/// |               | stiffness, and its paired nodes lie within max_connection_gap, or within    |
+/// |               | the longest tet edge at either node when the bodies are coarser than that   |
 /// | references    | vessel trees name an existing host, parents precede children, finite        |
 /// |               | geometry and positive radii; landmarks name existing objects                |
 
@@ -36,7 +37,8 @@ struct ValidationBounds {
   /// of the Teschner volume term shrinks by an order of magnitude.
   double min_dihedral_degrees = 2.0;
   /// Largest distance in m between the two nodes of a connection pair (seed 001 §3.3: joined at
-  /// the nearest knots).
+  /// the nearest knots). A coarse body's nearest knot can lie further: a pair is also accepted
+  /// within the longest tet edge that meets either of its nodes.
   double max_connection_gap = 0.004;
   /// m: a pathology vertex this close to the host's wall counts as on it, not in it.
   double wall_tolerance = 5e-4;

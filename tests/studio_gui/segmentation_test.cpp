@@ -27,6 +27,7 @@
 #include "studio/ui/slice_views.h"
 #include "studio/ui/volume_rendering.h"
 #include "tests/studio_gui/image_checks.h"
+#include "tests/studio_gui/liver_volume.h"
 
 namespace fs = std::filesystem;
 using namespace viscera;
@@ -45,17 +46,7 @@ class SegmentationTest : public QObject {
     return o;
   }
 
-  /// CGAL's liver.inr.gz (438 × 353 × 165 voxels of 0.617 × 0.617 × 1.333 mm; 255 in the
-  /// liver, 0 outside), extracted from libcgal-demo's data archive.
-  fs::path liver() const {
-    const fs::path path = dir() / "data/images/liver.inr.gz";
-    if (!fs::exists(path)) {
-      const std::string command = "tar -xzf /usr/share/doc/libcgal-dev/data.tar.gz -C '" +
-                                  dir().string() + "' data/images/liver.inr.gz";
-      if (std::system(command.c_str()) != 0) qWarning("%s failed", command.c_str());
-    }
-    return path;
-  }
+  fs::path liver() const { return studio_tests::cgal_liver(dir()); }
 
   /// The window with the liver opened and downsampled ×4 in-plane, ×2 across slices
   /// (109 × 88 × 82 voxels of about 2.5 mm).
@@ -72,28 +63,6 @@ class SegmentationTest : public QObject {
                              coarse);
     }
     return window.open_image_volume(coarse);
-  }
-
-  /// The voxel of the axial slice `near`[2] nearest `near` whose 5 × 5 × 3 neighbourhood holds
-  /// 255 only; (-1, -1, -1) when there is none.
-  static std::array<int, 3> deep_inside(const core::ImageVolume& v, std::array<int, 3> near) {
-    std::array<int, 3> best{-1, -1, -1};
-    int best_distance = 1 << 30;
-    const int k = near[2];
-    for (int j = 2; j < v.dims[1] - 2; ++j)
-      for (int i = 2; i < v.dims[0] - 2; ++i) {
-        bool all = true;
-        for (int c = -1; c <= 1 && all; ++c)
-          for (int b = -2; b <= 2 && all; ++b)
-            for (int a = -2; a <= 2 && all; ++a)
-              all = v.value(v.linear_index(i + a, j + b, k + c)) == 255.0;
-        const int distance = (i - near[0]) * (i - near[0]) + (j - near[1]) * (j - near[1]);
-        if (all && distance < best_distance) {
-          best = {i, j, k};
-          best_distance = distance;
-        }
-      }
-    return best;
   }
 
  private slots:
@@ -116,7 +85,7 @@ class SegmentationTest : public QObject {
     // (54, 44, 41) — voxel (219, 176, 82) of the full image — whose 5 × 5 × 3 neighbourhood is
     // all liver (255).
     const core::ImageVolume& volume = segmentation.volume();
-    const std::array<int, 3> inside = deep_inside(volume, {54, 44, 41});
+    const std::array<int, 3> inside = studio_tests::deep_inside(volume, {54, 44, 41});
     QVERIFY(inside[0] >= 0);
     studio::SliceViews* slices = window.slice_views();
     slices->set_slice(2, inside[2]);

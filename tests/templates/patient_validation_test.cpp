@@ -2,7 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include "core/error.h"
+#include "core/mesh/surface_mesh.h"
 #include "templates/template_catalog.h"
+#include "textures/scenario_baking.h"
 
 namespace viscera::templates {
 namespace {
@@ -46,6 +49,31 @@ TEST(PatientValidation, a_default_hysteroscopy_patient_passes_every_check) {
   EXPECT_TRUE(v.to_json().at("valid").get<bool>());
 }
 
+TEST(PatientValidation, a_baked_texture_cut_at_its_seams_still_passes_on_the_welded_surface) {
+  core::Scenario s = patient();
+  const core::SurfaceMesh uncut = object_named(s, "uterus").surface;
+  textures::ScenarioBakeOptions options;
+  textures::bake_textures_into(s, options);
+  const core::SurfaceMesh& cut = object_named(s, "uterus").surface;
+  // The atlas split the surface: as stored it is open along its seams.
+  ASSERT_GT(cut.vertices.size(), uncut.vertices.size());
+  EXPECT_FALSE(core::is_closed_and_consistently_oriented(cut));
+  // Welded by the seam index it is the uncut surface again.
+  const core::SurfaceMesh welded = textures::welded_surface(cut);
+  EXPECT_EQ(welded.vertices.size(), uncut.vertices.size());
+  EXPECT_TRUE(core::is_closed_and_consistently_oriented(welded));
+  EXPECT_NEAR(core::enclosed_volume(welded), core::enclosed_volume(uncut),
+              1e-12 * std::abs(core::enclosed_volume(uncut)));
+  EXPECT_EQ(welded.vertex_attributes.at("cavity"), uncut.vertex_attributes.at("cavity"));
+  const PatientValidation v = validate_patient_geometry(s);
+  EXPECT_TRUE(v.valid()) << v.first_failure();
+
+  // A seam index beyond the surface is refused, not read out of bounds.
+  core::SurfaceMesh broken = cut;
+  broken.vertex_attributes[textures::kSeamVertexAttribute][0] = 1e9;
+  EXPECT_THROW(textures::welded_surface(broken), core::InputError);
+}
+
 TEST(PatientValidation, a_surface_with_a_hole_fails_the_surface_check) {
   core::Scenario s = patient();
   object_named(s, "uterus").surface.triangles.pop_back();
@@ -86,6 +114,19 @@ TEST(PatientValidation, a_pathology_moved_out_of_the_cavity_fails_and_its_connec
       << check_named(v, "pathologies").detail;
   EXPECT_FALSE(check_named(v, "connections").passed);
   EXPECT_NE(check_named(v, "connections").detail.find("mm apart"), std::string::npos);
+}
+
+TEST(PatientValidation, a_connection_to_a_coarse_body_may_span_its_local_tet_edge) {
+  // With no fixed allowance left, the template's pairs still pass: each pair's nodes are closer
+  // than the longest tet edge at one of them (the nearest knot of a coarse body).
+  ValidationBounds strict;
+  strict.max_connection_gap = 1e-9;
+  EXPECT_TRUE(check_named(validate_patient_geometry(patient(), strict), "connections").passed);
+  // A polyp moved 3 cm off its host is further than any edge there.
+  core::Scenario s = patient();
+  for (auto& n : object_named(s, "polyp-1").body.nodes)
+    n += core::Vec3(0.03, 0.0, 0.0);
+  EXPECT_FALSE(check_named(validate_patient_geometry(s, strict), "connections").passed);
 }
 
 TEST(PatientValidation, a_pathology_pushed_into_the_wall_fails) {

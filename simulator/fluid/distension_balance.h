@@ -1,0 +1,86 @@
+#pragma once
+/// The fluid balance of a distended uterine cavity (hydrometra), lumped into one pressure
+/// (seed 000 §1.1.2–1.1.3: in- and outflow through the hysteroscope's valves, pump pressure,
+/// fluid overload by absorption; §11: "the amount of distension media used" is a metric).
+///
+/// The cavity is one compliant chamber at pressure P (Pa) with volume V = V₀ + C·P. The pump
+/// feeds it through the inflow channel, the outflow channel drains it, and above the absorption
+/// threshold fluid leaves through the tubal ostia and open vessels (intravasation):
+///
+///   C dP/dt = u_in G_in (P_pump − P) − u_out G_out (P − P_drain) − G_abs max(0, P − P_abs)
+///
+/// with valve openings u ∈ [0, 1] and channel conductances G (m³ s⁻¹ Pa⁻¹) from Hagen–Poiseuille,
+/// G = π r⁴ / (8 μ L). Within a step the valves are constant, so the equation is linear in each
+/// regime (below or above P_abs); step() solves it exactly, splitting the step where P crosses
+/// P_abs, and integrates the three flows exactly. Hence the balance
+/// used − drained − absorbed = C (P_end − P_start) holds to rounding for any step length.
+
+#include "core/scenario/scenario_parts.h"
+
+namespace viscera::sim {
+
+/// Physical constants of the instrument's channels and of the cavity.
+struct DistensionChannels {
+  /// m³ s⁻¹ Pa⁻¹, inflow channel fully open: radius 0.6 mm, 0.35 m of channel and tubing,
+  /// saline at body temperature (μ = 0.7 mPa·s) — about 170 ml/min into an empty cavity at
+  /// 100 mmHg, the range of continuous-flow hysteroscopes.
+  double inflow_conductance = poiseuille_conductance(0.6e-3, 0.35, 0.7e-3);
+  /// m³ s⁻¹ Pa⁻¹, outflow channel fully open: radius 0.55 mm, same length.
+  double outflow_conductance = poiseuille_conductance(0.55e-3, 0.35, 0.7e-3);
+  /// m³/Pa: the cavity grows by about 6 ml between 0 and 100 mmHg.
+  double cavity_compliance = 6.0e-6 / 13332.0;
+  /// m³, volume of the collapsed cavity.
+  double resting_volume = 2.0e-6;
+  /// m³ s⁻¹ Pa⁻¹ of tubal spill and intravasation above the threshold: about 20 ml/min at
+  /// 50 mmHg above it.
+  double absorption_conductance = 20.0e-6 / 60.0 / 6666.0;
+  /// Pa above which fluid is absorbed: 75 mmHg, about the mean arterial pressure.
+  double absorption_threshold = 10000.0;
+
+  /// π r⁴ / (8 μ L): the laminar conductance of a pipe of radius `radius` m and length `length` m
+  /// for a fluid of dynamic viscosity `viscosity` Pa·s.
+  static double poiseuille_conductance(double radius, double length, double viscosity);
+};
+
+/// Volumes exchanged so far, m³, and the pressure history's extremes.
+struct FluidTotals {
+  double used = 0.0;                  ///< delivered by the pump through the inflow channel
+  double drained = 0.0;               ///< collected through the outflow channel
+  double absorbed = 0.0;              ///< lost through the ostia and into the circulation
+  double max_pressure = 0.0;          ///< Pa
+  double time_above_threshold = 0.0;  ///< s with the pressure above the absorption threshold
+  /// The clinical fluid deficit: used − drained (what is in the patient: cavity and absorbed).
+  double deficit() const { return used - drained; }
+};
+
+/// The cavity's fluid state, advanced step by step.
+class DistensionBalance {
+ public:
+  /// Pump and drain pressures and the overload limit from the scenario; throws core::InputError
+  /// naming /scenario/fluid when a pressure is negative or not finite, or a channel constant is
+  /// not positive.
+  explicit DistensionBalance(const core::FluidSpec& fluid, DistensionChannels channels = {});
+
+  /// Advances `dt` s with the valve openings (clamped to [0, 1]) held over the step.
+  void step(double inflow_opening, double outflow_opening, double dt);
+
+  double pressure() const { return pressure_; }  ///< Pa
+  /// m³ of fluid in the cavity, V₀ + C·P.
+  double cavity_volume() const;
+  const FluidTotals& totals() const { return totals_; }
+  /// Whether the deficit has reached the scenario's overload volume (a complication).
+  bool overloaded() const { return totals_.deficit() >= fluid_.overload_volume; }
+  const core::FluidSpec& fluid() const { return fluid_; }
+  const DistensionChannels& channels() const { return channels_; }
+
+ private:
+  /// Solves one regime exactly over `dt`: returns the end pressure and adds the flows.
+  double advance_regime(double g_in, double g_out, bool absorbing, double dt);
+
+  core::FluidSpec fluid_;
+  DistensionChannels channels_;
+  double pressure_ = 0.0;
+  FluidTotals totals_;
+};
+
+}  // namespace viscera::sim

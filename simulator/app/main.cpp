@@ -172,8 +172,10 @@ int run(const RunOptions& options) {
   nlohmann::json script_json;
   const double optics_angle = scenario.session.instrument.optics_angle;
   if (!options.script.empty()) {
-    script = viscera::sim::ScriptedTrajectory::read(options.script, optics_angle);
-    script_json = read_json_file(options.script);
+    // Landmark places resolved on this patient; the trace keeps the resolved script.
+    script_json = viscera::sim::resolve_script_landmarks(read_json_file(options.script),
+                                                         scenario.landmarks, options.script);
+    script = viscera::sim::ScriptedTrajectory::from_json(script_json, options.script, optics_angle);
     run.instrument = &*script;
     run.instrument_body = script->body();
     run.instrument_stiffness = script->stiffness();

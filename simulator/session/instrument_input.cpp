@@ -9,6 +9,54 @@
 
 namespace viscera::sim {
 
+nlohmann::json resolve_script_landmarks(const nlohmann::json& script,
+                                        const std::vector<core::Landmark>& landmarks,
+                                        const std::string& file) {
+  nlohmann::json out = script;
+  if (!out.is_object() || !out.contains("waypoints") || !out["waypoints"].is_array()) return out;
+  const auto find = [&](const std::string& id, const std::string& pointer) {
+    const auto it = std::find_if(landmarks.begin(), landmarks.end(),
+                                 [&id](const core::Landmark& l) { return l.id == id; });
+    if (it == landmarks.end()) {
+      std::string known;
+      for (const auto& l : landmarks)
+        known += (known.empty() ? "" : ", ") + l.id;
+      throw core::InputError("the scenario has no landmark \"" + id +
+                                 "\" (it has: " + (known.empty() ? "none" : known) + ")",
+                             {file, pointer, ""});
+    }
+    return *it;
+  };
+  for (std::size_t i = 0; i < out["waypoints"].size(); ++i) {
+    for (const char* key : {"tip", "look_at"}) {
+      nlohmann::json& place = out["waypoints"][i][key];
+      const std::string pointer = "/waypoints/" + std::to_string(i) + "/" + key;
+      if (!place.is_object()) {
+        if (place.is_null()) out["waypoints"][i].erase(key);
+        continue;
+      }
+      try {
+        const core::Landmark from = find(place.at("landmark").get<std::string>(), pointer);
+        core::Vec3 p = from.position;
+        if (place.contains("towards")) {
+          const core::Landmark to = find(place["towards"].get<std::string>(), pointer);
+          p += place.value("fraction", 0.0) * (to.position - from.position);
+        }
+        p += place.value("along_normal", 0.0) * from.normal;
+        if (place.contains("offset")) p += place["offset"].get<core::Vec3>();
+        place = p;
+      } catch (const nlohmann::json::exception& e) {
+        throw core::InputError(std::string("a landmark place needs \"landmark\" and optional "
+                                           "\"towards\", \"fraction\", \"along_normal\", "
+                                           "\"offset\" [x, y, z]: ") +
+                                   e.what(),
+                               {file, pointer, ""});
+      }
+    }
+  }
+  return out;
+}
+
 ScriptedTrajectory ScriptedTrajectory::from_json(const nlohmann::json& json,
                                                  const std::string& file, double optics_angle) {
   const auto fail = [&file](const std::string& pointer, const std::string& message) {

@@ -7,9 +7,25 @@
 #include <string>
 #include <vector>
 
+#include "core/scenario/scenario_parts.h"
 #include "simulator/session/instrument_state.h"
 
 namespace viscera::sim {
+
+/// Replaces the landmark places of a script by positions, so the same script drives every
+/// patient a template generates (the trace keeps the resolved script, so it replays alone).
+/// Wherever a waypoint's "tip" or "look_at" is an object instead of [x, y, z]:
+///
+///   {"landmark": "cervix-external-os", "towards": "fundus", "fraction": 0.4,
+///    "along_normal": 0.008, "offset": [x, y, z]}
+///
+/// the place is  L + fraction · (T − L) + along_normal · n_L + offset,  with L and n_L the
+/// position and unit normal of "landmark" (the normal points away from the tissue) and T the
+/// position of "towards" (optional, as are the others; lengths in m). Throws core::InputError
+/// naming `file` and the JSON pointer of a place whose landmark the scenario lacks.
+nlohmann::json resolve_script_landmarks(const nlohmann::json& script,
+                                        const std::vector<core::Landmark>& landmarks,
+                                        const std::string& file);
 
 /// A source of instrument states, queried once per physics step.
 class InstrumentInput {
@@ -33,7 +49,8 @@ class InstrumentInput {
 /// only "tip"; "axis" (default: the previous waypoint's, or +z) and "up" set the shaft and the
 /// roll of the optics, or "look_at" points the angled optics at a point (the shaft stays on the
 /// side of the previous axis). Valve openings are in [0, 1] and hold until changed. "body"
-/// names the object the tool touches (optional: the first simulated body).
+/// names the object the tool touches (optional: the first simulated body). "tip" and "look_at"
+/// may name landmarks once resolve_script_landmarks has replaced them.
 class ScriptedTrajectory final : public InstrumentInput {
  public:
   /// Parses a script; throws core::InputError naming `file` and the JSON pointer of a bad

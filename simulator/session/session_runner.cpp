@@ -92,11 +92,10 @@ SessionRunner::SessionRunner(const core::Scenario& scenario, const HeadlessRunOp
 
   // The camera observes the surface the instrument works in, restricted to the region the
   // first inspect-surface task on it names.
-  std::string region_problem;
+  std::string region_problem, attribute;
+  double value = 1.0;
   if (!surface_object.empty()) {
     const core::SceneObject* object = scenario.find_object(surface_object);
-    std::string attribute;
-    double value = 1.0;
     for (const core::TaskSpec* task : core::all_tasks(scenario.session)) {
       if (task->kind == "inspect-surface" &&
           task->parameters.value("object", surface_object) == surface_object) {
@@ -151,6 +150,12 @@ SessionRunner::SessionRunner(const core::Scenario& scenario, const HeadlessRunOp
             "only the surface the instrument works in (\"" + surface_object + "\") is observed";
       else if (!region_problem.empty())
         missing = region_problem;
+      else if (task.parameters.value("region_attribute", std::string()) != attribute ||
+               task.parameters.value("region_value", 1.0) != value)
+        missing =
+            "only one region of the surface is observed, that of the first inspect-surface "
+            "task (\"" +
+            attribute + "\" = " + std::to_string(value) + ")";
     }
     if ((task.kind == "touch" || task.kind == "centre-target" || task.kind == "reach" ||
          task.kind == "withdraw") &&

@@ -46,7 +46,8 @@ TaskMonitor::TaskMonitor(const core::TaskSpec& task, std::string step, std::stri
   const std::string tool = spec_.parameters.value("tool", tool_needed(task.kind));
   if (!tool.empty() && !kSimulatedTools.contains(tool)) {
     result_.status = "unavailable";
-    result_.note = "needs a " + tool +
+    // "a grasper", "a clip-applier", but "scissors".
+    result_.note = "needs " + std::string(tool.ends_with('s') ? "" : "a ") + tool +
                    ", which this runtime cannot simulate yet (it simulates a rigid " +
                    simulated_tool + " with a camera and a haptic tip)";
   } else if (!kDetectedKinds.contains(task.kind)) {

@@ -5,6 +5,7 @@
 
 #include "core/error.h"
 #include "core/random.h"
+#include "core/scenario/procedure.h"
 #include "templates/template_parts.h"
 #include "templates/variability/parameter_distribution.h"
 
@@ -123,6 +124,8 @@ core::Scenario AgentTissueTemplate::build(const ParameterValues& p, std::uint64_
   scenario.objects.push_back(std::move(sheet));
   scenario.cell_tissues.push_back(std::move(spec));
   scenario.session.gravity = core::Vec3::Zero();
+  // Seed 003 §V: palpate (detected), pull and cut (reported unavailable: no grasper or scissors).
+  core::apply_procedure(scenario.session, core::procedure_definition("agent-tissue-lab"));
   // The cells integrate explicitly (seed 003 eq. 6–7): stable while ω h < 2 with ω² of a cell
   // pulled by its four neighbours and its home, (4 k_conn + k_home) / m. Half that step, and
   // never above the 1 ms default.

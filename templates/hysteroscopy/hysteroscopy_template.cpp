@@ -5,6 +5,7 @@
 #include "core/meshing/tet_mesher.h"
 #include "core/modelling/layered_body.h"
 #include "core/modelling/object_connectivity.h"
+#include "core/scenario/procedure.h"
 #include "templates/hysteroscopy/uterine_pathologies.h"
 #include "templates/hysteroscopy/uterus_shape.h"
 #include "templates/template_parts.h"
@@ -235,7 +236,14 @@ core::Scenario HysteroscopyTemplate::build(const ParameterValues& p, std::uint64
     cco.host_object = "uterus";
     scenario.vessel_trees.push_back(grow_cco_tree(domain, cco));
   }
+  // The tubal orifices lie at the bottom of their funnels; on the coarse mesh the facets there
+  // sit in front of the smooth funnel's apex, so the landmarks move onto the mesh (a camera
+  // centring one sees it, not the facet in front of it).
   scenario.landmarks = shape.landmarks;
+  for (auto& mark : scenario.landmarks) {
+    if (mark.id.starts_with("tubal-orifice"))
+      mark.position = tissue.closest(mark.position).position;
+  }
 
   scenario.fluid.enabled = true;
   // The uterus rests in the pelvis, held all round; the cavity deforms under distension
@@ -244,7 +252,9 @@ core::Scenario HysteroscopyTemplate::build(const ParameterValues& p, std::uint64
   // Pathologies are attached to the wall and do not collide with it; tools touch tissue
   // through the instrument proxy. Body-body contacts would cost more than the bodies.
   scenario.session.contact_stiffness = 0.0;
-  scenario.session.duration_limit = 600.0;
+  // Seed 000 §11: the diagnostic procedure, its tasks referring to the shape's landmarks (the
+  // internal and external os, both tubal orifices) and the cavity region of the surface.
+  core::apply_procedure(scenario.session, core::procedure_definition("diagnostic-hysteroscopy"));
   scenario.session.metrics = {"path_length", "economy_of_movement", "wall_contacts", "max_force",
                               "cavity_seen"};
   progress.step();

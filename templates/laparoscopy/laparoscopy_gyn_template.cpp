@@ -7,6 +7,7 @@
 #include "core/modelling/layered_body.h"
 #include "core/primitives/icosphere.h"
 #include "core/primitives/pipe_primitive.h"
+#include "core/scenario/procedure.h"
 #include "templates/template_parts.h"
 #include "templates/variability/parameter_distribution.h"
 #include "templates/variability/smooth_deformation.h"
@@ -197,6 +198,12 @@ core::Scenario LaparoscopyGynTemplate::build(const ParameterValues& p, std::uint
             {cornu, cornu + mirror({0.03, 0.0, 0.01}, side),
              cornu + mirror({0.06, -0.02, -0.035}, side)},
             3.5 * tr);
+    // The isthmus, where a tube is occluded: on the front (−y, where the laparoscope looks
+    // from) of the middle of its first, narrow segment.
+    scenario.landmarks.push_back(
+        {"fallopian-tube-" + s, "Isthmus of the fallopian tube (" + s + ")", "tube-" + s,
+         cornu + mirror({0.015, 0.0, 0.005}, side) - tr * core::Vec3::UnitY(),
+         -core::Vec3::UnitY()});
     progress.step();
     const core::Vec3 lig = mirror({0.5 * W + 0.004, -0.012, 0.65 * L}, side);
     const core::Vec3 lig_end = lig + mirror({0.06, -0.05, -0.02}, side);
@@ -259,8 +266,9 @@ core::Scenario LaparoscopyGynTemplate::build(const ParameterValues& p, std::uint
 
   scenario.fluid.enabled = false;
   scenario.session.contact_stiffness = 0.0;  // seed 001: organs are kept apart by their holds
-  scenario.session.instrument.kind = "laparoscope";
-  scenario.session.instrument.optics_angle = 30.0;
+  // Seed 001 §3.1: locate both tubes (detected), grasp, clip and cut (reported unavailable).
+  core::apply_procedure(scenario.session,
+                        core::procedure_definition("laparoscopic-tubal-sterilisation"));
   return scenario;
 }
 

@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "core/error.h"
+#include "core/scenario/procedure.h"
 #include "templates/template_parts.h"
 #include "templates/variability/parameter_distribution.h"
 
@@ -122,7 +123,10 @@ core::Scenario UrethraTemplate::build(const ParameterValues& p, std::uint64_t se
                                 core::Vec3(0.0, a * spec.length * spec.length, spec.length),
                                 core::Vec3(0.0, 2.0 * a * spec.length, 1.0).normalized()});
   scenario.session.gravity = core::Vec3::Zero();
-  scenario.session.instrument.kind = "cystoscope";
+  // Seed 002 §3, §5: insertion from the meatus to the bladder entrance and back, with the
+  // endoscope of this lattice (its shaft sets the lumen's deformation).
+  core::apply_procedure(scenario.session,
+                        core::procedure_definition("urethral-endoscope-insertion"));
   scenario.session.instrument.shaft_diameter = 2.0 * spec.endoscope_radius;
   (void)seed;  // the lattice is fully set by its parameters; the seed goes to provenance
   progress.step();

@@ -51,6 +51,36 @@ SessionReport run_script(const ScriptedTrajectory& trajectory, bool record = fal
   return run_headless(block(), options);
 }
 
+TEST(ScriptedTrajectory, resolves_landmark_places_and_names_a_missing_landmark) {
+  const std::vector<core::Landmark> marks = {
+      {"os", "os", "block", core::Vec3(0.0, 0.0, 0.01), core::Vec3(0.0, 0.0, -1.0)},
+      {"top", "top", "block", core::Vec3(0.0, 0.02, 0.05), core::Vec3::Zero()}};
+  nlohmann::json s = script({{0.0, {0, 0, 0}}, {1.0, {0, 0, 0}}});
+  s["waypoints"][0]["tip"] = {{"landmark", "os"}, {"along_normal", 0.008}};
+  s["waypoints"][1]["tip"] = {
+      {"landmark", "os"}, {"towards", "top"}, {"fraction", 0.5}, {"offset", {0.001, 0.0, 0.0}}};
+  s["waypoints"][1]["look_at"] = {{"landmark", "top"}};
+  const nlohmann::json resolved = resolve_script_landmarks(s, marks, "s.json");
+  const auto trajectory = ScriptedTrajectory::from_json(resolved, "s.json", 30.0);
+  // os + 8 mm along its outward normal (−z); then halfway to top, 1 mm to the side.
+  EXPECT_TRUE(trajectory.tip(0, 0.0).isApprox(core::Vec3(0.0, 0.0, 0.002)));
+  EXPECT_TRUE(trajectory.tip(0, 1.0).isApprox(core::Vec3(0.001, 0.01, 0.03)));
+  const InstrumentState at_end = trajectory.state(0, 1.0);
+  const core::Vec3 to_top = (core::Vec3(0.0, 0.02, 0.05) - at_end.tip).normalized();
+  EXPECT_NEAR(view_direction(at_end, 30.0).dot(to_top), 1.0, 1e-9);
+  EXPECT_TRUE(resolved["waypoints"][1]["look_at"].is_array());
+
+  s["waypoints"][1]["look_at"] = {{"landmark", "fundus"}};
+  try {
+    resolve_script_landmarks(s, marks, "s.json");
+    FAIL() << "an unknown landmark was accepted";
+  } catch (const core::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("s.json: /waypoints/1/look_at"), std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("\"fundus\""), std::string::npos) << e.what();
+  }
+}
+
 TEST(ScriptedTrajectory, interpolates_between_waypoints_and_names_bad_ones) {
   const auto trajectory =
       ScriptedTrajectory::from_json(script({{0.0, {0, 0, 0.05}}, {1.0, {0, 0, 0.01}}}), "s.json");

@@ -159,5 +159,39 @@ TEST(SessionRunner, a_recorded_session_replays_bit_identically_and_a_nudge_depar
   EXPECT_NE(run(scenario, nudged_input, 6.0).final_state_hash, recorded.final_state_hash);
 }
 
+TEST(SessionRunner, surface_seen_counts_only_the_inspect_tasks_region) {
+  // The camera circles outside the sphere, looking at its outer skin: with the procedure's
+  // cavity task nothing it sees counts, without a task the whole surface does.
+  const double far = viscera::testing::kCavityRadius + viscera::testing::kWallThickness + 0.012;
+  std::vector<std::pair<double, std::pair<core::Vec3, core::Vec3>>> outside;
+  for (int k = 0; k <= 4; ++k) {
+    const double a = 1.5 * k;
+    outside.push_back({0.5 * k, {{far * std::cos(a), far * std::sin(a), 0.0}, core::Vec3::Zero()}});
+  }
+  const auto script =
+      ScriptedTrajectory::from_json(viscera::testing::cavity_script(outside), "outside");
+  const core::Scenario with_task = viscera::testing::cavity_scenario();
+  const SessionReport cavity_only = run(with_task, script, 2.0);
+  EXPECT_EQ(cavity_only.metrics.contacts(), 0);
+  EXPECT_EQ(cavity_only.metrics.surface_seen(), 0.0);
+  EXPECT_EQ(task(cavity_only, "inspect-cavity").status, "not-completed");
+
+  core::Scenario without_task = with_task;
+  without_task.session.steps.clear();
+  const SessionReport whole = run(without_task, script, 2.0);
+  EXPECT_GT(whole.metrics.surface_seen(), 0.1);
+
+  // A second inspect task on another region cannot be scored by the one camera region.
+  core::Scenario two_regions = with_task;
+  core::TaskSpec outer = two_regions.session.steps[1].substeps[0].tasks[0];
+  outer.id = "inspect-outside";
+  outer.parameters["region_value"] = 0;
+  two_regions.session.steps[1].substeps[0].tasks.push_back(outer);
+  const SessionReport report = run(two_regions, script, 0.2);
+  EXPECT_EQ(task(report, "inspect-outside").status, "unavailable");
+  EXPECT_NE(task(report, "inspect-outside").note.find("\"cavity\""), std::string::npos)
+      << task(report, "inspect-outside").note;
+}
+
 }  // namespace
 }  // namespace viscera::sim

@@ -22,6 +22,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev libnoise-dev libbullet-dev
   libopenmpi-dev openmpi-bin
   xvfb xauth libgl1-mesa-dri
+  libsdl2-dev  # gamepad input in the simulator window (SDL2 joystick/game controller)
   python3-nibabel python3-pydicom libcgal-demo  # real DICOM/NIfTI/MINC/INR test images
   assimp-testmodels gmsh-doc  # real meshes (assimp's test set, gmsh's tutorials) for the mesh import tests
   nodejs  # runs the Khronos glTF validator (npm gltf-validator) in the export tests

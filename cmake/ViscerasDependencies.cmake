@@ -25,7 +25,7 @@ find_package(VTK 9.1 REQUIRED COMPONENTS
   IOXML IOLegacy IOGeometry IOImage
   FiltersCore FiltersGeneral FiltersGeometry
   ImagingCore ImagingGeneral ImagingMorphological ImagingSources IOMINC
-  GUISupportQt RenderingCore RenderingOpenGL2 RenderingVolumeOpenGL2 InteractionStyle
+  GUISupportQt RenderingCore RenderingOpenGL2 RenderingVolumeOpenGL2 InteractionStyle InteractionWidgets
   ChartsCore ViewsContext2D RenderingContextOpenGL2 IOOggTheora RenderingFreeType RenderingContext2D)
 
 # DICOM through GDCM's VTK reader (BUILD_NOTES.md). GDCMConfig.cmake does not load the
@@ -54,4 +54,13 @@ if(VISCERA_BUILD_TESTS)
 endif()
 if(VISCERA_BUILD_BENCHMARKS)
   find_package(benchmark REQUIRED)
+endif()
+
+# SDL2 reads gamepads in the simulator window (dev.sh installs libsdl2-dev). Optional: a build
+# without it lacks only the gamepad input (viscera-sim says so when asked for one).
+find_package(SDL2 CONFIG QUIET)
+if(TARGET SDL2::SDL2)
+  message(STATUS "SDL2 ${SDL2_VERSION}: gamepad input enabled")
+else()
+  message(STATUS "SDL2 not found: viscera-sim builds without gamepad input")
 endif()

@@ -25,12 +25,11 @@ LabelBody mesh_label_body(const core::LabelMap& labels, const LabelBodyOptions& 
     return surface;
   };
   std::future<LabelSurface> surface;
+  // The bar follows Mesh_3; the surface thread reports to a Progress of its own, cancelled
+  // when the tets end with an error or a cancellation.
+  core::Progress quiet;
   if (options.concurrent_surface) {
-    // The bar follows Mesh_3; the surface thread reports to a Progress of its own.
-    surface = std::async(std::launch::async, [&] {
-      core::Progress quiet;
-      return make_surface(quiet);
-    });
+    surface = std::async(std::launch::async, [&] { return make_surface(quiet); });
   } else {
     result.surface = make_surface(progress);
   }
@@ -38,6 +37,7 @@ LabelBody mesh_label_body(const core::LabelMap& labels, const LabelBodyOptions& 
   try {
     result.body = mesh_label_map(labels, options.tets, what, progress, &result.criteria);
   } catch (...) {
+    quiet.cancel();
     if (surface.valid()) surface.wait();
     throw;
   }

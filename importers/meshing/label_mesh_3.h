@@ -4,6 +4,7 @@
 /// units instantiate it, sequential and parallel, so each compiles once and in parallel.
 
 #include <array>
+#include <atomic>
 #include <map>
 #include <vector>
 
@@ -25,6 +26,8 @@ struct Mesh3Input {
   bool exude = true;
   int threads = 1;
   unsigned seed = 1;
+  /// Set (from another thread) to stop refinement early; the output is then incomplete.
+  std::atomic<bool>* stop = nullptr;
 };
 
 /// Tets of the complex, positively oriented in the crop frame, with their subdomain labels.

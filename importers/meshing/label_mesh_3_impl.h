@@ -88,9 +88,13 @@ Mesh3Output run_mesh_3(const Mesh3Input& input) {
       params::facet_distance = input.facet_distance_mm,
       params::cell_radius_edge_ratio = input.cell_radius_edge_ratio, params::cell_size = cell_size);
 
+  // Mesh_3 polls the stop flag between refinement steps (CGAL's own cancellation hook).
+  CGAL::parameters::internal::Mesh_3_options options;
+  options.pointer_to_stop_atomic_boolean = input.stop;
   C3t3 c3t3 = CGAL::make_mesh_3<C3t3>(domain, criteria, params::no_perturb(), params::no_exude(),
-                                      params::no_lloyd(), params::no_odt());
-  if (input.exude) CGAL::exude_mesh_3(c3t3, params::time_limit = 0);
+                                      params::no_lloyd(), params::no_odt(), options);
+  const bool stopped = input.stop != nullptr && input.stop->load();
+  if (input.exude && !stopped) CGAL::exude_mesh_3(c3t3, params::time_limit = 0);
 
   const Triangulation& triangulation = c3t3.triangulation();
   const auto point_of = triangulation.geom_traits().construct_point_3_object();

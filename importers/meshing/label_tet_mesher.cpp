@@ -1,7 +1,10 @@
 #include "importers/meshing/label_tet_mesher.h"
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
+#include <thread>
 
 #include "core/error.h"
 #include "importers/meshing/label_crop.h"
@@ -94,8 +97,27 @@ core::TetMesh mesh_label_map(const core::LabelMap& labels, const LabelTetMeshing
   input.exude = options.exude;
   input.threads = options.threads;
   input.seed = options.seed;
-  const detail::Mesh3Output output = options.threads > 1 ? detail::run_mesh_3_parallel(input)
-                                                         : detail::run_mesh_3_sequential(input);
+  // Cancel reaches Mesh_3 through its stop flag, which a watcher sets from the progress.
+  std::atomic<bool> stop{false};
+  input.stop = &stop;
+  std::atomic<bool> done{false};
+  std::thread watcher([&] {
+    while (!done.load()) {
+      if (progress.cancelled()) stop.store(true);
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+  });
+  detail::Mesh3Output output;
+  try {
+    output = options.threads > 1 ? detail::run_mesh_3_parallel(input)
+                                 : detail::run_mesh_3_sequential(input);
+  } catch (...) {
+    done.store(true);
+    watcher.join();
+    throw;
+  }
+  done.store(true);
+  watcher.join();
   progress.step();
   if (output.tets.empty()) {
     throw core::ValidationError(

@@ -12,6 +12,10 @@
 
 #include "core/error.h"
 #include "core/package/scenario_package.h"
+#include "simulator/app/live_inputs.h"
+#include "simulator/app/session_output.h"
+#include "simulator/input/input_spec.h"
+#include "simulator/input/live_session.h"
 #include "simulator/report/html_report.h"
 #include "simulator/session/headless_session.h"
 #include "simulator/session/manual_control.h"
@@ -22,6 +26,9 @@
 namespace {
 
 namespace fs = std::filesystem;
+using viscera::app::publish;
+using viscera::app::read_json_file;
+using viscera::app::write_html;
 using viscera::sim::SessionReport;
 
 struct RunOptions {
@@ -35,84 +42,14 @@ struct RunOptions {
   std::string snapshot;         ///< PNG of the endoscopic view (offscreen)
   double snapshot_time = -1.0;  ///< s; negative: after the run
   int width = 1280, height = 720;
-  bool plain_optics = false;  ///< no distortion, depth of field or field stop
-  double optics = -1.0;       ///< ° of the angled optics; negative: the script's or scenario's
-  bool html = false;          ///< also write report.html with its plots (needs X)
-  std::string reference;      ///< an expert's report.json to compare against
+  bool plain_optics = false;   ///< no distortion, depth of field or field stop
+  double optics = -1.0;        ///< ° of the angled optics; negative: the script's or scenario's
+  bool html = false;           ///< also write report.html with its plots (needs X)
+  std::string reference;       ///< an expert's report.json to compare against
+  std::string input;           ///< keyboard | gamepad | udp:PORT | trace:FILE | script:FILE
+  std::string device;          ///< udp:PORT (the same as --input udp:PORT)
+  double render_scale = -1.0;  ///< lens pass scene resolution; negative: 0.5 in a window, else 1
 };
-
-/// Writes `text` to `path` through a temporary sibling, so a reader never sees half a report.
-void write_atomically(const fs::path& path, const std::string& text) {
-  fs::create_directories(path.parent_path());
-  const fs::path temporary = path.string() + ".partial";
-  {
-    std::ofstream out(temporary, std::ios::binary);
-    out << text;
-    if (!out) throw viscera::core::OutputError("cannot write the report", {path.string(), "", ""});
-  }
-  fs::rename(temporary, path);
-}
-
-/// Reads a JSON document; throws core::InputError naming the file.
-nlohmann::json read_json_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw viscera::core::InputError("cannot open", {path, "", ""});
-  try {
-    return nlohmann::json::parse(in);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw viscera::core::InputError(
-        "not valid JSON (syntax error at byte " + std::to_string(e.byte) + ")", {path, "", ""});
-  }
-}
-
-/// Writes report.json into `report_dir` (if given) and prints the summary or the JSON.
-/// Writes report.html and its plots into `folder` (offscreen VTK charts: needs an X server).
-std::string write_html(const nlohmann::json& json, const std::string& reference,
-                       const fs::path& folder) {
-  nlohmann::json expert;
-  if (!reference.empty()) {
-    expert = read_json_file(reference);
-    if (!expert.is_object() || expert.value("format", std::string()) != "viscera-session-report")
-      throw viscera::core::InputError("is not a viscera session report", {reference, "", ""});
-  }
-  const auto written =
-      viscera::report::write_html_report(json, reference.empty() ? nullptr : &expert, folder);
-  return written.front().string();
-}
-
-void publish(const SessionReport& report, const std::string& report_dir, bool as_json,
-             bool html = false, const std::string& reference = "") {
-  const nlohmann::json json = viscera::sim::report_to_json(report);
-  std::string report_path;
-  if (!report_dir.empty()) {
-    const fs::path path = fs::absolute(report_dir) / "report.json";
-    write_atomically(path, json.dump(2) + "\n");
-    report_path = path.string();
-    if (html) report_path += "\nhtml " + write_html(json, reference, path.parent_path());
-  }
-  if (as_json) {
-    std::cout << json.dump(2) << "\n";
-    return;
-  }
-  std::cout << "simulated " << report.simulated_time << " s in " << report.steps << " steps ("
-            << report.wall_time << " s wall, " << report.substeps << " substeps per step)\n"
-            << "max displacement " << report.max_displacement << " m\n";
-  if (report.has_instrument) {
-    std::cout << "instrument path " << report.metrics.path_length() << " m, "
-              << report.metrics.contacts() << " contacts, max force " << report.metrics.max_force()
-              << " N, surface seen " << 100.0 * report.metrics.surface_seen() << " %, score "
-              << report.score << "\n";
-  }
-  for (const auto& task : report.tasks) {
-    std::cout << "task " << task.id << ": " << task.status
-              << (task.note.empty() ? "" : " (" + task.note + ")") << "\n";
-  }
-  std::cout << "ended: " << report.end_reason << "\n";
-  for (const auto& event : report.events)
-    std::cout << event.time << " s  " << event.kind << ": " << event.message << "\n";
-  std::cout << "final state hash " << report.final_state_hash << "\n";
-  if (!report_path.empty()) std::cout << "report " << report_path << "\n";
-}
 
 /// The trace that replays `report`'s session.
 viscera::sim::SessionTrace make_trace(const RunOptions& options,
@@ -140,26 +77,58 @@ viscera::sim::SessionTrace make_trace(const RunOptions& options,
 /// The view of a session, offscreen for snapshots and videos.
 std::unique_ptr<viscera::view::EndoscopicView> make_view(const viscera::core::Scenario& scenario,
                                                          const std::string& package,
-                                                         const RunOptions& options,
-                                                         bool offscreen) {
+                                                         const RunOptions& options, bool offscreen,
+                                                         const std::string& bindings = "") {
   viscera::view::ViewOptions view;
   view.width = options.width;
   view.height = options.height;
   view.offscreen = offscreen;
   view.lens_effects = !options.plain_optics;
-  if (!offscreen) view.bindings = viscera::sim::ManualControl::bindings_text();
+  // A live window needs its frame rate; snapshots and videos take their time for full detail.
+  view.render_scale = options.render_scale > 0.0 ? options.render_scale : (offscreen ? 1.0 : 0.5);
+  if (!offscreen) view.bindings = bindings;
   return std::make_unique<viscera::view::EndoscopicView>(scenario, package, view);
 }
 
-int run(const RunOptions& options) {
+/// The input source of a run: --device, else --input, else --script, else the keyboard.
+viscera::sim::InputSpec input_spec(RunOptions& options) {
+  using viscera::sim::InputKind;
+  viscera::sim::InputSpec spec;
+  if (!options.device.empty()) {
+    spec = viscera::sim::parse_input_spec(options.device);
+    if (spec.kind != InputKind::Udp)
+      throw viscera::core::UsageError("--device takes udp:PORT (see --input for other sources)");
+  } else if (!options.input.empty()) {
+    spec = viscera::sim::parse_input_spec(options.input);
+  }
+  if (spec.kind == InputKind::Script) options.script = spec.file;
+  if (!options.script.empty() && spec.kind != InputKind::Script &&
+      (!options.input.empty() || !options.device.empty()))
+    throw viscera::core::UsageError("--script and --input/--device name two inputs; give one");
+  if (!options.script.empty()) spec = {InputKind::Script, 0, options.script};
+  return spec;
+}
+
+int run(RunOptions options) {
+  using viscera::sim::InputKind;
   if (options.headless && !options.snapshot.empty()) {
     throw viscera::core::UsageError(
         "--snapshot renders the endoscopic view, which a --headless session never opens");
   }
+  const viscera::sim::InputSpec spec = input_spec(options);
+  const bool live = spec.kind == InputKind::Keyboard || spec.kind == InputKind::Gamepad ||
+                    spec.kind == InputKind::Udp;
+  if (live && spec.kind != InputKind::Keyboard && !options.snapshot.empty())
+    throw viscera::core::UsageError("--snapshot runs at full speed; a live input cannot");
   viscera::core::Scenario scenario = viscera::core::read_package(options.package);
-  // The optics: --optics, else the script's "optics_angle", else the scenario's instrument.
+  // A recorded trace replayed as the input brings its own instrument settings.
+  std::optional<viscera::sim::SessionTrace> recorded;
+  if (spec.kind == InputKind::Trace) recorded = viscera::sim::read_trace(spec.file);
+  // The optics: --optics, else the trace's or script's, else the scenario's instrument.
   if (options.optics >= 0.0) {
     scenario.session.instrument.optics_angle = options.optics;
+  } else if (recorded) {
+    scenario.session.instrument.optics_angle = recorded->optics_angle;
   } else if (!options.script.empty()) {
     const nlohmann::json stated = read_json_file(options.script);
     if (stated.is_object() && stated.contains("optics_angle") && stated["optics_angle"].is_number())
@@ -169,6 +138,7 @@ int run(const RunOptions& options) {
   run.package = fs::absolute(options.package).string();
   run.duration = options.duration > 0.0 ? options.duration : scenario.session.duration_limit;
   std::optional<viscera::sim::ScriptedTrajectory> script;
+  std::unique_ptr<viscera::sim::InstrumentInput> replayed;
   nlohmann::json script_json;
   const double optics_angle = scenario.session.instrument.optics_angle;
   if (!options.script.empty()) {
@@ -182,30 +152,54 @@ int run(const RunOptions& options) {
     run.perforation_depth = script->perforation_depth();
     run.force_warning = script->force_warning();
     if (options.duration <= 0.0) run.duration = script->duration();
+  } else if (recorded && (!recorded->body.empty() || !recorded->script.is_null() ||
+                          !recorded->inputs.empty())) {
+    replayed = recorded->input();
+    script_json = recorded->script;
+    run.instrument = replayed.get();
+    run.instrument_body = recorded->body;
+    run.instrument_stiffness = recorded->stiffness;
+    run.perforation_depth = recorded->perforation_depth;
+    run.force_warning = recorded->force_warning;
   }
+  if (recorded && options.duration <= 0.0) run.duration = recorded->duration;
   run.record_inputs = !options.record.empty() || !options.report_dir.empty() || !options.headless;
   SessionReport report;
-  if (options.headless) {
+  const viscera::sim::InstrumentState start = viscera::sim::starting_pose(scenario, optics_angle);
+  if (options.headless && spec.kind == InputKind::Udp) {
+    viscera::app::LiveInputs inputs = viscera::app::open_live_input(spec, start, true);
+    std::cerr << inputs.status << "\n";
+    report = viscera::sim::run_live(scenario, run, *inputs.live);
+  } else if (options.headless) {
+    // Without --input a headless run has no instrument (the body settles under gravity);
+    // --input keyboard or gamepad asks for a window.
+    if (run.instrument == nullptr && !options.input.empty())
+      viscera::app::open_live_input(spec, start, true);  // throws UsageError
     report = viscera::sim::run_headless(scenario, run);
   } else if (!options.snapshot.empty()) {
     // Without a script the instrument rests at the starting pose, where the trainee would
     // begin.
     std::optional<viscera::sim::RecordedInput> resting;
-    if (!script) {
-      resting.emplace(std::vector<std::pair<long long, viscera::sim::InstrumentState>>{
-          {0, viscera::sim::starting_pose(scenario, optics_angle)}});
+    if (run.instrument == nullptr) {
+      resting.emplace(std::vector<std::pair<long long, viscera::sim::InstrumentState>>{{0, start}});
       run.instrument = &*resting;
     }
     auto view = make_view(scenario, run.package, options, true);
     report = viscera::view::run_with_snapshot(scenario, run, *view, options.snapshot,
                                               options.snapshot_time);
+  } else if (live) {
+    // The trainee drives the instrument (keyboard and mouse, a gamepad or a haptic device),
+    // starting where the scenario's first landmark can be seen.
+    viscera::app::LiveInputs inputs = viscera::app::open_live_input(spec, start, false);
+    std::cerr << inputs.status << "\n";
+    auto view = make_view(scenario, run.package, options, false, inputs.bindings);
+    report =
+        viscera::view::run_in_window(scenario, run, *view, inputs.manual.get(), inputs.live.get());
   } else {
-    // The trainee drives the instrument from the keyboard and mouse, starting where the
-    // scenario's first landmark can be seen, unless a script drives it.
-    auto view = make_view(scenario, run.package, options, false);
-    std::optional<viscera::sim::ManualControl> manual;
-    if (!script) manual.emplace(viscera::sim::starting_pose(scenario, optics_angle));
-    report = viscera::view::run_in_window(scenario, run, *view, manual ? &*manual : nullptr);
+    auto view = make_view(scenario, run.package, options, false,
+                          "Esc or X: abort (the " + std::string(script ? "script" : "trace") +
+                              " drives the instrument)");
+    report = viscera::view::run_in_window(scenario, run, *view, nullptr);
   }
   const viscera::sim::SessionTrace trace =
       make_trace(options, run, script_json, optics_angle, report);
@@ -289,6 +283,13 @@ int main(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber);
   run_command->add_option("--script", options.script,
                           "Scripted instrument trajectory (viscera-script JSON)");
+  run_command->add_option(
+      "--input", options.input,
+      "What drives the instrument: keyboard (default), gamepad (SDL2 pad plus the keyboard), "
+      "udp:PORT (a haptic device sending pose packets to 127.0.0.1:PORT; 0 picks a port), "
+      "trace:FILE (a recorded session) or script:FILE");
+  run_command->add_option("--device", options.device,
+                          "udp:PORT: a haptic device drives the instrument (as --input udp:PORT)");
   run_command->add_option("--record", options.record, "Write the session's trace here for replay");
   run_command->add_option("--report", options.report_dir, "Folder for report.json");
   run_command->add_flag("--json", options.json, "Print the report as JSON");
@@ -316,6 +317,11 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0.0, 90.0));
   run_command->add_flag("--plain-optics", options.plain_optics,
                         "No barrel distortion, depth of field or round field stop");
+  run_command
+      ->add_option("--render-scale", options.render_scale,
+                   "Resolution of the scene under the lens pass as a fraction of the view "
+                   "(default 0.5 in the window, 1 for snapshots)")
+      ->check(CLI::Range(0.25, 1.0));
   run_command->callback([&] { exit_code = run(options); });
 
   std::string trace;

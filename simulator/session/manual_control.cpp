@@ -1,6 +1,7 @@
 #include "simulator/session/manual_control.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <map>
 
 #include "core/mesh/surface_mesh.h"
@@ -81,12 +82,17 @@ void ManualControl::roll(double angle) {
 
 const InstrumentState& ManualControl::advance(double dt) {
   const auto held = [&](ManualCommand c) { return held_[static_cast<int>(c)] ? 1.0 : 0.0; };
-  const double along = held(ManualCommand::Advance) - held(ManualCommand::Withdraw);
-  state_.tip += along * rates_.advance * dt * state_.axis;
-  const double yaw = held(ManualCommand::SwingLeft) - held(ManualCommand::SwingRight);
-  const double pitch = held(ManualCommand::SwingUp) - held(ManualCommand::SwingDown);
+  const auto rate = [](double keys, double analog) { return std::clamp(keys + analog, -1.0, 1.0); };
+  const double along =
+      rate(held(ManualCommand::Advance) - held(ManualCommand::Withdraw), analog_.advance);
+  if (along != 0.0) state_.tip += along * rates_.advance * dt * state_.axis;
+  const double yaw =
+      rate(held(ManualCommand::SwingLeft) - held(ManualCommand::SwingRight), analog_.yaw);
+  const double pitch =
+      rate(held(ManualCommand::SwingUp) - held(ManualCommand::SwingDown), analog_.pitch);
   if (yaw != 0.0 || pitch != 0.0) swing(yaw * rates_.swing * dt, pitch * rates_.swing * dt);
-  const double spin = held(ManualCommand::RollLeft) - held(ManualCommand::RollRight);
+  const double spin =
+      rate(held(ManualCommand::RollLeft) - held(ManualCommand::RollRight), analog_.roll);
   if (spin != 0.0) roll(spin * rates_.roll * dt);
   return state_;
 }

@@ -37,7 +37,17 @@ struct ManualRates {
   double wheel = 0.001;   ///< m per wheel notch
 };
 
-/// Keyboard and mouse instrument control.
+/// Proportional motion from an analogue input (a gamepad's sticks and triggers): each in
+/// [−1, 1] as a fraction of the ManualRates, added to the held keys' ±1 and clamped to ±1.
+struct AnalogMotion {
+  double advance = 0.0;  ///< + advance, − withdraw
+  double yaw = 0.0;      ///< + swing left (as SwingLeft)
+  double pitch = 0.0;    ///< + swing up (as SwingUp)
+  double roll = 0.0;     ///< + roll left (as RollLeft)
+  bool operator==(const AnalogMotion&) const = default;
+};
+
+/// Keyboard, mouse and gamepad instrument control.
 class ManualControl {
  public:
   explicit ManualControl(const InstrumentState& start, ManualRates rates = {});
@@ -55,6 +65,9 @@ class ManualControl {
   /// Wheel notches (positive: forward) move the tip along the shaft.
   void wheel(int notches);
 
+  /// Sets the proportional motion that acts in advance() until set again.
+  void set_analog(const AnalogMotion& motion) { analog_ = motion; }
+
   /// Applies the held motions for `dt` s and returns the state.
   const InstrumentState& advance(double dt);
   const InstrumentState& state() const { return state_; }
@@ -66,6 +79,7 @@ class ManualControl {
   InstrumentState state_;
   ManualRates rates_;
   bool held_[8] = {};
+  AnalogMotion analog_;
 };
 
 /// Where a manual session starts: 3 mm off the landmark "cervix-internal-os" (else the first

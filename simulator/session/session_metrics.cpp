@@ -51,9 +51,9 @@ nlohmann::json SessionMetrics::to_json() const {
           {"surface_seen", surface_seen()},
           {"view_quality", view_quality()},
           {"inflow_open_time", inflow_time_},
-          // The fluids issue fills this from the distension-fluid balance; until then no
-          // fluid is simulated and the report says so with null.
-          {"distension_fluid_used", nullptr},
+          // m³ from the distension-fluid balance; null when the scenario simulates no fluid.
+          {"distension_fluid_used",
+           fluid_simulated_ ? nlohmann::json(fluid_used_) : nlohmann::json(nullptr)},
           {"tasks_completed", tasks_completed_},
           {"tasks_available", tasks_available_}};
 }

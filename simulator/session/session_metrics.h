@@ -33,6 +33,12 @@ class SessionMetrics {
     coverage_start_ = at_start;
     coverage_end_ = at_end;
   }
+  /// Adds `volume` m³ of distension fluid delivered by the pump (DistensionBalance): from the
+  /// first call on the period reports the fluid used instead of null.
+  void record_fluid(double volume) {
+    fluid_used_ += volume;
+    fluid_simulated_ = true;
+  }
   void set_tasks(int completed, int available) {
     tasks_completed_ = completed;
     tasks_available_ = available;
@@ -66,7 +72,8 @@ class SessionMetrics {
   std::vector<core::Vec3> milestones_;
   double duration_ = 0.0, path_length_ = 0.0, contact_time_ = 0.0, force_time_ = 0.0,
          max_force_ = 0.0;
-  double view_time_ = 0.0, good_view_time_ = 0.0, inflow_time_ = 0.0;
+  double view_time_ = 0.0, good_view_time_ = 0.0, inflow_time_ = 0.0, fluid_used_ = 0.0;
+  bool fluid_simulated_ = false;
   double coverage_start_ = 0.0, coverage_end_ = 0.0;
   int contacts_ = 0, tasks_completed_ = 0, tasks_available_ = 0;
   bool was_in_contact_ = false;

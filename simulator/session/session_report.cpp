@@ -56,6 +56,19 @@ nlohmann::json path_json(const SessionReport& r) {
   return path;
 }
 
+/// The distension fluid's balance in m³ and Pa, or null without fluid.
+nlohmann::json fluid_json(const SessionReport& r) {
+  if (!r.fluid) return nullptr;
+  const FluidTotals& f = *r.fluid;
+  return {{"used", f.used},
+          {"drained", f.drained},
+          {"absorbed", f.absorbed},
+          {"deficit", f.deficit()},
+          {"max_pressure", f.max_pressure},
+          {"final_pressure", r.final_cavity_pressure},
+          {"time_above_absorption_threshold", f.time_above_threshold}};
+}
+
 }  // namespace
 
 nlohmann::json report_to_json(const SessionReport& r) {
@@ -123,6 +136,7 @@ nlohmann::json report_to_json(const SessionReport& r) {
           {"metrics", r.metrics.to_json()},
           {"score", r.score},
           {"path", path_json(r)},
+          {"fluid", fluid_json(r)},
           {"end_reason", r.end_reason},
           {"events", events},
           {"checkpoints", r.checkpoints.size()},

@@ -5,10 +5,12 @@
 /// As JSON: format "viscera-session-report", version 2, schema docs/session-report.schema.json.
 
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "simulator/fluid/distension_balance.h"
 #include "simulator/session/instrument_state.h"
 #include "simulator/session/session_metrics.h"
 #include "simulator/session/task_monitor.h"
@@ -92,8 +94,11 @@ struct SessionReport {
   /// recorded): enough to replay the session exactly.
   std::vector<std::pair<long long, InstrumentState>> inputs;
   std::vector<SessionEvent> events;
-  std::string end_reason =
-      "duration";  ///< "duration", "time-limit", "completed", "perforation", "abort"
+  /// The distension fluid's balance (m³, Pa), when the scenario simulates it.
+  std::optional<FluidTotals> fluid;
+  double final_cavity_pressure = 0.0;   ///< Pa
+  std::string end_reason = "duration";  ///< "duration", "time-limit", "completed", "perforation",
+                                        ///< "fluid-overload", "abort"
 };
 
 /// Score of a period in [0, 100]: the mean of task completion (completed over available),

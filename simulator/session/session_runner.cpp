@@ -84,6 +84,7 @@ SessionRunner::SessionRunner(const core::Scenario& scenario, const HeadlessRunOp
     if (options.record_inputs) report_.inputs.emplace_back(0, state_);
     report_.metrics.start_at(state_.tip);
     report_.has_instrument = true;
+    if (scenario.fluid.enabled) fluid_.emplace(scenario.fluid);
     const DeformableBody& body = world_.bodies()[static_cast<std::size_t>(instrument_body_)];
     surface_object = body.name();
     wall_ = std::make_unique<SurfaceBvh>(body.surface_faces(), body.rest_positions());
@@ -276,6 +277,7 @@ void SessionRunner::step(const InstrumentState& input) {
     const bool contact = world_.instrument_in_contact();
     const double dt = world_.time_step();
     report_.metrics.record(state_.tip, force, contact, dt, state_.inflow);
+    balance_fluid(dt);
     if (current_ >= 0 && current_ < static_cast<int>(report_.procedure_steps.size())) {
       report_.procedure_steps[static_cast<std::size_t>(current_)].metrics.record(
           state_.tip, force, contact, dt, state_.inflow);
@@ -393,6 +395,22 @@ void SessionRunner::end(const std::string& reason, const std::string& message) {
     report_.events.push_back({world_.time(), reason, message});
 }
 
+void SessionRunner::balance_fluid(double dt) {
+  if (!fluid_) return;
+  const double used_before = fluid_->totals().used;
+  fluid_->step(state_.inflow, state_.outflow, dt);
+  const double used = fluid_->totals().used - used_before;
+  report_.metrics.record_fluid(used);
+  if (current_ >= 0 && current_ < static_cast<int>(report_.procedure_steps.size()))
+    report_.procedure_steps[static_cast<std::size_t>(current_)].metrics.record_fluid(used);
+  if (fluid_->overloaded() && !finished_) {
+    end("fluid-overload", "the fluid deficit reached " +
+                              std::to_string(fluid_->totals().deficit() * 1e6) +
+                              " ml, the overload limit of " +
+                              std::to_string(fluid_->fluid().overload_volume * 1e6) + " ml");
+  }
+}
+
 SessionReport SessionRunner::finish() {
   if (current_ >= 0 && current_ < static_cast<int>(report_.procedure_steps.size())) {
     auto& metrics = report_.procedure_steps[static_cast<std::size_t>(current_)].metrics;
@@ -414,6 +432,10 @@ SessionReport SessionRunner::finish() {
   report_.substeps = world_.substeps();  // after attach_instrument, whose spring may add some
   report_.simulated_time = world_.time();
   report_.final_state_hash = world_.state_hash();
+  if (fluid_) {
+    report_.fluid = fluid_->totals();
+    report_.final_cavity_pressure = fluid_->pressure();
+  }
   report_.max_penetration = world_.max_penetration();
   report_.contact_stiffness =
       world_.bodies().size() > 1 ? scenario_.session.contact_stiffness : 0.0;

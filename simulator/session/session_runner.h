@@ -11,6 +11,7 @@
 
 #include "core/scenario/scenario.h"
 #include "simulator/camera/surface_coverage.h"
+#include "simulator/fluid/distension_balance.h"
 #include "simulator/session/instrument_input.h"
 #include "simulator/session/session_report.h"
 #include "simulator/world/world.h"
@@ -97,6 +98,12 @@ class SessionRunner {
   std::unique_ptr<SurfaceBvh> wall_;  ///< the instrument body's surface at rest, for wall thickness
   std::vector<double> thickness_;     ///< per body surface triangle, −1 until measured
   double started_wall_clock_ = 0.0;
+  /// The cavity's distension fluid, when the scenario enables it and an instrument drives the
+  /// valves.
+  std::optional<DistensionBalance> fluid_;
+  /// Feeds the valves of one step of `dt` s to the fluid balance and ends the session on
+  /// fluid overload.
+  void balance_fluid(double dt);
 };
 
 }  // namespace viscera::sim

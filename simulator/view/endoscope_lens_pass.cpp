@@ -14,6 +14,8 @@
 #include <vtkTextureObject.h>
 #include <vtk_glew.h>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace viscera::view {
@@ -28,14 +30,15 @@ namespace {
 const char* kDeclarations = R"(
 uniform sampler2D colour;
 uniform sampler2D depth;
-uniform vec2 pixel;          // size of one pixel in texture coordinates
-uniform float aspect;        // width / height
+uniform float aspect;        // width / height of the output
+uniform float sceneAspect;   // width / height of the rendered scene (1: the field's square)
 uniform float nearPlane;
 uniform float farPlane;
 uniform float distortion;    // k of r_scene = r (1 + k r^2)
 uniform float focusDioptres; // 1 / focus distance, 1/m
 uniform float blurPerDioptre;
 uniform float maxBlur;       // px
+uniform float texelsPerPixel; // scene texels per output pixel (the render scale)
 uniform int fieldStop;
 float eyeDepth(vec2 uv) {
   float d = texture(depth, uv).r;
@@ -51,23 +54,16 @@ const char* kBody = R"(
   if (fieldStop == 1 && r2 > 1.0) { gl_FragData[0] = vec4(0.0, 0.0, 0.0, 1.0); return; }
   vec2 q = p * (1.0 + distortion * r2);
   // The field edge (r = 1, q = 1 + k) meets the top of the rendered image.
-  vec2 uv = q / ((1.0 + distortion) * 2.0 * vec2(aspect, 1.0)) + 0.5;
+  vec2 uv = q / ((1.0 + distortion) * 2.0 * vec2(sceneAspect, 1.0)) + 0.5;
   if (uv.x < 0.0 || uv.x > 1.0 || uv.y < 0.0 || uv.y > 1.0) {
     gl_FragData[0] = vec4(0.0, 0.0, 0.0, 1.0); return;
   }
   float z = eyeDepth(uv);
   float radius = min(maxBlur, blurPerDioptre * abs(1.0 / z - focusDioptres));
-  vec4 sum = texture(colour, uv);
-  float weight = 1.0;
-  if (radius > 0.5) {
-    // One ring of eight taps at three quarters of the circle of confusion.
-    for (int i = 0; i < 8; ++i) {
-      float a = float(i) * 0.785398;
-      sum += texture(colour, uv + 0.75 * radius * vec2(cos(a), sin(a)) * pixel);
-      weight += 1.0;
-    }
-  }
-  vec3 rgb = sum.rgb / weight;
+  // The circle of confusion as one trilinear fetch from the scene's mipmap chain: level L
+  // averages 2^L texels, so L = log2(diameter in scene texels) blurs over about the disc.
+  float lod = log2(max(1.0, 2.0 * radius * texelsPerPixel));
+  vec3 rgb = textureLod(colour, uv, lod).rgb;
   // The rod lens loses light towards the rim of the field (cos^4 law, gently).
   float fall = 1.0 - 0.35 * r2 * r2;
   gl_FragData[0] = vec4(rgb * fall, 1.0);
@@ -89,17 +85,25 @@ void EndoscopeLensPass::Render(const vtkRenderState* state) {
   int origin[2];
   renderer->GetTiledSizeAndOrigin(&size[0], &size[1], &origin[0], &origin[1]);
   const int width = size[0], height = size[1];
+  // The scene's resolution: the output's, scaled down by render_scale.
+  const double scale = std::clamp(render_scale, 0.25, 1.0);
+  // With the field stop only the centred square the round field spans is ever sampled (the
+  // field's edge maps to the top and bottom of the scene), so only that square is rendered.
+  const bool square = field_stop && width >= height;
+  const int scene_height = std::max(1, static_cast<int>(std::lround(height * scale)));
+  const int scene_width =
+      square ? scene_height : std::max(1, static_cast<int>(std::lround(width * scale)));
 
   if (!colour_) {
     colour_ = vtkSmartPointer<vtkTextureObject>::New();
     colour_->SetContext(window);
   }
-  if (colour_->GetWidth() != static_cast<unsigned>(width) ||
-      colour_->GetHeight() != static_cast<unsigned>(height)) {
-    colour_->Create2D(static_cast<unsigned>(width), static_cast<unsigned>(height), 4,
+  if (colour_->GetWidth() != static_cast<unsigned>(scene_width) ||
+      colour_->GetHeight() != static_cast<unsigned>(scene_height)) {
+    colour_->Create2D(static_cast<unsigned>(scene_width), static_cast<unsigned>(scene_height), 4,
                       VTK_UNSIGNED_CHAR, false);
   }
-  colour_->SetMinificationFilter(vtkTextureObject::Linear);
+  colour_->SetMinificationFilter(vtkTextureObject::LinearMipmapLinear);
   colour_->SetMagnificationFilter(vtkTextureObject::Linear);
   colour_->SetWrapS(vtkTextureObject::ClampToEdge);
   colour_->SetWrapT(vtkTextureObject::ClampToEdge);
@@ -107,9 +111,9 @@ void EndoscopeLensPass::Render(const vtkRenderState* state) {
     depth_ = vtkSmartPointer<vtkTextureObject>::New();
     depth_->SetContext(window);
   }
-  if (depth_->GetWidth() != static_cast<unsigned>(width) ||
-      depth_->GetHeight() != static_cast<unsigned>(height)) {
-    depth_->AllocateDepth(static_cast<unsigned>(width), static_cast<unsigned>(height),
+  if (depth_->GetWidth() != static_cast<unsigned>(scene_width) ||
+      depth_->GetHeight() != static_cast<unsigned>(scene_height)) {
+    depth_->AllocateDepth(static_cast<unsigned>(scene_width), static_cast<unsigned>(scene_height),
                           vtkTextureObject::Float32);
   }
   if (!framebuffer_) {
@@ -117,9 +121,28 @@ void EndoscopeLensPass::Render(const vtkRenderState* state) {
     framebuffer_->SetContext(window);
   }
 
+  // The scene into the colour and depth textures at their size, through the renderer's own
+  // camera with the textures' aspect ratio (vtkDepthImageProcessingPass::RenderDelegate would
+  // render through a copy of the camera that drops an explicit aspect ratio).
+  vtkCamera* camera = renderer->GetActiveCamera();
+  const bool explicit_aspect = camera->GetUseExplicitAspectRatio();
+  const double explicit_ratio = camera->GetExplicitAspectRatio();
+  camera->SetUseExplicitAspectRatio(true);
+  camera->SetExplicitAspectRatio(static_cast<double>(scene_width) / scene_height);
   gl->PushFramebufferBindings();
-  RenderDelegate(state, width, height, width, height, framebuffer_, colour_, depth_);
+  vtkRenderState scene(renderer);
+  scene.SetPropArrayAndCount(state->GetPropArray(), state->GetPropArrayCount());
+  scene.SetFrameBuffer(framebuffer_);
+  framebuffer_->Bind();
+  framebuffer_->AddColorAttachment(0, colour_);
+  framebuffer_->ActivateDrawBuffer(0);
+  framebuffer_->AddDepthAttachment(depth_);
+  framebuffer_->StartNonOrtho(scene_width, scene_height);
+  DelegatePass->Render(&scene);
+  NumberOfRenderedProps += DelegatePass->GetNumberOfRenderedProps();
   gl->PopFramebufferBindings();
+  camera->SetExplicitAspectRatio(explicit_ratio);
+  camera->SetUseExplicitAspectRatio(explicit_aspect);
 
   if (!quad_) {
     std::string fragment = vtkOpenGLRenderUtilities::GetFullScreenQuadFragmentShaderTemplate();
@@ -141,14 +164,24 @@ void EndoscopeLensPass::Render(const vtkRenderState* state) {
   gl->vtkglDisable(GL_DEPTH_TEST);
   gl->vtkglViewport(origin[0], origin[1], width, height);
   gl->vtkglScissor(origin[0], origin[1], width, height);
+  vtkOpenGLState::ScopedglEnableDisable scissor_test(gl, GL_SCISSOR_TEST);
+  gl->vtkglEnable(GL_SCISSOR_TEST);
+  if (square) {
+    // Black outside the field's square (a clear costs little), the shader only inside it.
+    gl->vtkglClearColor(0.0, 0.0, 0.0, 1.0);
+    gl->vtkglClear(GL_COLOR_BUFFER_BIT);
+    gl->vtkglScissor(origin[0] + (width - height) / 2, origin[1], height, height);
+  }
 
   colour_->Activate();
+  // The depth-of-field blur reads coarser levels: rebuild them from this frame (on the GPU).
+  glGenerateMipmap(GL_TEXTURE_2D);
   depth_->Activate();
   program->SetUniformi("colour", colour_->GetTextureUnit());
   program->SetUniformi("depth", depth_->GetTextureUnit());
-  const float pixel[2] = {1.0f / static_cast<float>(width), 1.0f / static_cast<float>(height)};
-  program->SetUniform2f("pixel", pixel);
   program->SetUniformf("aspect", static_cast<float>(width) / static_cast<float>(height));
+  program->SetUniformf("sceneAspect",
+                       static_cast<float>(scene_width) / static_cast<float>(scene_height));
   const double* range = renderer->GetActiveCamera()->GetClippingRange();
   program->SetUniformf("nearPlane", static_cast<float>(range[0]));
   program->SetUniformf("farPlane", static_cast<float>(range[1]));
@@ -156,8 +189,11 @@ void EndoscopeLensPass::Render(const vtkRenderState* state) {
   program->SetUniformf("focusDioptres", static_cast<float>(1.0 / focus_distance));
   program->SetUniformf("blurPerDioptre", static_cast<float>(blur_per_dioptre));
   program->SetUniformf("maxBlur", static_cast<float>(max_blur));
+  program->SetUniformf("texelsPerPixel",
+                       static_cast<float>(scene_width) / static_cast<float>(width));
   program->SetUniformi("fieldStop", field_stop ? 1 : 0);
   quad_->Render();
+  gl->vtkglScissor(origin[0], origin[1], width, height);
   depth_->Deactivate();
   colour_->Deactivate();
 }

@@ -8,7 +8,8 @@
 /// then, for every output pixel at normalised radius r (1 = the edge of the round field),
 /// samples the scene at r (1 + k r²) (the inverse of the lens's barrel mapping), blurs it over
 /// a disc whose radius grows with |1/z − 1/f| (thin-lens circle of confusion, z the eye depth
-/// and f the focus distance, both in m) and paints black outside the field.
+/// and f the focus distance, both in m) and paints black outside the field. No read-back: the
+/// scene stays in GPU textures, possibly rendered at a reduced `render_scale`.
 
 #include <vtkDepthImageProcessingPass.h>
 #include <vtkSmartPointer.h>
@@ -37,6 +38,10 @@ class EndoscopeLensPass : public vtkDepthImageProcessingPass {
   double max_blur = 6.0;
   /// Paint the outside of the round field black.
   bool field_stop = true;
+  /// Fraction of the output size at which the scene is rendered (0.25 … 1): the lens pass
+  /// resamples it anyway (distortion, blur), so 0.5 costs a quarter of the rasterisation for a
+  /// slightly softer image. Blur radii stay in output pixels.
+  double render_scale = 1.0;
 
   void Render(const vtkRenderState* state) override;
   void ReleaseGraphicsResources(vtkWindow* window) override;

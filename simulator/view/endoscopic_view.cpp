@@ -61,6 +61,7 @@ EndoscopicView::EndoscopicView(const core::Scenario& scenario, const std::filesy
     lens_->SetDelegatePass(camera);
     lens_->distortion = options.distortion;
     lens_->focus_distance = scenario.session.instrument.focus_distance;
+    lens_->render_scale = options.render_scale;
     scene_->SetPass(lens_);
   }
 

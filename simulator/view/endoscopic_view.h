@@ -32,9 +32,13 @@ struct ViewOptions {
   bool offscreen = false;          ///< render without showing a window
   bool lens_effects = true;        ///< barrel distortion, depth of field, field stop
   double distortion = 0.2;         ///< barrel coefficient k (EndoscopeLensPass)
-  std::string bindings;            ///< key bindings shown in the window ("" : none)
-  double light_intensity = 1.4;    ///< head light
-  double light_falloff = 0.03;     ///< m at which the head light has dimmed to half
+  /// With lens effects: the scene is rendered at this fraction of the size and resampled by
+  /// the lens pass (EndoscopeLensPass::render_scale; 0.5 keeps a window at ≥ 30 fps on a
+  /// software renderer, 1 for snapshots and videos).
+  double render_scale = 1.0;
+  std::string bindings;          ///< key bindings shown in the window ("" : none)
+  double light_intensity = 1.4;  ///< head light
+  double light_falloff = 0.03;   ///< m at which the head light has dimmed to half
 };
 
 /// The endoscopic image of one scenario.

@@ -115,8 +115,9 @@ void set_geometry(vtkPolyData* mesh, const std::vector<core::Vec3>& points,
     const core::Vec3 n = length > 0.0 ? core::Vec3(normals[i] / length) : core::Vec3::UnitZ();
     array->SetTuple3(static_cast<vtkIdType>(i), n.x(), n.y(), n.z());
   }
+  // Only the point and normal arrays changed: VTK re-uploads just those two vertex buffers
+  // (the index buffer and texture coordinates keep their upload, their times being older).
   array->Modified();
-  mesh->Modified();
 }
 
 vtkSmartPointer<vtkPolyData> make_mesh(const std::vector<core::Vec3>& points,
@@ -124,7 +125,9 @@ vtkSmartPointer<vtkPolyData> make_mesh(const std::vector<core::Vec3>& points,
                                        const std::vector<core::Vec2>& uvs,
                                        const std::vector<int>& weld) {
   auto mesh = vtkSmartPointer<vtkPolyData>::New();
-  mesh->SetPoints(vtkNew<vtkPoints>());
+  vtkNew<vtkPoints> positions;
+  positions->SetDataTypeToFloat();  // uploaded as is: no double-to-float pass per frame
+  mesh->SetPoints(positions);
   vtkNew<vtkCellArray> polys;
   for (const core::Triangle& t : triangles) {
     const vtkIdType ids[3] = {t[0], t[1], t[2]};

@@ -12,6 +12,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <system_error>
 
 #include "core/error.h"
@@ -19,16 +20,6 @@
 namespace viscera::view {
 
 namespace {
-
-/// The manual control seen as an instrument input (its current state at any step).
-class ManualInput final : public sim::InstrumentInput {
- public:
-  explicit ManualInput(const sim::ManualControl& control) : control_(control) {}
-  sim::InstrumentState state(long long, double) const override { return control_.state(); }
-
- private:
-  const sim::ManualControl& control_;
-};
 
 /// Keys and mouse to ManualControl commands; VTK's own bindings (wireframe, quit on 'q', …)
 /// are switched off by overriding every handler.
@@ -91,7 +82,7 @@ struct WindowLoop {
   const sim::HeadlessRunOptions* options;
   sim::SessionRunner* runner;
   EndoscopicView* view;
-  sim::ManualControl* manual;
+  sim::LiveInput* live;
   ManualStyle* style;
   vtkRenderWindowInteractor* interactor;
   std::chrono::steady_clock::time_point start;
@@ -109,9 +100,12 @@ struct WindowLoop {
         runner->end("abort", "the trainee ended the session");
         break;
       }
-      runner->step(manual != nullptr && options->instrument == nullptr
-                       ? manual->advance(dt)
-                       : scripted_state(*options, *runner));
+      if (live != nullptr) {
+        runner->step(live->next(dt));
+        live->after_step(*runner);
+      } else {
+        runner->step(scripted_state(*options, *runner));
+      }
     }
     view->update(*runner);
     view->render();
@@ -127,13 +121,17 @@ void on_timer(vtkObject*, unsigned long, void* client, void*) {
 
 sim::SessionReport run_in_window(const core::Scenario& scenario,
                                  const sim::HeadlessRunOptions& options, EndoscopicView& view,
-                                 sim::ManualControl* manual, double frame_rate) {
+                                 sim::ManualControl* manual, sim::LiveInput* live,
+                                 double frame_rate) {
   sim::HeadlessRunOptions run = options;
-  std::unique_ptr<ManualInput> manual_input;
-  if (run.instrument == nullptr && manual != nullptr) {
-    manual_input = std::make_unique<ManualInput>(*manual);
-    run.instrument = manual_input.get();
+  std::optional<sim::KeyboardInput> keyboard;
+  if (run.instrument != nullptr) {
+    live = nullptr;  // a script or a recording drives the instrument
+  } else if (live == nullptr && manual != nullptr) {
+    live = &keyboard.emplace(*manual);
   }
+  std::optional<sim::LiveInstrument> live_instrument;
+  if (live != nullptr) run.instrument = &live_instrument.emplace(*live);
   sim::SessionRunner runner(scenario, run);
 
   vtkNew<vtkRenderWindowInteractor> interactor;
@@ -143,13 +141,7 @@ sim::SessionReport run_in_window(const core::Scenario& scenario,
   interactor->SetInteractorStyle(style);
   interactor->Initialize();
 
-  WindowLoop loop{&run,
-                  &runner,
-                  &view,
-                  options.instrument == nullptr ? manual : nullptr,
-                  style,
-                  interactor,
-                  std::chrono::steady_clock::now()};
+  WindowLoop loop{&run, &runner, &view, live, style, interactor, std::chrono::steady_clock::now()};
   vtkNew<vtkCallbackCommand> timer;
   timer->SetCallback(on_timer);
   timer->SetClientData(&loop);

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/scenario/scenario.h"
+#include "simulator/input/live_input.h"
 #include "simulator/session/manual_control.h"
 #include "simulator/session/session_runner.h"
 #include "simulator/view/endoscopic_view.h"
@@ -15,12 +16,14 @@
 namespace viscera::view {
 
 /// Runs the session in the view's window in real time until it ends or the window closes
-/// (closing ends it as "abort"). With options.instrument the input drives the instrument;
-/// otherwise `manual` does, fed by the window's keys and mouse (ManualControl bindings).
-/// `frame_rate` is the rate at which the window redraws (Hz).
+/// (closing ends it as "abort"). With options.instrument the recorded or scripted input drives
+/// the instrument; otherwise `live` does (a gamepad, a device over UDP), or, without it,
+/// `manual` through the keyboard. The window's keys and mouse always feed `manual` (when
+/// given), so the keyboard works beside a gamepad. `frame_rate` is the redraw rate (Hz).
 sim::SessionReport run_in_window(const core::Scenario& scenario,
                                  const sim::HeadlessRunOptions& options, EndoscopicView& view,
-                                 sim::ManualControl* manual, double frame_rate = 30.0);
+                                 sim::ManualControl* manual, sim::LiveInput* live = nullptr,
+                                 double frame_rate = 30.0);
 
 /// Runs the session at full speed (as headless) and writes the view's frame at simulated time
 /// `at` s (negative: after the end) to `png`. Throws core::OutputError when it cannot write.

@@ -3,6 +3,7 @@
 #include "core/error.h"
 #include "core/package/scenario_package.h"
 #include "exporters/scenario_exporter.h"
+#include "studio/document/model_objects.h"
 
 namespace viscera::studio {
 
@@ -10,6 +11,7 @@ DocumentContent read_document_content(const std::filesystem::path& path, core::P
   DocumentContent content;
   content.scenario = core::read_package(path, progress);
   content.files = exporters::read_package_textures(path, content.scenario);
+  content.files.merge(read_package_models(path, content.scenario));
   return content;
 }
 

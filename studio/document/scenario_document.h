@@ -18,7 +18,8 @@
 
 namespace viscera::studio {
 
-/// Package files other than the manifest and meshes: package path → bytes.
+/// Package files other than the manifest and meshes: package path → bytes (baked texture maps,
+/// model objects' models).
 using PackageFiles = std::map<std::string, std::string>;
 
 /// A scenario with its package files, as read from or written to disk.
@@ -27,8 +28,8 @@ struct DocumentContent {
   PackageFiles files;
 };
 
-/// Reads a package folder or .vscz with its texture maps. Throws core::Error subclasses
-/// naming the file; safe to call from a worker thread.
+/// Reads a package folder or .vscz with its texture maps and model files. Throws core::Error
+/// subclasses naming the file; safe to call from a worker thread.
 DocumentContent read_document_content(const std::filesystem::path& path,
                                       core::Progress& progress = core::Progress::none());
 /// Writes a package (folder, or zipped for .vscz) atomically. Throws core::Error subclasses;
@@ -75,6 +76,7 @@ class ScenarioDocument : public QObject {
 
   // Mutators for QUndoCommands only: each emits changed().
   core::Scenario& edit_scenario() { return content_.scenario; }
+  PackageFiles& edit_files() { return content_.files; }
   void notify_changed(ChangeKind kind, const QString& id = {});
 
  signals:

@@ -4,18 +4,23 @@
 #include <QDockWidget>
 #include <QMessageBox>
 #include <QPlainTextEdit>
+#include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
 
 #include "core/error.h"
+#include "core/image/downsample.h"
 #include "core/materials/shipped_materials.h"
 #include "importers/volume/volume_reader.h"
 #include "studio/document/document_commands.h"
 #include "studio/ui/background_task.h"
 #include "studio/ui/material_panel.h"
+#include "studio/ui/organ_panels.h"
 #include "studio/ui/scene_tree.h"
 #include "studio/ui/scene_view.h"
+#include "studio/ui/segmentation_panel.h"
 #include "studio/ui/slice_views.h"
+#include "studio/ui/volume_rendering.h"
 #include "templates/template_catalog.h"
 
 namespace viscera::studio {
@@ -91,6 +96,25 @@ void MainWindow::build_docks() {
   slice_dock_->hide();
   connect(slices_, &SliceViews::changed, view_, &SceneView::render);
 
+  segmentation_ = new SegmentationPanel(document_, this);
+  auto* segmentation_dock = new QDockWidget(tr("Segmentation"), this);
+  segmentation_dock->setObjectName("segmentation-dock");
+  auto* segmentation_scroll = new QScrollArea(segmentation_dock);
+  segmentation_scroll->setWidget(segmentation_);
+  segmentation_scroll->setWidgetResizable(true);
+  segmentation_dock->setWidget(segmentation_scroll);
+  addDockWidget(Qt::RightDockWidgetArea, segmentation_dock);
+  tabifyDockWidget(material_dock, segmentation_dock);
+  material_dock->raise();
+  segmentation_->set_error_handler([this](const QString& message) { show_error(message); });
+  connect(segmentation_, &SegmentationPanel::organ_added, this, &MainWindow::select_object);
+  connect(slices_, &SliceViews::point_clicked, segmentation_,
+          [this](int, const core::Vec3& point) { segmentation_->set_seed(point); });
+  build_volume_views();
+  organ_panels_ = new OrganPanels(document_, *view_, *this);
+  connect(organ_panels_, &OrganPanels::failed, this, &MainWindow::show_error);
+  connect(organ_panels_, &OrganPanels::select_requested, this, &MainWindow::select_object);
+
   resizeDocks({tree_dock, material_dock}, {240, 320}, Qt::Horizontal);
 }
 
@@ -110,6 +134,7 @@ void MainWindow::select_object(const QString& id) {
   view_->select_object(id);
   tree_->select_object(view_->selected_object());
   materials_->show_object(view_->selected_object());
+  organ_panels_->show_object(view_->selected_object());
 }
 
 void MainWindow::show_error(const QString& message) {
@@ -184,13 +209,34 @@ bool MainWindow::open_image_volume(const std::filesystem::path& path) {
            })) {
     return false;
   }
+  show_image_volume(volume);
+  return true;
+}
+
+bool MainWindow::downsample_image_volume(const std::array<int, 3>& factors) {
+  core::ImageVolume coarse;
+  const core::ImageVolume& volume = segmentation_->segmentation().volume();
+  if (!run(tr("Downsampling the image volume"), [&](core::Progress& progress) {
+        progress.begin_stage("downsampling the image volume", 1);
+        if (volume.voxel_count() == 0) throw core::UsageError("open an image volume first");
+        coarse = core::downsample(volume, factors);
+        progress.step();
+      })) {
+    return false;
+  }
+  show_image_volume(coarse);
+  return true;
+}
+
+void MainWindow::show_image_volume(const core::ImageVolume& volume) {
   slices_->set_volume(volume);
+  segmentation_->set_volume(volume);
+  volume_rendering_->set_volume(volume);
   slice_dock_->show();
   view_->set_image_planes(
       {slices_->plane_in_3d(0), slices_->plane_in_3d(1), slices_->plane_in_3d(2)});
   view_->reset_camera();
   view_->render();
-  return true;
 }
 
 bool MainWindow::create_primitive(const PrimitiveRequest& request) {

@@ -6,11 +6,14 @@
 /// a one-line message and leave the document as it was. Long work runs off the UI thread.
 
 #include <QMainWindow>
+#include <array>
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 
+#include "core/image/image_volume.h"
 #include "studio/document/autosave.h"
 #include "studio/document/primitive_objects.h"
 #include "studio/document/scenario_document.h"
@@ -22,7 +25,11 @@ class QPlainTextEdit;
 namespace viscera::studio {
 
 class MaterialPanel;
+class OrganPanels;
 class SceneTree;
+class SegmentationPanel;
+class LabelOverlay;
+class VolumeRendering;
 class SliceViews;
 class SceneView;
 
@@ -45,6 +52,11 @@ class MainWindow : public QMainWindow {
   SceneTree* scene_tree() const { return tree_; }
   MaterialPanel* material_panel() const { return materials_; }
   SliceViews* slice_views() const { return slices_; }
+  SegmentationPanel* segmentation_panel() const { return segmentation_; }
+  LabelOverlay* label_overlay() const { return overlay_; }
+  VolumeRendering& volume_rendering() { return *volume_rendering_; }
+  /// Texture, vessel and pathology panels (organ_panels.h).
+  OrganPanels* organ_panels() const { return organ_panels_; }
   Autosave& autosave() { return *autosave_; }
   TrainingLauncher& launcher() { return launcher_; }
 
@@ -61,6 +73,16 @@ class MainWindow : public QMainWindow {
   /// MINC file, through importers::read_volume) off the UI thread and shows it in the three slice
   /// views and as planes in the 3D view — a modelling aid, not part of the scenario.
   bool open_image_volume(const std::filesystem::path& path);
+  /// Replaces the shown image volume by its block average over `factors` voxels
+  /// (core::downsample), a coarser working copy for segmentation; labels start over.
+  bool downsample_image_volume(const std::array<int, 3>& factors);
+  /// Shows or hides the volume rendering of the image volume in the 3D view
+  /// (main_window_volume.cpp).
+  void set_volume_rendering(bool shown);
+  bool volume_rendering_shown() const;
+  /// Applies a transfer-function preset ("CT soft tissue", "CT bone", "MR default") and shows
+  /// the volume rendering; false (with an error) for an unknown name or without a volume.
+  bool set_volume_preset(const QString& name);
   /// Builds the primitive off the UI thread, adds it as one undoable command and selects it.
   bool create_primitive(const PrimitiveRequest& request);
   /// Selects an object in the tree, the 3D view and the material panel.
@@ -96,6 +118,9 @@ class MainWindow : public QMainWindow {
   void remember_recent(const std::filesystem::path& path);
   void rebuild_recent_menu();
   void ask_create(PrimitiveKind kind);
+  void show_image_volume(const core::ImageVolume& volume);
+  void build_volume_views();
+  void build_volume_menu(QMenu* view);
   bool ask_save_as();
   bool maybe_save();
 
@@ -108,7 +133,13 @@ class MainWindow : public QMainWindow {
   MaterialPanel* materials_ = nullptr;
   QPlainTextEdit* report_ = nullptr;
   SliceViews* slices_ = nullptr;
+  OrganPanels* organ_panels_ = nullptr;
   class QDockWidget* slice_dock_ = nullptr;
+  SegmentationPanel* segmentation_ = nullptr;
+  LabelOverlay* overlay_ = nullptr;
+  std::unique_ptr<VolumeRendering> volume_rendering_;
+  class QActionGroup* preset_actions_ = nullptr;
+  class QAction* volume_action_ = nullptr;
   QMenu* recent_menu_ = nullptr;
   std::function<void(const QString&)> error_handler_;
 };

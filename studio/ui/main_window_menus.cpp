@@ -10,6 +10,7 @@
 #include "studio/document/document_commands.h"
 #include "studio/ui/main_window.h"
 #include "studio/ui/scene_view.h"
+#include "studio/ui/segmentation_panel.h"
 #include "studio/ui/template_dialog.h"
 #include "templates/template_catalog.h"
 
@@ -83,6 +84,22 @@ void MainWindow::build_menus() {
   create->addAction(tr("&Flat…"), this, [this] { ask_create(PrimitiveKind::Flat); });
   create->addAction(tr("&Pipe…"), this, [this] { ask_create(PrimitiveKind::Pipe); });
 
+  QMenu* segment = menuBar()->addMenu(tr("&Segmentation"));
+  segment->addAction(tr("&Downsample image volume…"), this, [this] {
+    bool ok = false;
+    const int factor = QInputDialog::getInt(this, tr("Downsample"),
+                                            tr("Voxels merged along each axis"), 2, 1, 16, 1, &ok);
+    if (ok) downsample_image_volume({factor, factor, factor});
+  });
+  segment->addAction(tr("Open &label map…"), this, [this] {
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Open a label map"), QString(),
+        tr("Label maps (*.vti *.nii *.nii.gz *.mha *.mhd *.nrrd);;All files (*)"));
+    if (!path.isEmpty()) segmentation_->load_label_map(path.toStdString());
+  });
+  segment->addAction(tr("&Mesh organ"), this,
+                     [this] { segmentation_->mesh_segmentation(segmentation_->mesh_request()); });
+
   QMenu* training = menuBar()->addMenu(tr("&Training"));
   training->addAction(tr("&Launch headless session…"), this, [this] {
     bool ok = false;
@@ -96,6 +113,7 @@ void MainWindow::build_menus() {
   QMenu* view = menuBar()->addMenu(tr("&View"));
   view->addAction(tr("&Reset camera"), this,
                   [this] { view_->show_scenario(document_.scenario(), document_.files(), true); });
+  build_volume_menu(view);
 }
 
 void MainWindow::rebuild_recent_menu() {

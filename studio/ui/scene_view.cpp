@@ -3,6 +3,7 @@
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
+#include <vtkCellPicker.h>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkImageData.h>
 #include <vtkPNGReader.h>
@@ -19,6 +20,7 @@
 #include <cmath>
 
 #include "core/package/vtk_mesh_io.h"
+#include "studio/ui/vessel_actor.h"
 
 namespace viscera::studio {
 namespace {
@@ -121,6 +123,15 @@ void SceneView::show_scenario(const core::Scenario& scenario, const PackageFiles
     renderer_->AddActor(actor);
     actors_[id] = actor;
   }
+  for (const auto& actor : vessel_actors_)
+    renderer_->RemoveActor(actor);
+  vessel_actors_.clear();
+  for (const auto& tree : scenario.vessel_trees) {
+    if (auto actor = vessel_tree_actor(tree)) {
+      renderer_->AddActor(actor);
+      vessel_actors_.push_back(actor);
+    }
+  }
   if (!actors_.contains(selected_)) selected_.clear();
   update_outline();
   if (frame) reset_camera();
@@ -215,6 +226,27 @@ QString SceneView::object_at(const QPoint& position) {
   return {};
 }
 
+std::optional<std::pair<QString, core::Vec3>> SceneView::surface_point_at(const QPoint& position) {
+  const double ratio = devicePixelRatioF();
+  auto picker = vtkSmartPointer<vtkCellPicker>::New();
+  picker->SetTolerance(0.0005);
+  if (picker->Pick(position.x() * ratio, (height() - 1 - position.y()) * ratio, 0.0, renderer_) ==
+      0)
+    return std::nullopt;
+  for (const auto& [id, actor] : actors_) {
+    if (actor.GetPointer() == picker->GetActor()) {
+      const double* p = picker->GetPickPosition();
+      return std::make_pair(id, core::Vec3(p[0], p[1], p[2]));
+    }
+  }
+  return std::nullopt;
+}
+
+vtkActor* SceneView::object_actor(const QString& id) const {
+  const auto actor = actors_.find(id);
+  return actor == actors_.end() ? nullptr : actor->second.GetPointer();
+}
+
 void SceneView::mousePressEvent(QMouseEvent* event) {
   press_position_ = event->pos();
   QVTKOpenGLNativeWidget::mousePressEvent(event);
@@ -227,6 +259,8 @@ void SceneView::mouseReleaseEvent(QMouseEvent* event) {
     const QString id = object_at(event->pos());
     select_object(id);
     emit object_picked(id);
+    if (const auto hit = surface_point_at(event->pos()))
+      emit surface_clicked(hit->first, hit->second);
   }
 }
 

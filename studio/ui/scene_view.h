@@ -12,6 +12,7 @@
 
 #include <QString>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,12 @@ class SceneView : public QVTKOpenGLNativeWidget {
   QString selected_object() const { return selected_; }
   /// The object drawn at widget pixel `position` (logical coordinates), or an empty string.
   QString object_at(const QPoint& position);
+  /// The object surface drawn at widget pixel `position` and the world point (m) hit there.
+  std::optional<std::pair<QString, core::Vec3>> surface_point_at(const QPoint& position);
+  /// Number of vessel trees drawn (as tubes of their segments' radii).
+  int vessel_tree_count() const { return static_cast<int>(vessel_actors_.size()); }
+  /// The actor of object `id`, or null (tests, the organ panels' previews).
+  vtkActor* object_actor(const QString& id) const;
   /// Shows these props (the image volume's slice planes) with the objects; not pickable.
   void set_image_planes(const std::vector<vtkProp3D*>& planes);
   /// Frames the whole scene from the front-right, above, with +z up.
@@ -48,6 +55,8 @@ class SceneView : public QVTKOpenGLNativeWidget {
  signals:
   /// The user clicked on an object (empty id: on the background).
   void object_picked(const QString& id);
+  /// The same click, with the world point (m) on the object's surface.
+  void surface_clicked(const QString& id, const viscera::core::Vec3& point);
 
  protected:
   void mousePressEvent(QMouseEvent* event) override;
@@ -59,6 +68,7 @@ class SceneView : public QVTKOpenGLNativeWidget {
   vtkSmartPointer<vtkRenderer> renderer_;
   std::map<QString, vtkSmartPointer<vtkActor>> actors_;
   std::map<QString, bool> hidden_;
+  std::vector<vtkSmartPointer<vtkActor>> vessel_actors_;
   vtkSmartPointer<vtkActor> outline_;
   std::vector<vtkSmartPointer<vtkProp3D>> image_planes_;
   QString selected_;

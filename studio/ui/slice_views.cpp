@@ -14,8 +14,10 @@
 #include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QMouseEvent>
 #include <QSlider>
 #include <algorithm>
+#include <cmath>
 
 #include "core/image/image_volume_io.h"
 
@@ -63,6 +65,7 @@ SliceViews::SliceViews(QWidget* parent) : QWidget(parent) {
     planes_3d_[axis] = make_slice(axis, property_);
     renderers_[axis]->AddViewProp(slices_[axis]);
     views_[axis] = view;
+    view->installEventFilter(this);
 
     auto* slider = new QSlider(Qt::Horizontal, this);
     slider->setEnabled(false);
@@ -119,7 +122,8 @@ void SliceViews::set_volume(const core::ImageVolume& volume) {
   image_ = vtkSmartPointer<vtkImageData>::New();
   core::volume_to_image_data(local, *image_);
   dims_ = volume.dims;
-  auto matrix = vtkSmartPointer<vtkMatrix4x4>::New();
+  matrix_ = vtkSmartPointer<vtkMatrix4x4>::New();
+  vtkMatrix4x4* matrix = matrix_;
   for (int r = 0; r < 3; ++r) {
     for (int c = 0; c < 3; ++c)
       matrix->SetElement(r, c, volume.direction(r, c));
@@ -204,6 +208,63 @@ double SliceViews::level() const {
 QImage SliceViews::grab_view(int axis) {
   views_[axis]->renderWindow()->Render();
   return views_[axis]->grabFramebuffer();
+}
+
+std::optional<core::Vec3> SliceViews::world_at(int axis, const QPoint& position) const {
+  if (image_ == nullptr || axis < 0 || axis > 2) return std::nullopt;
+  QVTKOpenGLNativeWidget* view = views_[axis];
+  vtkRenderer* renderer = renderers_[axis];
+  const double ratio = view->devicePixelRatioF();
+  const int* size = view->renderWindow()->GetSize();
+  const double x = position.x() * ratio;
+  const double y = size[1] - 1 - position.y() * ratio;  // VTK's display origin is bottom-left
+  // The pick ray through the pixel, intersected with the slice plane in the world.
+  core::Vec3 ends[2];
+  for (int e = 0; e < 2; ++e) {
+    renderer->SetDisplayPoint(x, y, e);
+    renderer->DisplayToWorld();
+    const double* w = renderer->GetWorldPoint();
+    ends[e] = core::Vec3(w[0], w[1], w[2]) / (w[3] != 0.0 ? w[3] : 1.0);
+  }
+  double local[4] = {0.0, 0.0, 0.0, 1.0};
+  local[axis] = slice(axis) * image_->GetSpacing()[axis];
+  double on_plane[4];
+  matrix_->MultiplyPoint(local, on_plane);
+  const core::Vec3 normal(matrix_->GetElement(0, axis), matrix_->GetElement(1, axis),
+                          matrix_->GetElement(2, axis));
+  const core::Vec3 ray = ends[1] - ends[0];
+  const double along = normal.dot(ray);
+  if (std::abs(along) < 1e-15) return std::nullopt;
+  const double t = normal.dot(core::Vec3(on_plane[0], on_plane[1], on_plane[2]) - ends[0]) / along;
+  return core::Vec3(ends[0] + t * ray);
+}
+
+QPoint SliceViews::position_of(int axis, const core::Vec3& point) const {
+  QVTKOpenGLNativeWidget* view = views_[axis];
+  vtkRenderer* renderer = renderers_[axis];
+  renderer->SetWorldPoint(point.x(), point.y(), point.z(), 1.0);
+  renderer->WorldToDisplay();
+  const double* d = renderer->GetDisplayPoint();
+  const double ratio = view->devicePixelRatioF();
+  const int* size = view->renderWindow()->GetSize();
+  return {static_cast<int>(std::lround(d[0] / ratio)),
+          static_cast<int>(std::lround((size[1] - 1 - d[1]) / ratio))};
+}
+
+bool SliceViews::eventFilter(QObject* watched, QEvent* event) {
+  const auto found = std::find(views_.begin(), views_.end(), watched);
+  if (found == views_.end()) return QWidget::eventFilter(watched, event);
+  const int axis = static_cast<int>(found - views_.begin());
+  if (event->type() == QEvent::MouseButtonPress) {
+    press_position_ = static_cast<QMouseEvent*>(event)->pos();
+  } else if (event->type() == QEvent::MouseButtonRelease) {
+    auto* mouse = static_cast<QMouseEvent*>(event);
+    if (mouse->button() == Qt::LeftButton &&
+        (mouse->pos() - press_position_).manhattanLength() <= 3) {
+      if (const auto point = world_at(axis, mouse->pos())) emit point_clicked(axis, *point);
+    }
+  }
+  return false;  // VTK's interaction (window/level drag) sees the event too
 }
 
 void SliceViews::render_all() {

@@ -8,16 +8,20 @@
 #include <vtkImageData.h>
 #include <vtkImageProperty.h>
 #include <vtkImageSlice.h>
+#include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
 
+#include <QPoint>
 #include <QWidget>
 #include <array>
+#include <optional>
 
 #include "core/image/image_volume.h"
 
 class QDoubleSpinBox;
 class QSlider;
 class QVTKOpenGLNativeWidget;
+class vtkMatrix4x4;
 class vtkRenderer;
 
 namespace viscera::studio {
@@ -53,15 +57,31 @@ class SliceViews : public QWidget {
   vtkImageSlice* plane_in_3d(int axis) const { return planes_3d_[axis]; }
   /// The rendered slice view of `axis`.
   QImage grab_view(int axis);
+  /// The view widget and renderer of `axis` (overlays add their props there).
+  QVTKOpenGLNativeWidget* view(int axis) const { return views_[axis]; }
+  vtkRenderer* renderer(int axis) const { return renderers_[axis]; }
+  /// Renders the three views again (after an overlay changed).
+  void render_all();
+
+  /// The world point (m) on the shown slice of `axis` under widget pixel `position` (logical
+  /// coordinates) of its view; none without a volume.
+  std::optional<core::Vec3> world_at(int axis, const QPoint& position) const;
+  /// The widget pixel (logical) of the view of `axis` where world point `point` (m) is drawn.
+  QPoint position_of(int axis, const core::Vec3& point) const;
 
  signals:
   /// A slice moved or window/level changed: the 3D view should render again.
   void changed();
+  /// A left click (press and release without dragging) at world point `point` (m) on the slice
+  /// of `axis`.
+  void point_clicked(int axis, const viscera::core::Vec3& point);
+
+ protected:
+  bool eventFilter(QObject* watched, QEvent* event) override;
 
  private:
-  void render_all();
-
   vtkSmartPointer<vtkImageData> image_;
+  vtkSmartPointer<vtkMatrix4x4> matrix_;
   vtkSmartPointer<vtkImageProperty> property_;
   std::array<int, 3> dims_{0, 0, 0};
   std::array<QVTKOpenGLNativeWidget*, 3> views_{};
@@ -72,6 +92,7 @@ class SliceViews : public QWidget {
   QDoubleSpinBox* window_box_ = nullptr;
   QDoubleSpinBox* level_box_ = nullptr;
   bool updating_ = false;
+  QPoint press_position_;
 };
 
 }  // namespace viscera::studio

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
+#include <optional>
 
 #include "core/error.h"
 #include "core/primitives/ball_primitive.h"
@@ -124,11 +126,15 @@ class Placer {
  public:
   Placer(const UterusShape& uterus, const SurfaceQueries& tissue, const PathologyRequest& request,
          core::Rng& rng)
-      : uterus_(uterus), tissue_(tissue), request_(request), rng_(rng), wall_(uterus) {
+      : tissue_(tissue), request_(request), rng_(rng), wall_(std::in_place, uterus) {
     for (const auto& mark : uterus.landmarks) {
       if (mark.id == "cervix-internal-os") internal_os_ = mark.position;
     }
   }
+  /// Shapes single pathologies on any closed wall (the studio's placement by click): a ray
+  /// along the wall normal that leaves the surface finds unlimited room.
+  Placer(const SurfaceQueries& tissue, const PathologyRequest& request, core::Rng& rng)
+      : tissue_(tissue), request_(request), rng_(rng), open_outside_(true) {}
 
   std::vector<PlacedPathology> run() {
     // Larger pathologies first: they need the most room.
@@ -150,7 +156,8 @@ class Placer {
 
   /// Free distance from a wall site across the cavity to the opposite wall.
   double clearance(const WallSite& site) const {
-    return tissue_.ray_hit(site.position, site.normal, 1e-5).value_or(0.0);
+    return tissue_.ray_hit(site.position, site.normal, 1e-5)
+        .value_or(open_outside_ ? std::numeric_limits<double>::infinity() : 0.0);
   }
 
   template <typename Make>
@@ -183,7 +190,12 @@ class Placer {
   /// surface cannot fold; its base lies on the wall at the gap.
   std::optional<PlacedPathology> sessile() {
     const double r = 0.5 * drawn(request_.myoma_diameter);
-    const WallSite site = wall_.draw(rng_);
+    const WallSite site = wall_->draw(rng_);
+    return sessile_at(site, r);
+  }
+
+ public:
+  std::optional<PlacedPathology> sessile_at(const WallSite& site, double r) {
     const double protrusion = rng_.uniform(0.55, 0.85);  // fraction of the diameter in the cavity
     if (2.0 * protrusion * r + 4.0 * request_.gap > clearance(site)) return std::nullopt;
     const core::Vec3 centre = site.position + r * (2.0 * protrusion - 1.0) * site.normal;
@@ -226,7 +238,7 @@ class Placer {
 
   std::optional<PlacedPathology> intramural() {
     const double r_drawn = 0.5 * drawn(request_.myoma_diameter);
-    const WallSite site = wall_.draw(rng_);
+    const WallSite site = wall_->draw(rng_);
     const auto wall = tissue_.ray_hit(site.position, -site.normal, 1e-5);
     if (!wall) return std::nullopt;
     const double margin = 0.0015;
@@ -251,9 +263,9 @@ class Placer {
 
   /// Stalk direction: leaning from the wall normal towards the internal os, as pedunculated
   /// lesions hang into the lower cavity.
-  core::Vec3 stalk_direction(const WallSite& site) {
+  core::Vec3 stalk_direction(const WallSite& site, const core::Vec3& hang) {
     const double lean = rng_.uniform(0.35, 1.0);  // rad
-    const core::Vec3 down = tangent_towards(site.normal, internal_os_ - site.position);
+    const core::Vec3 down = tangent_towards(site.normal, hang);
     return (std::cos(lean) * site.normal + std::sin(lean) * down).normalized();
   }
 
@@ -268,8 +280,13 @@ class Placer {
 
   std::optional<PlacedPathology> pedunculated() {
     const double r = 0.5 * drawn(request_.myoma_diameter);
-    const WallSite site = wall_.draw(rng_);
-    const core::Vec3 u = stalk_direction(site);
+    const WallSite site = wall_->draw(rng_);
+    return pedunculated_at(site, r, internal_os_ - site.position);
+  }
+
+  std::optional<PlacedPathology> pedunculated_at(const WallSite& site, double r,
+                                                 const core::Vec3& hang) {
+    const core::Vec3 u = stalk_direction(site, hang);
     const double stalk = 0.8 * r, rs = std::max(0.3 * r, 0.0008);
     if (!free_path(site, u, stalk + r, r)) return std::nullopt;
     PlacedPathology p;
@@ -287,9 +304,15 @@ class Placer {
   }
 
   std::optional<PlacedPathology> polyp() {
-    const double length = drawn(request_.polyp_length), w = 0.45 * length;
-    const WallSite site = wall_.draw(rng_);
-    const core::Vec3 u = stalk_direction(site);
+    const double length = drawn(request_.polyp_length);
+    const WallSite site = wall_->draw(rng_);
+    return polyp_at(site, length, internal_os_ - site.position);
+  }
+
+  std::optional<PlacedPathology> polyp_at(const WallSite& site, double length,
+                                          const core::Vec3& hang) {
+    const double w = 0.45 * length;
+    const core::Vec3 u = stalk_direction(site, hang);
     if (!free_path(site, u, length, 0.5 * w)) return std::nullopt;
     PlacedPathology p;
     p.surface = stalked_shape(site.position, site.normal, u,
@@ -306,7 +329,7 @@ class Placer {
 
   std::optional<PlacedPathology> adhesion() {
     const double rho = drawn(request_.adhesion_radius);
-    const WallSite a = wall_.draw(rng_);
+    const WallSite a = wall_->draw(rng_);
     const auto span = tissue_.ray_hit(a.position, a.normal, 1e-5);
     if (!span || *span < 0.003 || *span > 0.025) return std::nullopt;
     const core::Vec3 b = a.position + *span * a.normal;
@@ -329,11 +352,12 @@ class Placer {
     return p;
   }
 
-  const UterusShape& uterus_;
+ private:
   const SurfaceQueries& tissue_;
   const PathologyRequest& request_;
   core::Rng& rng_;
-  CavityWall wall_;
+  std::optional<CavityWall> wall_;
+  bool open_outside_ = false;
   core::Vec3 internal_os_ = core::Vec3::Zero();
   std::map<std::string, int> counts_;
   std::vector<PlacedPathology> placed_;
@@ -345,6 +369,30 @@ std::vector<PlacedPathology> place_pathologies(const UterusShape& uterus,
                                                const SurfaceQueries& tissue,
                                                const PathologyRequest& request, core::Rng& rng) {
   return Placer(uterus, tissue, request, rng).run();
+}
+
+std::optional<PlacedPathology> shape_pathology_at(const SurfaceQueries& tissue,
+                                                  const core::Vec3& point, const std::string& kind,
+                                                  double size, const core::Vec3& hang,
+                                                  const PathologyRequest& request, core::Rng& rng) {
+  const SurfacePoint near = tissue.closest(point);
+  const WallSite site{near.position, near.normal};
+  Placer placer(tissue, request, rng);
+  std::optional<PlacedPathology> placed;
+  if (kind == "myoma-submucosal") {
+    placed = placer.sessile_at(site, 0.5 * size);
+  } else if (kind == "myoma-pedunculated") {
+    placed = placer.pedunculated_at(site, 0.5 * size, hang);
+  } else if (kind == "polyp") {
+    placed = placer.polyp_at(site, size, hang);
+  } else {
+    throw core::UsageError(
+        "a pathology placed on a wall is myoma-submucosal, "
+        "myoma-pedunculated or polyp, not \"" +
+        kind + "\"");
+  }
+  if (placed) placed->record.kind = kind;
+  return placed;
 }
 
 }  // namespace viscera::templates

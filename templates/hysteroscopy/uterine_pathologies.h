@@ -7,6 +7,7 @@
 /// instead and becomes a hole in the uterus body. Positions are drawn so that no two
 /// pathologies overlap and none covers a tubal orifice or the internal os. Lengths in m.
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -47,5 +48,17 @@ struct PlacedPathology {
 std::vector<PlacedPathology> place_pathologies(const UterusShape& uterus,
                                                const SurfaceQueries& tissue,
                                                const PathologyRequest& request, core::Rng& rng);
+
+/// One pathology of `kind` ("myoma-submucosal", "myoma-pedunculated" or "polyp") of `size` m
+/// (myoma diameter, polyp length) shaped and seated exactly as place_pathologies does, at the
+/// wall point of `tissue` nearest to `point`; a stalk leans from the wall normal towards
+/// `hang` (the internal os in the template, down in the studio). The record has kind,
+/// position (the wall point), size; id, host and object are the caller's. Returns nothing
+/// when the shape does not fit there (no room across the cavity, or its stalk would leave
+/// it). Throws core::UsageError for another kind.
+std::optional<PlacedPathology> shape_pathology_at(const SurfaceQueries& tissue,
+                                                  const core::Vec3& point, const std::string& kind,
+                                                  double size, const core::Vec3& hang,
+                                                  const PathologyRequest& request, core::Rng& rng);
 
 }  // namespace viscera::templates

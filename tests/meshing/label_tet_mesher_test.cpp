@@ -6,7 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <map>
+#include <thread>
 
 #include "core/error.h"
 #include "core/mesh/tet_quality.h"
@@ -157,6 +159,23 @@ TEST(LabelTetMesher, embedded_surface_vertices_rebuild_from_their_weights) {
   }
   for (const char* stage : {"surface", "tets", "embedding", "quality"})
     EXPECT_GE(made.seconds.at(stage), 0.0) << stage;
+}
+
+TEST(LabelTetMesher, cancel_stops_mesh_3_refinement_early) {
+  const auto labels = testing::spheroid_phantom(0.018, 0.027, testing::PhantomFrame::rotated(35));
+  LabelTetMeshingOptions options;
+  options.cell_size = 0.0004;  // millions of tets: minutes of refinement if it ran to the end
+  core::Progress progress;
+  const auto start = std::chrono::steady_clock::now();
+  std::thread canceller([&] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    progress.cancel();
+  });
+  EXPECT_THROW(importers::mesh_label_map(labels, options, "c.vti", progress), core::CancelledError);
+  canceller.join();
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_LT(seconds, 10.0);
 }
 
 TEST(LabelTetMesher, empty_map_is_refused_naming_the_file) {

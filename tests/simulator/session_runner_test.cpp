@@ -78,6 +78,45 @@ TEST(SessionRunner, expert_and_novice_separate_on_every_metric_in_the_expected_d
     EXPECT_LE(p.wall_distance, viscera::testing::kCavityRadius + 1e-3);
 }
 
+TEST(SessionRunner, distension_fluid_is_balanced_and_an_overload_ends_the_session) {
+  core::Scenario scenario = viscera::testing::cavity_scenario();
+  scenario.fluid.enabled = true;
+  const core::Vec3 centre(0.0, 0.0, 0.0), up(0.0, 0.0, 0.02);
+  // Inflow open, outflow shut, the scope held still at the centre of the cavity.
+  nlohmann::json still =
+      viscera::testing::cavity_script({{0.0, {centre, up}}, {3.0, {centre, up}}});
+  still["waypoints"][0]["inflow"] = 1.0;
+  still["waypoints"][0]["outflow"] = 0.0;
+  const auto script = ScriptedTrajectory::from_json(still, "still");
+
+  SessionReport report = run(scenario, script, 3.0);
+  ASSERT_TRUE(report.fluid.has_value());
+  const FluidTotals& fluid = *report.fluid;
+  // Nothing drains with the outflow shut: what went in is in the cavity or absorbed.
+  EXPECT_EQ(fluid.drained, 0.0);
+  const DistensionChannels channels;
+  EXPECT_NEAR(fluid.used,
+              channels.cavity_compliance * report.final_cavity_pressure + fluid.absorbed, 1e-12);
+  EXPECT_GT(report.final_cavity_pressure, 5000.0);  // the pump filled the cavity
+  EXPECT_DOUBLE_EQ(report_to_json(report)["metrics"]["distension_fluid_used"].get<double>(),
+                   fluid.used);
+  EXPECT_EQ(report.end_reason, "duration");
+
+  // The same with a 2 ml overload limit: the deficit reaches it within a second or two.
+  scenario.fluid.overload_volume = 2e-6;
+  report = run(scenario, script, 3.0);
+  EXPECT_EQ(report.end_reason, "fluid-overload");
+  EXPECT_EQ(report.events.back().kind, "fluid-overload");
+  EXPECT_LT(report.simulated_time, 3.0);
+  EXPECT_GE(report.fluid->deficit(), 2e-6);
+
+  // Without fluid in the scenario the metric says so.
+  scenario.fluid.enabled = false;
+  report = run(scenario, script, 0.2);
+  EXPECT_FALSE(report.fluid.has_value());
+  EXPECT_TRUE(report_to_json(report)["metrics"]["distension_fluid_used"].is_null());
+}
+
 TEST(SessionRunner, pushing_through_the_wall_perforates_it_and_ends_the_session) {
   const core::Scenario scenario = viscera::testing::cavity_scenario();
   const core::Vec3 up(0.0, 0.0, 0.02);

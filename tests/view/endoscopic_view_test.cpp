@@ -101,6 +101,55 @@ TEST(EndoscopicView, lens_pass_stops_the_field_and_distorts_the_image) {
   EXPECT_GT(testing::mean_abs_difference(pinhole, optics, 0.9), 2.0);
 }
 
+TEST(EndoscopicView, without_distortion_the_lens_shows_the_pinhole_picture_in_the_field) {
+  const auto& patient = testing::hysteroscopy_patient();
+  const double angle = patient.scenario.session.instrument.optics_angle;
+  const sim::InstrumentState pose = sim::starting_pose(patient.scenario, angle);
+  view::EndoscopicView plain(patient.scenario, patient.package, offscreen(false));
+  plain.set_instrument(pose, angle);
+  const auto pinhole = plain.capture();
+  view::ViewOptions options = offscreen(true);
+  options.distortion = 0.0;  // only the depth of field and the field stop remain
+  view::EndoscopicView lens(patient.scenario, patient.package, options);
+  lens.set_instrument(pose, angle);
+  const double same = testing::mean_abs_difference(pinhole, lens.capture(), 0.9);
+  // Mapped 1:1, the field differs from the pinhole image by the blur alone; a scene sampled
+  // with the wrong scale or aspect would differ like a different picture (as k = 0.2 does).
+  options.distortion = 0.2;
+  view::EndoscopicView distorted(patient.scenario, patient.package, options);
+  distorted.set_instrument(pose, angle);
+  const double moved = testing::mean_abs_difference(pinhole, distorted.capture(), 0.9);
+  EXPECT_LT(same, 0.5 * moved);
+}
+
+TEST(EndoscopicView, half_resolution_scene_under_the_lens_keeps_the_picture) {
+  const auto& patient = testing::hysteroscopy_patient();
+  const double angle = patient.scenario.session.instrument.optics_angle;
+  const sim::InstrumentState pose = sim::starting_pose(patient.scenario, angle);
+  view::EndoscopicView full(patient.scenario, patient.package, offscreen(true));
+  full.set_instrument(pose, angle);
+  const auto sharp = full.capture();
+  view::ViewOptions options = offscreen(true);
+  options.render_scale = 0.5;
+  view::EndoscopicView half(patient.scenario, patient.package, options);
+  half.set_instrument(pose, angle);
+  const auto soft = half.capture();
+  int dims[3];
+  soft->GetDimensions(dims);
+  EXPECT_EQ(dims[0], 640) << "the output keeps the view's size";
+  EXPECT_EQ(dims[1], 360);
+  // The same field, organ and brightness; only fine detail differs.
+  const FrameStatistics a = frame_statistics(sharp, 0.9), b = frame_statistics(soft, 0.9);
+  EXPECT_GT(b.lit_fraction, 0.8);
+  EXPECT_NEAR(b.mean_luminance, a.mean_luminance, 0.05 * a.mean_luminance);
+  EXPECT_LT(testing::corner_luminance(soft), 1.0);
+  const double difference = testing::mean_abs_difference(sharp, soft, 0.9);
+  EXPECT_GT(difference, 0.0) << "a quarter of the pixels cannot give the identical image";
+  EXPECT_LT(difference, 6.0);
+  // Rendering the same pose twice gives the same bytes (no state carried between frames).
+  EXPECT_EQ(testing::mean_abs_difference(soft, half.capture()), 0.0);
+}
+
 TEST(SessionOverlay, force_bars_fill_and_warn_as_the_force_nears_the_limit) {
   EXPECT_EQ(view::force_alert(0.5, 1.0), "");
   EXPECT_EQ(view::force_alert(0.9, 1.0), "approaching");

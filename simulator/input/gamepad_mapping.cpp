@@ -1,0 +1,46 @@
+#include "simulator/input/gamepad_mapping.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace viscera::sim {
+
+void GamepadState::set(GamepadButton b, bool down) {
+  const std::uint32_t bit = 1U << static_cast<int>(b);
+  buttons = down ? (buttons | bit) : (buttons & ~bit);
+}
+
+double apply_dead_zone(double value, double dead_zone) {
+  const double magnitude = std::min(1.0, std::abs(value));
+  if (magnitude <= dead_zone) return 0.0;
+  return std::copysign((magnitude - dead_zone) / (1.0 - dead_zone), value);
+}
+
+GamepadCommand map_gamepad(const GamepadState& now, const GamepadState& before, double dead_zone) {
+  const auto axis = [&](GamepadAxis a) { return apply_dead_zone(now.axis(a), dead_zone); };
+  const auto held = [&](GamepadButton b) { return now.pressed(b) ? 1.0 : 0.0; };
+  GamepadCommand command;
+  AnalogMotion& m = command.motion;
+  m.advance = axis(GamepadAxis::TriggerRight) - axis(GamepadAxis::TriggerLeft) +
+              held(GamepadButton::DpadUp) - held(GamepadButton::DpadDown);
+  m.yaw = -axis(GamepadAxis::LeftX);    // stick right swings right
+  m.pitch = -axis(GamepadAxis::LeftY);  // stick up (negative y) tilts up
+  m.roll = -axis(GamepadAxis::RightX) + held(GamepadButton::LeftShoulder) -
+           held(GamepadButton::RightShoulder);
+  for (double* value : {&m.advance, &m.yaw, &m.pitch, &m.roll})
+    *value = std::clamp(*value, -1.0, 1.0);
+
+  const auto went_down = [&](GamepadButton b) { return now.pressed(b) && !before.pressed(b); };
+  if (went_down(GamepadButton::A)) command.pressed.push_back(ManualCommand::ToggleInflow);
+  if (went_down(GamepadButton::B)) command.pressed.push_back(ManualCommand::ToggleOutflow);
+  if (went_down(GamepadButton::Back)) command.pressed.push_back(ManualCommand::Abort);
+  return command;
+}
+
+std::string gamepad_bindings_text() {
+  return "Pad: left stick swing/tilt   RT/LT or d-pad: advance/withdraw   right stick or "
+         "LB/RB: roll the optics\n"
+         "Pad: A/B inflow/outflow valve   Back: abort";
+}
+
+}  // namespace viscera::sim

@@ -48,6 +48,8 @@ class HapticProxy {
               std::span<const core::Vec3> positions);
 
   const core::Vec3& proxy() const { return proxy_; }
+  /// Proxy–tip spring stiffness in N/m.
+  double stiffness() const { return stiffness_; }
   const ProxyContact& contact() const { return contact_; }
   bool in_contact() const { return contact_.triangle >= 0; }
   /// Force in N on the instrument: stiffness · (proxy − tip); zero when free.

@@ -73,6 +73,26 @@ void ConnectionSprings::apply(std::vector<DeformableBody>& bodies) const {
   }
 }
 
+void ConnectionSprings::add_linearised_terms(RankOneSystem& stiffness,
+                                             std::span<const int> offsets) const {
+  for (const ConnectionSpring& spring : springs_) {
+    const int nodes[2] = {offsets[static_cast<std::size_t>(spring.body_a)] + spring.node_a,
+                          offsets[static_cast<std::size_t>(spring.body_b)] + spring.node_b};
+    for (int axis = 0; axis < 3; ++axis) {
+      const core::Vec3 e = core::Vec3::Unit(axis);
+      const core::Vec3 gradient[2] = {-e, e};
+      stiffness.add_term(nodes, gradient, spring.stiffness);
+    }
+  }
+}
+
+void ConnectionSprings::add_node_stiffness(int body, std::span<double> node_stiffness) const {
+  for (const ConnectionSpring& spring : springs_) {
+    if (spring.body_a == body) node_stiffness[static_cast<std::size_t>(spring.node_a)] += 2.0 * spring.stiffness;
+    if (spring.body_b == body) node_stiffness[static_cast<std::size_t>(spring.node_b)] += 2.0 * spring.stiffness;
+  }
+}
+
 double ConnectionSprings::energy(const std::vector<DeformableBody>& bodies) const {
   double energy = 0.0;
   for (const ConnectionSpring& spring : springs_) {

@@ -9,6 +9,7 @@
 
 #include "core/scenario/scenario.h"
 #include "simulator/physics/deformable_body.h"
+#include "simulator/physics/stable_step.h"
 
 namespace viscera::sim {
 
@@ -44,6 +45,15 @@ class ConnectionSprings {
   /// Largest sum of connection stiffness meeting at one node, N/m: the extra stiffness the
   /// explicit integrator's stable step must allow for.
   double max_node_stiffness() const { return max_node_stiffness_; }
+
+  /// Adds each spring's stiffness bound k·I (3×3) between its two nodes to `stiffness`, body b's
+  /// nodes numbered from offsets[b]. k·I bounds the spring's Hessian at any length at or beyond
+  /// its rest length (k along the spring, k (1 − l0/|d|) across it).
+  void add_linearised_terms(RankOneSystem& stiffness, std::span<const int> offsets) const;
+
+  /// Adds 2k for every spring ending at a node of body `body` to node_stiffness[node]: the
+  /// spring's share of that node's Gershgorin row (k on the diagonal, k off it).
+  void add_node_stiffness(int body, std::span<double> node_stiffness) const;
 
   const std::vector<ConnectionSpring>& springs() const { return springs_; }
   bool empty() const { return springs_.empty(); }

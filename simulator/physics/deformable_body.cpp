@@ -132,7 +132,8 @@ BodyEnergies DeformableBody::energies(const core::Vec3& gravity, double h) const
   return e;
 }
 
-double DeformableBody::stable_time_step(double contact_stiffness) const {
+double DeformableBody::stable_time_step(double contact_stiffness,
+                                        std::span<const double> node_stiffness) const {
   // Gershgorin bound of M⁻¹K per node: a term of stiffness k with constraint gradient g
   // contributes k |g_i| Σ_j |g_j| to row i. Damping bounds the step by m / c.
   const std::size_t n = positions_.size();
@@ -185,6 +186,11 @@ double DeformableBody::stable_time_step(double contact_stiffness) const {
       for (const int v : f) on_surface[v] = 1;
     for (std::size_t i = 0; i < n; ++i) stiffness[i] += on_surface[i] ? contact_stiffness : 0.0;
   }
+  if (!node_stiffness.empty()) {
+    if (node_stiffness.size() != n)
+      throw core::UsageError("stable_time_step needs one extra stiffness per node of " + name_);
+    for (std::size_t i = 0; i < n; ++i) stiffness[i] += node_stiffness[i];
+  }
   // Per node, the undamped limit 2/ω and the explicit-damping limit 2m/c combine harmonically:
   // each alone is the exact bound when the other vanishes, and together this stays below both.
   double h = std::numeric_limits<double>::infinity();
@@ -194,6 +200,44 @@ double DeformableBody::stable_time_step(double contact_stiffness) const {
     if (rate > 0.0) h = std::min(h, 1.0 / rate);
   }
   return 0.9 * h;
+}
+
+bool DeformableBody::add_linearised_terms(RankOneSystem& stiffness, RankOneSystem& damping,
+                                          int offset) const {
+  if (model_ == BodyModel::KismoMassSpring) return false;
+  // Distance: C = (|d| − D0)/D0, ∇C = ±û/D0 at the two ends.
+  for (std::size_t e = 0; e < distance_.edges.size(); ++e) {
+    const auto [i, j] = distance_.edges[e];
+    const double d0 = distance_.rest_length[e];
+    const core::Vec3 g = (rest_[j] - rest_[i]) / (d0 * d0);
+    const int nodes[2] = {offset + i, offset + j};
+    const core::Vec3 gradient[2] = {-g, g};
+    stiffness.add_term(nodes, gradient, distance_.stiffness[e]);
+    damping.add_term(nodes, gradient, distance_.damping[e]);
+  }
+  // Volume: C = (V − V0)/V0, ∇C = ∂V/∂p / V0.
+  for (std::size_t t = 0; t < volume_.tets.size(); ++t) {
+    const auto [i, j, k, l] = volume_.tets[t];
+    const core::Vec3 e1 = rest_[j] - rest_[i], e2 = rest_[k] - rest_[i], e3 = rest_[l] - rest_[i];
+    const double v0 = volume_.rest_volume[t];
+    const core::Vec3 gj = e2.cross(e3) / (6.0 * v0), gk = e3.cross(e1) / (6.0 * v0),
+                     gl = e1.cross(e2) / (6.0 * v0);
+    const int nodes[4] = {offset + i, offset + j, offset + k, offset + l};
+    const core::Vec3 gradient[4] = {-(gj + gk + gl), gj, gk, gl};
+    stiffness.add_term(nodes, gradient, volume_.stiffness[t]);
+  }
+  // Area: C = (A − A0)/A0, ∂A/∂a = ½ n̂ × (c − b), cyclically.
+  for (std::size_t t = 0; t < area_.triangles.size(); ++t) {
+    const auto [a, b, c] = area_.triangles[t];
+    const double a0 = area_.rest_area[t];
+    const core::Vec3 unit = (rest_[b] - rest_[a]).cross(rest_[c] - rest_[a]).normalized();
+    const int nodes[3] = {offset + a, offset + b, offset + c};
+    const core::Vec3 gradient[3] = {0.5 * unit.cross(rest_[c] - rest_[b]) / a0,
+                                    0.5 * unit.cross(rest_[a] - rest_[c]) / a0,
+                                    0.5 * unit.cross(rest_[b] - rest_[a]) / a0};
+    stiffness.add_term(nodes, gradient, area_.stiffness[t]);
+  }
+  return true;
 }
 
 double DeformableBody::max_displacement() const {

@@ -3,12 +3,14 @@
 /// arrays and rest data once per topology; the energies and the integrator are plain functions.
 
 #include <map>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "core/mesh/tet_mesh.h"
 #include "core/scenario/material.h"
 #include "simulator/physics/kismo_mass_spring.h"
+#include "simulator/physics/stable_step.h"
 #include "simulator/physics/teschner_energies.h"
 
 namespace viscera::sim {
@@ -82,8 +84,17 @@ class DeformableBody {
 
   /// Largest step in s for which explicit integration of this body stays stable, from a
   /// Gershgorin bound on the stiffness and damping of each node, with a 0.9 safety factor.
-  /// `contact_stiffness` (N/m) is the penalty stiffness surface nodes may meet in contacts.
-  double stable_time_step(double contact_stiffness = 0.0) const;
+  /// `contact_stiffness` (N/m) is the penalty stiffness surface nodes may meet in contacts;
+  /// `node_stiffness` (N/m, empty or one per node) what springs to other bodies add to a node's
+  /// row (2k for a spring of stiffness k to another body's node).
+  double stable_time_step(double contact_stiffness = 0.0,
+                          std::span<const double> node_stiffness = {}) const;
+
+  /// Adds the Hessian of the body's Teschner terms at rest, Σ k ∇C ∇Cᵀ, to `stiffness` and the
+  /// distance damping Σ k_d ∇C ∇Cᵀ to `damping`, with this body's nodes numbered from `offset`
+  /// (see RankOneSystem). A KisMo net adds nothing: its own integrator keeps the bound of
+  /// stable_time_step(). Returns whether terms were added.
+  bool add_linearised_terms(RankOneSystem& stiffness, RankOneSystem& damping, int offset) const;
 
   /// Largest distance in m of any node from its rest position.
   double max_displacement() const;

@@ -4,8 +4,8 @@
 
 namespace viscera::sim {
 
-double add_distance_forces(std::span<const Vec3> x, std::span<const Vec3> v, const DistanceTerms& terms,
-                           std::span<Vec3> f) {
+double add_distance_forces(std::span<const Vec3> x, std::span<const Vec3> v,
+                           const DistanceTerms& terms, std::span<Vec3> f) {
   double energy = 0.0;
   for (std::size_t e = 0; e < terms.edges.size(); ++e) {
     const auto [i, j] = terms.edges[e];
@@ -51,13 +51,13 @@ double add_volume_forces(std::span<const Vec3> x, const VolumeTerms& terms, std:
   for (std::size_t t = 0; t < terms.tets.size(); ++t) {
     const auto [i, j, k, l] = terms.tets[t];
     const Vec3 e1 = x[j] - x[i], e2 = x[k] - x[i], e3 = x[l] - x[i];
-    // ∂V/∂p_j = (e2 × e3)/6, ∂V/∂p_k = (e3 × e1)/6, ∂V/∂p_l = (e1 × e2)/6, ∂V/∂p_i = −their sum;
-    // the first also gives the volume, e1 · (e2 × e3) / 6.
+    // 6 ∂V/∂p_j = e2 × e3, 6 ∂V/∂p_k = e3 × e1, 6 ∂V/∂p_l = e1 × e2, ∂V/∂p_i = −their sum;
+    // the first also gives 6V = e1 · (e2 × e3). One division per tet: C = 6V/(6V0) − 1 and
+    // ∂C/∂p = 6 ∂V/∂p / (6V0).
     const Vec3 gj = e2.cross(e3), gk = e3.cross(e1), gl = e1.cross(e2);
-    const double volume = e1.dot(gj) / 6.0;
-    const double inverse_rest = 1.0 / terms.rest_volume[t];
-    const double c = (volume - terms.rest_volume[t]) * inverse_rest;
-    const double scale = -terms.stiffness[t] * c * inverse_rest / 6.0;
+    const double inverse_rest6 = 1.0 / (6.0 * terms.rest_volume[t]);
+    const double c = e1.dot(gj) * inverse_rest6 - 1.0;
+    const double scale = -terms.stiffness[t] * c * inverse_rest6;
     f[j] += scale * gj;
     f[k] += scale * gk;
     f[l] += scale * gl;
@@ -70,7 +70,8 @@ double add_volume_forces(std::span<const Vec3> x, const VolumeTerms& terms, std:
 double distance_energy(std::span<const Vec3> x, const DistanceTerms& terms) {
   double energy = 0.0;
   for (std::size_t e = 0; e < terms.edges.size(); ++e) {
-    const double c = ((x[terms.edges[e][1]] - x[terms.edges[e][0]]).norm() - terms.rest_length[e]) / terms.rest_length[e];
+    const double c = ((x[terms.edges[e][1]] - x[terms.edges[e][0]]).norm() - terms.rest_length[e]) /
+                     terms.rest_length[e];
     energy += 0.5 * terms.stiffness[e] * c * c;
   }
   return energy;

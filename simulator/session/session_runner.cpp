@@ -84,7 +84,6 @@ SessionRunner::SessionRunner(const core::Scenario& scenario, const HeadlessRunOp
   report_.procedure = scenario.session.procedure_definition;
   report_.instrument = instrument_.kind;
   report_.time_step = world_.time_step();
-  report_.substeps = world_.substeps();
   report_.time_limit = time_limit_;
   report_.force_warning = force_warning_;
   total_steps_ = static_cast<long long>(std::llround(time_limit_ / world_.time_step()));
@@ -406,6 +405,7 @@ SessionReport SessionRunner::finish() {
   report_.metrics.set_tasks(completed, available);
   report_.score = period_score(report_.metrics, force_warning_);
   report_.steps = world_.steps();
+  report_.substeps = world_.substeps();  // after attach_instrument, whose spring may add some
   report_.simulated_time = world_.time();
   report_.final_state_hash = state_hash();
   if (fluid_) {

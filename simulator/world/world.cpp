@@ -30,16 +30,53 @@ World::World(const core::Scenario& scenario)
                          object.body_kind == core::BodyKind::MassSpring ? BodyModel::KismoMassSpring
                                                                         : BodyModel::Teschner);
   }
-  const double contact_stiffness = bodies_.size() > 1 ? scenario.session.contact_stiffness : 0.0;
-  if (contact_stiffness > 0.0)
-    contact_ = std::make_unique<ContactResponse>(bodies_, contact_stiffness);
+  contact_stiffness_ = bodies_.size() > 1 ? scenario.session.contact_stiffness : 0.0;
+  if (contact_stiffness_ > 0.0)
+    contact_ = std::make_unique<ContactResponse>(bodies_, contact_stiffness_);
   connections_ = ConnectionSprings(scenario, bodies_);
-  // A connected node may meet contacts too: its stable step allows for both. A spring to another
-  // body's node adds k to the diagonal of M⁻¹K's row and k off it: 2k in the Gershgorin bound.
-  const double extra_stiffness = contact_stiffness + 2.0 * connections_.max_node_stiffness();
+  choose_substeps();
+}
+
+void World::choose_substeps() {
+  // Every surface node may meet a contact; the instrument's proxy spring may press on any
+  // surface node of its body (k w wᵀ over a triangle is bounded by k on each of its nodes).
+  const auto surface_stiffness = [&](std::size_t b) {
+    double k = contact_stiffness_;
+    if (instrument_ && static_cast<std::size_t>(instrument_->body) == b)
+      k += instrument_->proxy.stiffness();
+    return k;
+  };
+  std::vector<int> offsets;
+  std::vector<double> inverse_mass;
+  for (const auto& body : bodies_) {
+    offsets.push_back(static_cast<int>(inverse_mass.size()));
+    inverse_mass.insert(inverse_mass.end(), body.inverse_masses().begin(),
+                        body.inverse_masses().end());
+  }
+  RankOneSystem stiffness(inverse_mass.size()), damping(inverse_mass.size());
   double stable = time_step_;
-  for (const auto& body : bodies_)
-    stable = std::min(stable, body.stable_time_step(extra_stiffness));
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    const DeformableBody& body = bodies_[b];
+    if (!body.add_linearised_terms(stiffness, damping, offsets[b])) {
+      // A KisMo net: its own integrator, its own per-node bound.
+      std::vector<double> extra(body.node_count(), 0.0);
+      connections_.add_node_stiffness(static_cast<int>(b), extra);
+      stable = std::min(stable, body.stable_time_step(surface_stiffness(b), extra));
+    }
+    const double k = surface_stiffness(b);
+    if (k > 0.0) {
+      std::vector<char> on_surface(body.node_count(), 0);
+      for (const auto& f : body.surface_faces())
+        for (const int v : f) on_surface[static_cast<std::size_t>(v)] = 1;
+      for (std::size_t i = 0; i < on_surface.size(); ++i)
+        if (on_surface[i]) stiffness.add_diagonal(offsets[b] + static_cast<int>(i), k);
+    }
+  }
+  connections_.add_linearised_terms(stiffness, offsets);
+  const double omega_squared = largest_eigenvalue(stiffness, inverse_mass);
+  const double damping_rate = largest_eigenvalue(damping, inverse_mass);
+  stable = std::min(stable, kStableStepSafety * verlet_stable_step(omega_squared, damping_rate));
+  stable_step_ = stable;
   substeps_ = std::max(1, static_cast<int>(std::ceil(time_step_ / stable - 1e-12)));
 }
 
@@ -129,6 +166,7 @@ void World::attach_instrument(int body, double stiffness, const core::Vec3& tip)
                  HapticProxy(stiffness)});
   instrument_->proxy.reset(tip);
   tool_tip_ = tip;
+  choose_substeps();
 }
 
 BodyEnergies World::energies() const {

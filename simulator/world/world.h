@@ -21,7 +21,10 @@ class World {
   /// Builds a body for every object whose body kind is a tet mesh (Teschner energies) or a
   /// mass-spring net (KisMo springs on the mesh edges), with its material (or the
   /// default Material when it names none). The physics step is scenario.session.time_step,
-  /// split into equal sub-steps when a body needs a smaller step to stay stable. With two or
+  /// split into equal sub-steps when the bodies need a smaller step to stay stable: the stable
+  /// step comes from the largest eigenvalues of the linearised stiffness and damping of all
+  /// Teschner bodies, connection springs, contacts and the instrument together
+  /// (physics/stable_step.h), times kStableStepSafety; KisMo nets keep their per-node bound. With two or
   /// more bodies, contacts between them get penalty forces of scenario.session.contact_stiffness.
   /// The scenario's connections hold their objects together with springs (ConnectionSprings).
   /// Throws core::InputError for a missing material, an invalid body or a connection that
@@ -41,6 +44,7 @@ class World {
 
   /// Puts a haptic instrument into the world: one proxy point on the surface of body `body`
   /// with a proxy–tip spring of `stiffness` N/m (seed 000 §8.2). The tip starts at `tip`.
+  /// The spring enters the stable step (on every surface node of the body), so substeps() may grow.
   /// Throws core::UsageError for a body index out of range.
   void attach_instrument(int body, double stiffness, const core::Vec3& tip);
   /// Moves the instrument tip (m); takes effect at the next step.
@@ -82,6 +86,12 @@ class World {
   bool asleep() const { return asleep_; }
   static constexpr int kCalmSubstepsToSleep = 200;
 
+  /// Largest stable sub-step in s found for the world (before splitting time_step() evenly).
+  double stable_step() const { return stable_step_; }
+  /// Fraction of the spectral stable step that sub-steps may use: margin for the power
+  /// iteration approaching λ_max from below and for stiffening under large deformation.
+  static constexpr double kStableStepSafety = 0.8;
+
   /// SHA-256 (hex) of every body's current and previous positions, in body order: equal hashes
   /// mean bit-identical states.
   std::string state_hash() const;
@@ -91,6 +101,8 @@ class World {
   core::Vec3 gravity_;
   double time_step_ = 1.0e-3;
   int substeps_ = 1;
+  double stable_step_ = 0.0;
+  double contact_stiffness_ = 0.0;
   long long steps_ = 0;
   std::unique_ptr<ContactResponse> contact_;
   ConnectionSprings connections_;
@@ -108,6 +120,8 @@ class World {
   bool asleep_ = false;
 
   void update_sleep();
+  /// Sets stable_step_ and substeps_ from the bodies, connections, contacts and instrument.
+  void choose_substeps();
 };
 
 }  // namespace viscera::sim

@@ -1,6 +1,9 @@
 // Headless training sessions on the hysteroscopy template (issue 8 point 9): a 10-minute session
-// of the expert's tour (data/scripts/hysteroscopy-expert.json repeated, free navigation) and the
-// novice's 14.6 s session that bumps the wall. Counter real_time_factor = simulated / wall s.
+// of the expert's tour (data/scripts/hysteroscopy-expert.json repeated, free navigation), the
+// novice's 14.6 s session that bumps the wall, and the honest case for a training session:
+// 10 minutes of the novice's pattern back to back, with its wall contacts. Counters:
+// real_time_factor = simulated / wall s, contact_fraction = share of the path samples with the
+// instrument on the wall, substeps per 1 ms step.
 
 #include <benchmark/benchmark.h>
 
@@ -58,6 +61,14 @@ void run(benchmark::State& state, const nlohmann::json& json, double duration) {
     simulated += report.simulated_time;
     wall += report.wall_time;
     state.counters["contacts"] = report.metrics.contacts();
+    state.counters["substeps"] = report.substeps;
+    long long touching = 0;
+    for (const auto& sample : report.path)
+      touching += sample.in_contact ? 1 : 0;
+    state.counters["contact_fraction"] =
+        report.path.empty()
+            ? 0.0
+            : static_cast<double>(touching) / static_cast<double>(report.path.size());
   }
   state.counters["real_time_factor"] = wall > 0.0 ? simulated / wall : 0.0;
 }
@@ -72,5 +83,10 @@ void BM_HysteroscopySessionNovicePressing(benchmark::State& state) {
   run(state, json, json["waypoints"].back()["t"].get<double>());
 }
 BENCHMARK(BM_HysteroscopySessionNovicePressing)->Iterations(1)->Unit(benchmark::kSecond);
+
+void BM_HysteroscopySessionNovice10min(benchmark::State& state) {
+  run(state, repeated(script("novice"), 600.0), 600.0);
+}
+BENCHMARK(BM_HysteroscopySessionNovice10min)->Iterations(1)->Unit(benchmark::kSecond);
 
 }  // namespace

@@ -19,22 +19,7 @@ namespace {
 
 /// A 4 × 4 × 2 cm soft block with its bottom held, top face at z = 2 cm.
 core::Scenario soft_block() {
-  core::Scenario scenario;
-  core::Material material;
-  material.id = "soft";
-  material.distance_stiffness = 20000.0;
-  material.volume_stiffness = 20000.0;
-  material.distance_damping = 50.0;
-  scenario.materials[material.id] = material;
-  core::SceneObject block;
-  block.id = "block";
-  block.material = "soft";
-  block.body_kind = core::BodyKind::TetMesh;
-  block.body = viscera::testing::tet_block(4, 4, 2, 0.01);
-  block.body.fixed.assign(block.body.nodes.size(), 0);
-  for (std::size_t n = 0; n < block.body.nodes.size(); ++n)
-    block.body.fixed[n] = block.body.nodes[n].z() < 1e-9;
-  scenario.objects.push_back(block);
+  core::Scenario scenario = viscera::testing::held_soft_block();
   scenario.session.gravity = core::Vec3::Zero();
   return scenario;
 }

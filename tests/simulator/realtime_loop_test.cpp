@@ -14,21 +14,7 @@ namespace {
 
 /// A 4 × 4 × 2 cm soft block with its bottom held, top face at z = 2 cm.
 core::Scenario soft_block() {
-  core::Scenario scenario;
-  core::Material material;
-  material.id = "soft";
-  material.distance_stiffness = 20000.0;
-  material.volume_stiffness = 20000.0;
-  material.distance_damping = 50.0;
-  scenario.materials[material.id] = material;
-  core::SceneObject block;
-  block.id = "block";
-  block.material = "soft";
-  block.body_kind = core::BodyKind::TetMesh;
-  block.body = viscera::testing::tet_block(4, 4, 2, 0.01);
-  block.body.fixed.assign(block.body.nodes.size(), 0);
-  for (std::size_t n = 0; n < block.body.nodes.size(); ++n) block.body.fixed[n] = block.body.nodes[n].z() < 1e-9;
-  scenario.objects.push_back(block);
+  core::Scenario scenario = viscera::testing::held_soft_block();
   scenario.session.gravity = core::Vec3::Zero();
   return scenario;
 }
@@ -63,7 +49,8 @@ TEST(WorldInstrument, pressing_into_tissue_feels_an_outward_force_and_dents_it) 
   World world(soft_block());
   world.attach_instrument(0, 100.0, {0.02, 0.021, 0.03});
   world.set_instrument_tip({0.02, 0.021, 0.015});  // 5 mm below the top face
-  for (int s = 0; s < 300; ++s) world.step();
+  for (int s = 0; s < 300; ++s)
+    world.step();
   ASSERT_TRUE(world.instrument_in_contact());
   const core::Vec3 force = world.instrument_force();
   EXPECT_GT(force.z(), 0.0);

@@ -11,23 +11,7 @@ namespace {
 
 /// A 4 × 4 × 2 cm block held at its base, top face at z = 2 cm.
 core::Scenario block() {
-  core::Scenario scenario;
-  core::Material material;
-  material.id = "soft";
-  material.distance_stiffness = 20000.0;
-  material.volume_stiffness = 20000.0;
-  material.distance_damping = 50.0;
-  scenario.materials[material.id] = material;
-  core::SceneObject body;
-  body.id = "block";
-  body.material = "soft";
-  body.body_kind = core::BodyKind::TetMesh;
-  body.body = viscera::testing::tet_block(4, 4, 2, 0.01);
-  body.body.fixed.assign(body.body.nodes.size(), 0);
-  for (std::size_t n = 0; n < body.body.nodes.size(); ++n)
-    body.body.fixed[n] = body.body.nodes[n].z() < 1e-9;
-  scenario.objects.push_back(body);
-  return scenario;
+  return viscera::testing::held_soft_block();
 }
 
 nlohmann::json script(const std::vector<std::pair<double, core::Vec3>>& waypoints) {

@@ -2,6 +2,7 @@
 // Structured tet meshes shared by the physics tests and benchmarks.
 
 #include "core/mesh/tet_mesh.h"
+#include "core/scenario/scenario.h"
 
 namespace viscera::testing {
 
@@ -11,17 +12,43 @@ inline core::TetMesh tet_block(int nx, int ny, int nz, double cell) {
   const auto index = [&](int i, int j, int k) { return (k * (ny + 1) + j) * (nx + 1) + i; };
   for (int k = 0; k <= nz; ++k)
     for (int j = 0; j <= ny; ++j)
-      for (int i = 0; i <= nx; ++i) mesh.nodes.emplace_back(cell * i, cell * j, cell * k);
+      for (int i = 0; i <= nx; ++i)
+        mesh.nodes.emplace_back(cell * i, cell * j, cell * k);
   static constexpr int kPaths[6][2] = {{1, 3}, {1, 5}, {2, 3}, {2, 6}, {4, 5}, {4, 6}};
   for (int k = 0; k < nz; ++k)
     for (int j = 0; j < ny; ++j)
       for (int i = 0; i < nx; ++i) {
-        const auto corner = [&](int c) { return index(i + (c & 1), j + ((c >> 1) & 1), k + ((c >> 2) & 1)); };
-        for (const auto& path : kPaths) mesh.tets.push_back({corner(0), corner(path[0]), corner(path[1]), corner(7)});
+        const auto corner = [&](int c) {
+          return index(i + (c & 1), j + ((c >> 1) & 1), k + ((c >> 2) & 1));
+        };
+        for (const auto& path : kPaths)
+          mesh.tets.push_back({corner(0), corner(path[0]), corner(path[1]), corner(7)});
       }
   core::orient_tets_positively(mesh);
   mesh.surface_faces = core::boundary_faces(mesh.tets);
   return mesh;
+}
+
+/// A scenario of one 4 × 4 × 2 cm soft block (object "block", material "soft": 20 kPa distance
+/// and volume stiffness, 50 damping) with its bottom face held; its top face is at z = 2 cm.
+inline core::Scenario held_soft_block() {
+  core::Scenario scenario;
+  core::Material material;
+  material.id = "soft";
+  material.distance_stiffness = 20000.0;
+  material.volume_stiffness = 20000.0;
+  material.distance_damping = 50.0;
+  scenario.materials[material.id] = material;
+  core::SceneObject block;
+  block.id = "block";
+  block.material = "soft";
+  block.body_kind = core::BodyKind::TetMesh;
+  block.body = tet_block(4, 4, 2, 0.01);
+  block.body.fixed.assign(block.body.nodes.size(), 0);
+  for (std::size_t n = 0; n < block.body.nodes.size(); ++n)
+    block.body.fixed[n] = block.body.nodes[n].z() < 1e-9;
+  scenario.objects.push_back(block);
+  return scenario;
 }
 
 }  // namespace viscera::testing

@@ -78,6 +78,25 @@ AssetSummary read_summary(const SqliteDatabase& db, const SqliteStatement& row) 
   return s;
 }
 
+/// The rows of version ?2 of entry ?1, or of its latest version when ?2 is 0.
+constexpr const char* kVersionRows =
+    " FROM entries WHERE name = ?1 AND (version = ?2 OR (?2 = 0 AND version = (SELECT "
+    "max(version) FROM entries WHERE name = ?1)))";
+
+/// Binds `name` and `version` to a kVersionRows query and steps to its row; throws InputError
+/// naming the library `file` and the entry when there is none.
+void step_to_version(SqliteStatement& select, const std::string& name, int version,
+                     const std::string& file) {
+  select.bind(1, name);
+  select.bind(2, std::int64_t{version});
+  if (!select.step()) {
+    throw InputError(version == 0 ? "the library has no entry \"" + name + "\""
+                                  : "the library has no version " + std::to_string(version) +
+                                        " of \"" + name + "\"",
+                     {file, "", name});
+  }
+}
+
 }  // namespace
 
 std::string to_string(AssetType type) {
@@ -249,18 +268,8 @@ AssetEntry AssetLibrary::get(const std::string& name, int version) const {
   const SqliteDatabase db{db_, path_.string()};
   SqliteTransaction snapshot(db, false);
   SqliteStatement select(
-      db, std::string("SELECT ") + kSummaryColumns +
-              ", payload, thumbnail FROM entries WHERE name = ?1 AND "
-              "(version = ?2 OR (?2 = 0 AND version = (SELECT max(version) FROM entries "
-              "WHERE name = ?1)))");
-  select.bind(1, name);
-  select.bind(2, std::int64_t{version});
-  if (!select.step()) {
-    throw InputError(version == 0 ? "the library has no entry \"" + name + "\""
-                                  : "the library has no version " + std::to_string(version) +
-                                        " of \"" + name + "\"",
-                     {path_.string(), "", name});
-  }
+      db, std::string("SELECT ") + kSummaryColumns + ", payload, thumbnail" + kVersionRows);
+  step_to_version(select, name, version, path_.string());
   AssetEntry entry;
   entry.summary = read_summary(db, select);
   entry.payload = select.blob(9);
@@ -275,18 +284,8 @@ AssetEntry AssetLibrary::get(const std::string& name, int version) const {
 std::string AssetLibrary::thumbnail(const std::string& name, int version) const {
   const SqliteDatabase db{db_, path_.string()};
   SqliteTransaction snapshot(db, false);
-  SqliteStatement select(db,
-                         "SELECT thumbnail FROM entries WHERE name = ?1 AND "
-                         "(version = ?2 OR (?2 = 0 AND version = (SELECT max(version) FROM "
-                         "entries WHERE name = ?1)))");
-  select.bind(1, name);
-  select.bind(2, std::int64_t{version});
-  if (!select.step()) {
-    throw InputError(version == 0 ? "the library has no entry \"" + name + "\""
-                                  : "the library has no version " + std::to_string(version) +
-                                        " of \"" + name + "\"",
-                     {path_.string(), "", name});
-  }
+  SqliteStatement select(db, std::string("SELECT thumbnail") + kVersionRows);
+  step_to_version(select, name, version, path_.string());
   return select.blob(0);
 }
 

@@ -17,21 +17,8 @@ namespace {
 /// x = 3 cm, same y and z) are joined by springs of `stiffness` N/m.
 core::Scenario two_blocks(bool connected, double stiffness = 200.0) {
   core::Scenario scenario;
-  core::Material material;
-  material.id = "soft";
-  material.density = 1000.0;
-  material.distance_stiffness = 20000.0;
-  material.volume_stiffness = 20000.0;
-  material.distance_damping = 50.0;
-  scenario.materials[material.id] = material;
-  core::SceneObject left;
-  left.id = "left";
-  left.material = "soft";
-  left.body_kind = core::BodyKind::TetMesh;
-  left.body = viscera::testing::tet_block(2, 2, 2, 0.01);
-  left.body.fixed.assign(left.body.nodes.size(), 0);
-  for (std::size_t n = 0; n < left.body.nodes.size(); ++n)
-    if (left.body.nodes[n].z() < 1e-9) left.body.fixed[n] = 1;
+  scenario.materials["soft"] = viscera::testing::soft_test_material();
+  const core::SceneObject left = viscera::testing::held_block("left", 2, 2, 2, 0.01);
   core::SceneObject right = left;
   right.id = "right";
   right.body.fixed.clear();

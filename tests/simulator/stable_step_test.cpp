@@ -114,21 +114,8 @@ TEST(StableStep, the_verlet_bound_separates_bounded_from_growing_oscillations) {
 
 TEST(StableStep, a_world_at_its_spectral_substeps_loses_energy_from_a_jiggled_start) {
   core::Scenario scenario;
-  core::Material material;
-  material.id = "soft";
-  material.density = 1000.0;
-  material.distance_stiffness = 20000.0;
-  material.volume_stiffness = 20000.0;
-  material.distance_damping = 5.0;
-  scenario.materials[material.id] = material;
-  core::SceneObject block;
-  block.id = "block";
-  block.material = "soft";
-  block.body_kind = core::BodyKind::TetMesh;
-  block.body = viscera::testing::tet_block(3, 3, 3, 0.005);
-  block.body.fixed.assign(block.body.nodes.size(), 0);
-  for (std::size_t n = 0; n < block.body.nodes.size(); ++n)
-    block.body.fixed[n] = block.body.nodes[n].z() < 1e-9 ? 1 : 0;
+  scenario.materials["soft"] = viscera::testing::soft_test_material(5.0);
+  const core::SceneObject block = viscera::testing::held_block("block", 3, 3, 3, 0.005);
   scenario.objects.push_back(block);
   scenario.session.gravity = Vec3::Zero();
   scenario.session.time_step = 1e-3;

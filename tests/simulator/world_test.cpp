@@ -13,23 +13,8 @@ namespace {
 /// A 2 × 2 × 3 cm soft block on its fixed base, under gravity, at a step of `time_step` s.
 core::Scenario small_block(double time_step = 1e-3) {
   core::Scenario scenario;
-  core::Material material;
-  material.id = "soft";
-  material.density = 1000.0;
-  material.distance_stiffness = 20000.0;
-  material.volume_stiffness = 20000.0;
-  material.distance_damping = 50.0;
-  scenario.materials[material.id] = material;
-  core::SceneObject block;
-  block.id = "block";
-  block.material = "soft";
-  block.body_kind = core::BodyKind::TetMesh;
-  block.body = viscera::testing::tet_block(2, 2, 3, 0.01);
-  block.body.fixed.assign(block.body.nodes.size(), 0);
-  for (std::size_t n = 0; n < block.body.nodes.size(); ++n) {
-    if (block.body.nodes[n].z() < 1e-9) block.body.fixed[n] = 1;
-  }
-  scenario.objects.push_back(block);
+  scenario.materials["soft"] = viscera::testing::soft_test_material();
+  scenario.objects.push_back(viscera::testing::held_block("block", 2, 2, 3, 0.01));
   scenario.session.gravity = core::Vec3(0.0, 0.0, -9.81);
   scenario.session.time_step = time_step;
   return scenario;
@@ -38,7 +23,8 @@ core::Scenario small_block(double time_step = 1e-3) {
 std::string hash_after(double simulated_time, double time_step) {
   World world(small_block(time_step));
   const auto steps = static_cast<int>(std::lround(simulated_time / time_step));
-  for (int s = 0; s < steps; ++s) world.step();
+  for (int s = 0; s < steps; ++s)
+    world.step();
   return world.state_hash();
 }
 
@@ -80,7 +66,8 @@ TEST(World, energies_at_rest_are_zero_and_follow_a_rigid_motion) {
 
 TEST(World, non_finite_positions_raise_an_error_naming_the_body_and_step) {
   World world(small_block());
-  for (int s = 0; s < 3; ++s) world.step();
+  for (int s = 0; s < 3; ++s)
+    world.step();
   world.bodies()[0].positions()[20].y() = std::numeric_limits<double>::quiet_NaN();
   try {
     world.step();

@@ -1,6 +1,8 @@
 #pragma once
 // Structured tet meshes shared by the physics tests and benchmarks.
 
+#include <string>
+
 #include "core/mesh/tet_mesh.h"
 #include "core/scenario/scenario.h"
 
@@ -29,25 +31,37 @@ inline core::TetMesh tet_block(int nx, int ny, int nz, double cell) {
   return mesh;
 }
 
-/// A scenario of one 4 × 4 × 2 cm soft block (object "block", material "soft": 20 kPa distance
-/// and volume stiffness, 50 damping) with its bottom face held; its top face is at z = 2 cm.
-inline core::Scenario held_soft_block() {
-  core::Scenario scenario;
+/// The "soft" tissue of the physics tests (id "soft"): 20 kPa distance and volume stiffness,
+/// `damping` Pa·s distance damping, 1000 kg/m³.
+inline core::Material soft_test_material(double damping = 50.0) {
   core::Material material;
   material.id = "soft";
+  material.density = 1000.0;
   material.distance_stiffness = 20000.0;
   material.volume_stiffness = 20000.0;
-  material.distance_damping = 50.0;
-  scenario.materials[material.id] = material;
+  material.distance_damping = damping;
+  return material;
+}
+
+/// Object `id` of material "soft": tet_block(nx, ny, nz, cell) with its nodes at z = 0 held.
+inline core::SceneObject held_block(const std::string& id, int nx, int ny, int nz, double cell) {
   core::SceneObject block;
-  block.id = "block";
+  block.id = id;
   block.material = "soft";
   block.body_kind = core::BodyKind::TetMesh;
-  block.body = tet_block(4, 4, 2, 0.01);
+  block.body = tet_block(nx, ny, nz, cell);
   block.body.fixed.assign(block.body.nodes.size(), 0);
   for (std::size_t n = 0; n < block.body.nodes.size(); ++n)
-    block.body.fixed[n] = block.body.nodes[n].z() < 1e-9;
-  scenario.objects.push_back(block);
+    block.body.fixed[n] = block.body.nodes[n].z() < 1e-9 ? 1 : 0;
+  return block;
+}
+
+/// A scenario of one 4 × 4 × 2 cm soft block (object "block") with its bottom face held; its
+/// top face is at z = 2 cm.
+inline core::Scenario held_soft_block() {
+  core::Scenario scenario;
+  scenario.materials["soft"] = soft_test_material();
+  scenario.objects.push_back(held_block("block", 4, 4, 2, 0.01));
   return scenario;
 }
 

@@ -56,15 +56,16 @@ void write_collision(SofaXml& xml, const SofaBody& body, const SofaContact& cont
   xml.text += "    <Node name=\"collision\">\n";
   xml.element(in, "MeshTopology",
               " name=\"surface\" triangles=\"" + sofa_indices(triangles) + "\"");
-  xml.element(in, "MechanicalObject",
-              " name=\"points\" template=\"Vec3d\" position=\"" + sofa_numbers(positions) + "\"");
+  xml.element(
+      in, "MechanicalObject",
+      " name=\"surface_dofs\" template=\"Vec3d\" position=\"" + sofa_numbers(positions) + "\"");
   std::string model = " contactStiffness=\"" + sofa_number(contact.model_stiffness) + "\"";
   if (body.all_fixed) model += " moving=\"0\" simulated=\"0\"";
   xml.element(in, "TriangleCollisionModel", " name=\"triangles\"" + model);
   xml.element(in, "LineCollisionModel", " name=\"lines\"" + model);
   xml.element(in, "PointCollisionModel", " name=\"points\"" + model);
   xml.element(in, "SubsetMapping",
-              " name=\"boundary\" input=\"@../dofs\" output=\"@points\" indices=\"" +
+              " name=\"boundary\" input=\"@../dofs\" output=\"@surface_dofs\" indices=\"" +
                   sofa_indices(subset) + "\"");
   xml.text += "    </Node>\n";
 }

@@ -153,6 +153,60 @@ int SofaSceneReader::plugins_without_plugin_name() const {
   return count;
 }
 
+namespace {
+
+void check_links(const std::vector<const SofaElement*>& path, std::vector<std::string>& problems) {
+  const SofaElement& node = *path.back();
+  std::map<std::string, int> names;
+  for (const auto& c : node.children)
+    if (c.has("name")) ++names[c.attribute("name")];
+  for (const auto& [name, count] : names)
+    if (count > 1) problems.push_back("two elements named \"" + name + "\" in one node");
+  for (const auto& c : node.children) {
+    for (const char* key : {"src", "input", "output", "object1", "object2"}) {
+      const std::string link = c.attribute(key);
+      if (link.empty() || link[0] != '@') continue;
+      std::vector<const SofaElement*> at = path;
+      std::istringstream parts(link.substr(1));
+      std::vector<std::string> segments;
+      for (std::string segment; std::getline(parts, segment, '/');)
+        segments.push_back(segment);
+      bool found = !segments.empty();
+      for (std::size_t i = 0; found && i < segments.size(); ++i) {
+        if (segments[i] == "..") {
+          found = at.size() > 1;
+          if (found) at.pop_back();
+          continue;
+        }
+        int matches = 0;
+        const SofaElement* next = nullptr;
+        for (const auto& candidate : at.back()->children) {
+          if (candidate.attribute("name") == segments[i]) {
+            ++matches;
+            next = &candidate;
+          }
+        }
+        found = matches == 1 && (i + 1 == segments.size() || next->type == "Node");
+        if (found && next->type == "Node") at.push_back(next);
+      }
+      if (!found) problems.push_back(c.type + " " + key + "=\"" + link + "\" does not resolve");
+    }
+    if (c.type == "Node") {
+      std::vector<const SofaElement*> deeper = path;
+      deeper.push_back(&c);
+      check_links(deeper, problems);
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<std::string> unresolved_links(const SofaElement& root) {
+  std::vector<std::string> problems;
+  check_links({&root}, problems);
+  return problems;
+}
+
 void collect_component_types(const SofaElement& element, std::vector<std::string>& types) {
   for (const auto& c : element.children) {
     if (c.type == "Node")

@@ -69,6 +69,12 @@ class SofaSceneReader {
   std::string header_;
 };
 
+/// Problems with the scene's links, as SOFA resolves them (a component or node path relative to
+/// the node holding the link, ".." for the parent): every "@…" value of the link attributes
+/// (src, input, output, object1, object2) must name exactly one element, and no two elements
+/// of a node may share a name. Empty when every link resolves.
+std::vector<std::string> unresolved_links(const SofaElement& root);
+
 /// Every component type used anywhere under `element` (Node excluded).
 void collect_component_types(const SofaElement& element, std::vector<std::string>& types);
 

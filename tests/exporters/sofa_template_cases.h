@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <map>
+#include <ostream>
 #include <string>
 #include <utility>
 
@@ -17,6 +18,11 @@ struct TemplateCase {
   const char* sets;            ///< extra `viscera new` arguments, e.g. " --set floor=1"
   const char* refused_object;  ///< nullptr when the template exports
 };
+
+/// Names the case in test output.
+inline void PrintTo(const TemplateCase& c, std::ostream* os) {
+  *os << c.label;
+}
 
 /// The package of a case made by `viscera new --seed 2`, once per build of the program for all
 /// the test processes (in shared_test_folder()).

@@ -34,7 +34,17 @@ StagedOutput::StagedOutput(const fs::path& target)
     throw core::UsageError("the output \"" + target.string() + "\" names no file");
   const fs::path parent = folder_.parent_path();
   if (!fs::is_directory(parent, error)) {
-    throw core::OutputError("the output folder does not exist", {target.string(), "", ""});
+    // Create the missing folders, remembering the outermost so a failed export removes them.
+    fs::path outermost = parent;
+    while (outermost.has_parent_path() && outermost.parent_path() != outermost &&
+           !fs::exists(outermost.parent_path(), error))
+      outermost = outermost.parent_path();
+    if (fs::exists(parent, error) || !fs::create_directories(parent, error) || error) {
+      throw core::OutputError("cannot create the output folder " + parent.string() +
+                                  (error ? ": " + error.message() : ": a file is in the way"),
+                              {target.string(), "", ""});
+    }
+    created_ = outermost;
   }
   if (!fs::create_directory(folder_, error) || error) {
     throw core::OutputError(
@@ -46,6 +56,7 @@ StagedOutput::StagedOutput(const fs::path& target)
 StagedOutput::~StagedOutput() {
   std::error_code ignored;
   fs::remove_all(folder_, ignored);
+  if (!committed_ && !created_.empty()) fs::remove_all(created_, ignored);
 }
 
 std::vector<fs::path> StagedOutput::commit() {
@@ -98,6 +109,7 @@ std::vector<fs::path> StagedOutput::commit() {
   for (const auto& [destination, backup] : set_aside)
     fs::remove_all(backup, ignored);
   std::rotate(written.rbegin(), written.rbegin() + 1, written.rend());  // the main file first
+  committed_ = true;
   return written;
 }
 

@@ -1,8 +1,15 @@
 #include "importers/meshing/label_body.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
+#include <cmath>
+#include <condition_variable>
 #include <future>
+#include <mutex>
+#include <thread>
+
+#include "core/error.h"
 
 namespace viscera::importers {
 namespace {
@@ -11,50 +18,111 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+/// Cancels the given Progress objects when `seconds` have passed (0: never), until destroyed.
+class Deadline {
+ public:
+  Deadline(double seconds, std::initializer_list<core::Progress*> cancel) {
+    if (!(seconds > 0.0) || !std::isfinite(seconds)) return;
+    const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+    std::vector<core::Progress*> targets(cancel);
+    watcher_ = std::thread([this, until, targets] {
+      std::unique_lock lock(mutex_);
+      if (!wake_.wait_until(lock, until, [this] { return finished_; })) {
+        expired_.store(true);
+        for (auto* p : targets)
+          p->cancel();
+      }
+    });
+  }
+  ~Deadline() {
+    {
+      std::lock_guard lock(mutex_);
+      finished_ = true;
+    }
+    wake_.notify_all();
+    if (watcher_.joinable()) watcher_.join();
+  }
+  Deadline(const Deadline&) = delete;
+  Deadline& operator=(const Deadline&) = delete;
+
+  bool expired() const { return expired_.load(); }
+
+ private:
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  bool finished_ = false;
+  std::atomic<bool> expired_{false};
+  std::thread watcher_;
+};
+
+/// `stage` with the budget spent as the reason, naming `what`.
+core::ValidationError out_of_time(double budget, const std::string& stage,
+                                  const std::string& what) {
+  char seconds[32];
+  std::snprintf(seconds, sizeof seconds, "%g", budget);
+  return core::ValidationError("meshing did not finish within its time budget of " +
+                                   std::string(seconds) + " s (stopped during the " + stage +
+                                   "); give a larger --time-limit or fewer --tets",
+                               {what, "", ""});
+}
+
 }  // namespace
 
 LabelBody mesh_label_body(const core::LabelMap& labels, const LabelBodyOptions& options,
                           const std::string& what, core::Progress& progress) {
   LabelBody result;
   const auto begin = std::chrono::steady_clock::now();
-  const auto make_surface = [&](core::Progress& surface_progress) {
-    const auto start = std::chrono::steady_clock::now();
-    LabelSurface surface =
-        label_surface(labels, options.tets.label, options.surface, what, surface_progress);
-    surface.seconds["total"] = seconds_since(start);
-    return surface;
-  };
-  std::future<LabelSurface> surface;
   // The bar follows Mesh_3; the surface thread reports to a Progress of its own, cancelled
-  // when the tets end with an error or a cancellation.
+  // when the tets end with an error, a cancellation or the time budget.
   core::Progress quiet;
-  if (options.concurrent_surface) {
-    surface = std::async(std::launch::async, [&] { return make_surface(quiet); });
-  } else {
-    result.surface = make_surface(progress);
-  }
-  auto start = std::chrono::steady_clock::now();
+  const Deadline deadline(options.time_limit_seconds, {&progress, &quiet});
+  std::string stage = "tetrahedra";
   try {
-    result.body = mesh_label_map(labels, options.tets, what, progress, &result.criteria);
-  } catch (...) {
-    quiet.cancel();
-    if (surface.valid()) surface.wait();
+    const auto make_surface = [&](core::Progress& surface_progress) {
+      const auto start = std::chrono::steady_clock::now();
+      LabelSurface surface =
+          label_surface(labels, options.tets.label, options.surface, what, surface_progress);
+      surface.seconds["total"] = seconds_since(start);
+      return surface;
+    };
+    std::future<LabelSurface> surface;
+    if (options.concurrent_surface) {
+      surface = std::async(std::launch::async, [&] { return make_surface(quiet); });
+    } else {
+      stage = "visual surface";
+      result.surface = make_surface(progress);
+      stage = "tetrahedra";
+    }
+    auto start = std::chrono::steady_clock::now();
+    try {
+      result.body = mesh_label_map(labels, options.tets, what, progress, &result.criteria);
+    } catch (...) {
+      quiet.cancel();
+      if (surface.valid()) surface.wait();
+      throw;
+    }
+    result.seconds["tets"] = seconds_since(start);
+    stage = "visual surface";
+    if (surface.valid()) result.surface = surface.get();
+    for (const auto& [step, seconds] : result.surface.seconds)
+      result.seconds[step == "total" ? "surface" : "surface." + step] = seconds;
+
+    stage = "embedding";
+    start = std::chrono::steady_clock::now();
+    progress.check_cancelled();
+    result.embedding = core::embed_points(result.surface.mesh.vertices, result.body);
+    result.seconds["embedding"] = seconds_since(start);
+
+    stage = "quality report";
+    start = std::chrono::steady_clock::now();
+    progress.check_cancelled();
+    result.quality = core::tet_quality(result.body, options.quality);
+    result.seconds["quality"] = seconds_since(start);
+    result.seconds["total"] = seconds_since(begin);
+  } catch (const core::CancelledError&) {
+    if (deadline.expired()) throw out_of_time(options.time_limit_seconds, stage, what);
     throw;
   }
-  result.seconds["tets"] = seconds_since(start);
-  if (surface.valid()) result.surface = surface.get();
-  for (const auto& [step, seconds] : result.surface.seconds)
-    result.seconds[step == "total" ? "surface" : "surface." + step] = seconds;
-
-  start = std::chrono::steady_clock::now();
-  progress.check_cancelled();
-  result.embedding = core::embed_points(result.surface.mesh.vertices, result.body);
-  result.seconds["embedding"] = seconds_since(start);
-
-  start = std::chrono::steady_clock::now();
-  result.quality = core::tet_quality(result.body, options.quality);
-  result.seconds["quality"] = seconds_since(start);
-  result.seconds["total"] = seconds_since(begin);
   return result;
 }
 

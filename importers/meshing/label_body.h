@@ -25,6 +25,10 @@ struct LabelBodyOptions {
   /// deterministic, so the result is the same; on 2 cores sequential Mesh_3 beside the surface
   /// uses both).
   bool concurrent_surface = true;
+  /// Wall-clock budget of the whole pipeline, s (0: none). When it runs out every stage stops
+  /// at its next cancellation point and mesh_label_body throws core::ValidationError naming the
+  /// stage and the budget (the caller's Progress is then cancelled too).
+  double time_limit_seconds = 0.0;
 };
 
 /// A body made from a label map.
@@ -39,7 +43,8 @@ struct LabelBody {
   std::map<std::string, double> seconds;
 };
 
-/// Runs the pipeline on `labels`. Throws as label_surface() and mesh_label_map().
+/// Runs the pipeline on `labels`. Throws as label_surface() and mesh_label_map(), and
+/// core::ValidationError when options.time_limit_seconds runs out.
 LabelBody mesh_label_body(const core::LabelMap& labels, const LabelBodyOptions& options,
                           const std::string& what,
                           core::Progress& progress = core::Progress::none());

@@ -30,6 +30,7 @@ struct TetsCommandOptions {
   std::size_t tets = 150000, triangles = 50000;
   std::vector<std::string> label_sizes;
   int threads = 1;
+  double time_limit = 300.0;
   bool no_exude = false, no_optimize = false, no_surface = false, json = false;
 };
 
@@ -111,6 +112,7 @@ void run_tets(const TetsCommandOptions& o) {
     options.tets.exude = !o.no_exude;
     options.tets.threads = o.threads;
     options.surface.target_triangles = o.triangles;
+    options.time_limit_seconds = o.time_limit;
     importers::LabelBody made =
         importers::mesh_label_body(labels, options, o.input, bar.progress());
     body = std::move(made.body);
@@ -223,6 +225,10 @@ void add_mesh_tets_commands(CLI::App& mesh) {
       ->check(CLI::Range(1, 256));
   tets->add_option("--triangles", o->triangles, "Label map: visual surface triangle budget")
       ->capture_default_str();
+  tets->add_option("--time-limit", o->time_limit,
+                   "Label map: give up (exit 4, nothing written) after this many seconds; 0: never")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
   tets->add_option("--grading", o->grading, "Surface: size-field grading distance, m (gmsh)");
   tets->add_flag("--no-optimize", o->no_optimize, "Surface: skip gmsh's optimisation");
   tets->add_option("--units", o->units, "Surface: unit of the input file (m, cm, mm)")

@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "core/error.h"
+#include "importers/meshing/tet_boundary_surface.h"
 
 namespace viscera::importers {
 namespace {
@@ -78,6 +79,7 @@ LabelBody mesh_label_body(const core::LabelMap& labels, const LabelBodyOptions& 
   const Deadline deadline(options.time_limit_seconds, {&progress, &quiet});
   std::string stage = "tetrahedra";
   try {
+    const bool contour = options.visual_surface == VisualSurfaceSource::LabelContour;
     const auto make_surface = [&](core::Progress& surface_progress) {
       const auto start = std::chrono::steady_clock::now();
       LabelSurface surface =
@@ -86,9 +88,9 @@ LabelBody mesh_label_body(const core::LabelMap& labels, const LabelBodyOptions& 
       return surface;
     };
     std::future<LabelSurface> surface;
-    if (options.concurrent_surface) {
+    if (contour && options.concurrent_surface) {
       surface = std::async(std::launch::async, [&] { return make_surface(quiet); });
-    } else {
+    } else if (contour) {
       stage = "visual surface";
       result.surface = make_surface(progress);
       stage = "tetrahedra";
@@ -103,15 +105,26 @@ LabelBody mesh_label_body(const core::LabelMap& labels, const LabelBodyOptions& 
     }
     result.seconds["tets"] = seconds_since(start);
     stage = "visual surface";
-    if (surface.valid()) result.surface = surface.get();
-    for (const auto& [step, seconds] : result.surface.seconds)
-      result.seconds[step == "total" ? "surface" : "surface." + step] = seconds;
-
-    stage = "embedding";
-    start = std::chrono::steady_clock::now();
-    progress.check_cancelled();
-    result.embedding = core::embed_points(result.surface.mesh.vertices, result.body);
-    result.seconds["embedding"] = seconds_since(start);
+    if (contour) {
+      if (surface.valid()) result.surface = surface.get();
+      for (const auto& [step, seconds] : result.surface.seconds)
+        result.seconds[step == "total" ? "surface" : "surface." + step] = seconds;
+      stage = "embedding";
+      start = std::chrono::steady_clock::now();
+      progress.check_cancelled();
+      result.embedding = core::embed_points(result.surface.mesh.vertices, result.body);
+      result.seconds["embedding"] = seconds_since(start);
+    } else {
+      start = std::chrono::steady_clock::now();
+      progress.check_cancelled();
+      TetBoundarySurface boundary = tet_boundary_surface(result.body);
+      result.surface.label = options.tets.label;
+      result.surface.mesh = std::move(boundary.mesh);
+      result.embedding = std::move(boundary.embedding);
+      // Surface and embedding are one step here.
+      result.seconds["surface"] = seconds_since(start);
+      result.seconds["embedding"] = 0.0;
+    }
 
     stage = "quality report";
     start = std::chrono::steady_clock::now();

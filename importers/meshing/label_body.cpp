@@ -70,7 +70,11 @@ core::ValidationError out_of_time(double budget, const std::string& stage,
 }  // namespace
 
 LabelBody mesh_label_body(const core::LabelMap& labels, const LabelBodyOptions& options,
-                          const std::string& what, core::Progress& progress) {
+                          const std::string& what, core::Progress& caller_progress) {
+  // The budget cancels the Progress the work reports to: the caller's own, or one of this call
+  // when the caller gave the shared silent one (which must never be cancelled).
+  core::Progress own;
+  core::Progress& progress = &caller_progress == &core::Progress::none() ? own : caller_progress;
   LabelBody result;
   const auto begin = std::chrono::steady_clock::now();
   // The bar follows Mesh_3; the surface thread reports to a Progress of its own, cancelled

@@ -38,7 +38,7 @@ struct LabelBodyOptions {
   bool concurrent_surface = true;
   /// Wall-clock budget of the whole pipeline, s (0: none). When it runs out every stage stops
   /// at its next cancellation point and mesh_label_body throws core::ValidationError naming the
-  /// stage and the budget (the caller's Progress is then cancelled too).
+  /// stage and the budget (a Progress the caller passed is then cancelled too).
   double time_limit_seconds = 0.0;
 };
 

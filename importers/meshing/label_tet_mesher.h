@@ -22,7 +22,7 @@ struct LabelTetMeshingOptions {
   /// Upper bound of the tets' circumradius, m. 0 = from `target_tets`.
   double cell_size = 0.0;
   /// Approximate tet count used when cell_size is 0: the cell size is chosen from the labelled
-  /// volume (about 0.19·s³ per tet at the default criteria), never below 1.5 voxel spacings.
+  /// volume (about 0.2·s³ per tet at the default criteria), never below 1.5 voxel spacings.
   std::size_t target_tets = 150000;
   std::map<int, double> label_cell_size;  ///< per-label cell size, m (overrides cell_size)
   double cell_radius_edge_ratio = 3.0;    ///< upper bound of circumradius / shortest edge

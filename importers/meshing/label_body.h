@@ -28,7 +28,9 @@ enum class VisualSurfaceSource {
 
 /// Options of the whole pipeline; `tets.label` also selects the surface's label.
 struct LabelBodyOptions {
-  VisualSurfaceSource visual_surface = VisualSurfaceSource::TetBoundary;
+  /// The library keeps the contour (callers such as the studio offer its triangle budget);
+  /// `viscera mesh tets` defaults to the tets' boundary (--surface).
+  VisualSurfaceSource visual_surface = VisualSurfaceSource::LabelContour;
   LabelSurfaceOptions surface;
   LabelTetMeshingOptions tets;
   core::TetQualityOptions quality;

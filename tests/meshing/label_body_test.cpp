@@ -24,6 +24,7 @@ TEST(LabelBody, tet_boundary_surface_is_closed_outward_embedded_exactly_and_on_t
   const double a = 0.018, c = 0.027;
   const auto labels = testing::spheroid_phantom(a, c, frame);
   LabelBodyOptions options;
+  options.visual_surface = VisualSurfaceSource::TetBoundary;
   options.tets.cell_size = 0.003;
   const auto made = importers::mesh_label_body(labels, options, "spheroid.vti");
   const auto& surface = made.surface.mesh;

@@ -19,19 +19,25 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-/// Cancels the given Progress objects when `seconds` have passed (0: never), until destroyed.
+/// Until destroyed: cancels `side` as soon as `main` is cancelled (a user's Cancel reaches the
+/// surface thread too), and both when `seconds` have passed (0: never).
 class Deadline {
  public:
-  Deadline(double seconds, std::initializer_list<core::Progress*> cancel) {
-    if (!(seconds > 0.0) || !std::isfinite(seconds)) return;
-    const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-    std::vector<core::Progress*> targets(cancel);
-    watcher_ = std::thread([this, until, targets] {
+  Deadline(double seconds, core::Progress& main, core::Progress& side) {
+    const bool limited = seconds > 0.0 && std::isfinite(seconds);
+    const auto until = std::chrono::steady_clock::now() +
+                       std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                           std::chrono::duration<double>(limited ? seconds : 0.0));
+    watcher_ = std::thread([this, limited, until, &main, &side] {
       std::unique_lock lock(mutex_);
-      if (!wake_.wait_until(lock, until, [this] { return finished_; })) {
-        expired_.store(true);
-        for (auto* p : targets)
-          p->cancel();
+      while (!wake_.wait_for(lock, std::chrono::milliseconds(50), [this] { return finished_; })) {
+        if (limited && std::chrono::steady_clock::now() >= until) {
+          expired_.store(true);
+          main.cancel();
+          side.cancel();
+          return;
+        }
+        if (main.cancelled()) side.cancel();
       }
     });
   }
@@ -80,7 +86,7 @@ LabelBody mesh_label_body(const core::LabelMap& labels, const LabelBodyOptions& 
   // The bar follows Mesh_3; the surface thread reports to a Progress of its own, cancelled
   // when the tets end with an error, a cancellation or the time budget.
   core::Progress quiet;
-  const Deadline deadline(options.time_limit_seconds, {&progress, &quiet});
+  const Deadline deadline(options.time_limit_seconds, progress, quiet);
   std::string stage = "tetrahedra";
   try {
     const bool contour = options.visual_surface == VisualSurfaceSource::LabelContour;

@@ -37,7 +37,9 @@ InputBlocker::InputBlocker(QWidget* allowed) : allowed_(allowed) {
   QCoreApplication::instance()->installEventFilter(this);
 }
 
-InputBlocker::~InputBlocker() { QCoreApplication::instance()->removeEventFilter(this); }
+InputBlocker::~InputBlocker() {
+  QCoreApplication::instance()->removeEventFilter(this);
+}
 
 bool InputBlocker::eventFilter(QObject* watched, QEvent* event) {
   if (!is_user_input(event->type())) return false;

@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "importers/volume/volume_reader.h"
+#include "tests/importers/volume_fixtures.h"
 #include "tests/support/command_runner.h"
 #include "tests/support/test_paths.h"
 

@@ -2,6 +2,8 @@
 // by shortcut or a click on the main window does nothing, from the first moment (before the
 // progress dialog shows); once the task ends, input reaches the window again.
 
+#include "studio/ui/background_task.h"
+
 #include <QAction>
 #include <QApplication>
 #include <QMainWindow>
@@ -11,8 +13,6 @@
 #include <atomic>
 #include <chrono>
 #include <thread>
-
-#include "studio/ui/background_task.h"
 
 using namespace viscera;
 
@@ -47,7 +47,8 @@ class BackgroundTaskTest : public QObject {
       input_sent = true;
     });
     const auto error = studio::run_in_background(&window, "Reading", [&](core::Progress&) {
-      while (!input_sent) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+      while (!input_sent)
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
       std::this_thread::sleep_for(std::chrono::milliseconds(50));
     });
     QVERIFY(error == nullptr);

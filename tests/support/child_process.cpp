@@ -12,8 +12,7 @@ namespace viscera::testing {
 
 KilledRun run_and_kill(const std::string& program, const std::vector<std::string>& arguments,
                        const std::filesystem::path& work_dir, std::chrono::microseconds delay) {
-  const std::string binary =
-      (std::filesystem::path(VISCERA_BINARY_DIR) / "bin" / program).string();
+  const std::string binary = (std::filesystem::path(VISCERA_BINARY_DIR) / "bin" / program).string();
   std::vector<char*> argv;
   argv.push_back(const_cast<char*>(binary.c_str()));
   for (const auto& argument : arguments)

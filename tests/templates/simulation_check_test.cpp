@@ -1,9 +1,10 @@
 // The generator's simulated second on malformed cell tissues (issue 21): a cell type index
 // outside the tissue's types is a failed check naming the place, not an escaped
 // std::out_of_range.
+#include "templates/generator/simulation_check.h"
+
 #include <gtest/gtest.h>
 
-#include "templates/generator/simulation_check.h"
 #include "templates/template_catalog.h"
 
 namespace viscera::templates {

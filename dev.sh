@@ -4,6 +4,8 @@
 #   ./dev.sh test    install missing Debian packages, build, run the whole test suite (ctest)
 #   ./dev.sh build   install missing Debian packages and build
 #   ./dev.sh bench   build and run the Google Benchmark suite (JSON under build/bench/)
+#   ./dev.sh test --sanitize   the suite built with AddressSanitizer + UndefinedBehaviorSanitizer
+#                              in its own folder (build-sanitize/); slow, not part of CI
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
@@ -26,6 +28,7 @@ packages=(
   python3-nibabel python3-pydicom libcgal-demo  # real DICOM/NIfTI/MINC/INR test images
   assimp-testmodels gmsh-doc  # real meshes (assimp's test set, gmsh's tutorials) for the mesh import tests
   nodejs  # runs the Khronos glTF validator (npm gltf-validator) in the export tests
+  clang-format python3  # the shape checks of .ci/run (layout, module graph)
 )
 
 say() { printf '\033[1m==> %s\033[0m\n' "$*" >&2; }
@@ -58,7 +61,17 @@ configure_and_build() {
   install_missing_packages
   if [ ! -f "$build/CMakeCache.txt" ]; then
     say "configuring in $build"
-    cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release
+    if [ "${sanitize:-0}" = 1 ]; then
+      # Benchmarks off: they time code the sanitizers slow down tenfold.
+      cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+        -DVISCERA_BUILD_BENCHMARKS=OFF \
+        -DCMAKE_CXX_FLAGS="-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined" \
+        -DCMAKE_C_FLAGS="-fsanitize=address,undefined -fno-omit-frame-pointer" \
+        -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
+        -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined"
+    else
+      cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release
+    fi
   fi
   say "building"
   cmake --build "$build" -j "$jobs"
@@ -118,11 +131,19 @@ run_bench() {
 
 case "${1:-}" in
   demo) run_demo ;;
-  test) run_tests ;;
+  test)
+    if [ "${2:-}" = "--sanitize" ]; then
+      sanitize=1
+      build="${VISCERA_SANITIZE_BUILD_DIR:-$root/build-sanitize}"
+      # Leaks in VTK's and Qt's global singletons are theirs; ASan's other checks stay fatal.
+      export ASAN_OPTIONS="detect_leaks=0:abort_on_error=1"
+      export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+    fi
+    run_tests ;;
   build) configure_and_build ;;
   bench) shift; run_bench "$@" ;;
   *)
-    echo "usage: ./dev.sh demo|test|build|bench" >&2
+    echo "usage: ./dev.sh demo|test [--sanitize]|build|bench" >&2
     exit 2
     ;;
 esac

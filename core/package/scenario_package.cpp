@@ -7,6 +7,7 @@
 #include <set>
 #include <sstream>
 
+#include "core/atomic_replace.h"
 #include "core/error.h"
 #include "core/package/package_manifest.h"
 #include "core/package/vtk_mesh_io.h"
@@ -23,13 +24,8 @@ constexpr ZipLimits kLimits{kMaxZipEntryBytes, kMaxPackageBytes};
 
 bool is_zip_path(const fs::path& path) { return path.extension() == ".vscz"; }
 
-/// A unique sibling or temp name: "<base>.tmp-<pid>-<n>". Never part of the output.
-fs::path temporary_sibling(const fs::path& target) {
-  static std::atomic<int> counter{0};
-  fs::path parent = target.parent_path().empty() ? fs::path(".") : target.parent_path();
-  return parent / ("." + target.filename().string() + ".tmp-" + std::to_string(getpid()) + "-" +
-                   std::to_string(counter.fetch_add(1)));
-}
+/// A unique hidden sibling name "<base>.tmp-<pid>-<n>". Never part of the output.
+fs::path temporary_sibling(const fs::path& target) { return staging_sibling(target, ".tmp-"); }
 
 /// A folder that is removed when it goes out of scope, whatever happened.
 class ScratchFolder {
@@ -62,17 +58,12 @@ void write_file(const fs::path& path, const std::string& bytes) {
   if (!out) throw OutputError("cannot write file", {path.string(), "", ""});
 }
 
-/// Replaces `target` by `staged` (a file or folder) so that at every moment either the old or
-/// the new package exists under the target name, never a mix.
+/// Replaces `target` by `staged` (a file or folder) so that at every moment, a crash included,
+/// either the old or the new package exists under the target name, never a mix; staging left
+/// by writers that were killed goes first.
 void move_into_place(const fs::path& staged, const fs::path& target) {
-  if (fs::exists(target)) {
-    const fs::path old = temporary_sibling(target);
-    fs::rename(target, old);
-    fs::rename(staged, target);
-    fs::remove_all(old);
-  } else {
-    fs::rename(staged, target);
-  }
+  replace_atomically(staged, target);
+  remove_abandoned_staging(target);
 }
 
 /// Writes the package's files into `folder` and returns the manifest.

@@ -21,7 +21,7 @@
 #include "simulator/session/manual_control.h"
 #include "simulator/session/session_trace.h"
 #include "simulator/view/view_session.h"
-#include "studio/cli/command_line.h"
+#include "core/cli/command_line.h"
 
 namespace {
 

@@ -6,6 +6,8 @@
 #include <QThread>
 #include <cmath>
 
+#include "studio/ui/input_blocker.h"
+
 namespace viscera::studio {
 
 std::exception_ptr run_in_background(QWidget* parent, const QString& title,
@@ -34,6 +36,9 @@ std::exception_ptr run_in_background(QWidget* parent, const QString& title,
   });
   QObject::connect(&dialog, &QProgressDialog::canceled, &dialog,
                    [&progress] { progress.cancel(); });
+  // The work reads the document: no edit (Undo included) may reach it until the work ends,
+  // also before the dialog shows.
+  const InputBlocker blocker(&dialog);
 
   std::exception_ptr error;
   QThread* thread = QThread::create([&] {

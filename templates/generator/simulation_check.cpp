@@ -56,6 +56,26 @@ std::vector<sim::CellType> cell_types_of(const core::CellTissueSpec& spec) {
   return types;
 }
 
+/// Throws core::InputError naming the place in the scenario when cell tissue `index` does not
+/// give every cell of its object a type among its types.
+void check_cell_types(const core::CellTissueSpec& spec, std::size_t index, std::size_t cells) {
+  const std::string where = "/scenario/cell_tissues/" + std::to_string(index);
+  if (spec.cell_types.size() != cells) {
+    throw core::InputError("cell tissue gives " + std::to_string(spec.cell_types.size()) +
+                               " cell types for " + std::to_string(cells) + " cells",
+                           {"", where + "/cell_types", "object " + spec.object});
+  }
+  for (std::size_t c = 0; c < cells; ++c) {
+    const int type = spec.cell_types[c];
+    if (type < 0 || static_cast<std::size_t>(type) >= spec.types.size()) {
+      throw core::InputError("cell type index " + std::to_string(type) + " is not one of the " +
+                                 std::to_string(spec.types.size()) + " types",
+                             {"", where + "/cell_types/" + std::to_string(c),
+                              "object " + spec.object});
+    }
+  }
+}
+
 }  // namespace
 
 ValidationCheck simulate_one_second(const core::Scenario& scenario,
@@ -120,7 +140,8 @@ ValidationCheck simulate_one_second(const core::Scenario& scenario,
         check.detail = "kinetic energy is not finite";
       }
     }
-    for (const auto& spec : scenario.cell_tissues) {
+    for (std::size_t t = 0; t < scenario.cell_tissues.size(); ++t) {
+      const core::CellTissueSpec& spec = scenario.cell_tissues[t];
       if (!check.passed) break;
       const core::SceneObject* object = scenario.find_object(spec.object);
       if (object == nullptr) {
@@ -128,13 +149,14 @@ ValidationCheck simulate_one_second(const core::Scenario& scenario,
         check.detail = "cell tissue names a missing object " + spec.object;
         break;
       }
+      check_cell_types(spec, t, object->body.nodes.size());
       sim::CellAgentTissue tissue(object->body.nodes, cell_types_of(spec), spec.cell_types,
                                   spec.neighbour_radius, spec.max_neighbours, spec.planar);
       const double limit = bounds.max_displacement_fraction * diagonal(object->body.nodes);
       // The same perturbation as the bodies': a first-step push that moves each cell by up to
       // bounds.perturbation per axis (Δx = h² F / m).
       for (std::size_t c = 0; c < tissue.positions().size(); ++c) {
-        const double mass = spec.types.at(static_cast<std::size_t>(spec.cell_types.at(c))).mass;
+        const double mass = spec.types[static_cast<std::size_t>(spec.cell_types[c])].mass;
         core::Vec3 offset(rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0));
         if (spec.planar) offset.z() = 0.0;
         tissue.push(static_cast<int>(c), mass * bounds.perturbation / (h * h) * offset);

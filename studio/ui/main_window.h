@@ -21,6 +21,9 @@
 #include "studio/document/variant_batch.h"
 #include "studio/ui/training_launcher.h"
 
+class QAction;
+class QActionGroup;
+class QDockWidget;
 class QMenu;
 class QPlainTextEdit;
 

@@ -13,6 +13,7 @@
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
 #include <QGroupBox>
+#include <QLabel>
 #include <QProgressDialog>
 #include <QScrollArea>
 #include <QSettings>
@@ -26,6 +27,7 @@
 #include <cstring>
 #include <filesystem>
 
+#include "core/error.h"
 #include "core/image/downsample.h"
 #include "core/image/image_volume_io.h"
 #include "core/package/scenario_package.h"
@@ -42,6 +44,7 @@
 #include "studio/ui/segmentation_panel.h"
 #include "studio/ui/template_dialog.h"
 #include "studio/ui/texture_panel.h"
+#include "studio/ui/volume_rendering.h"
 #include "templates/geometry/surface_queries.h"
 #include "templates/template_catalog.h"
 #include "tests/studio_gui/image_checks.h"
@@ -271,7 +274,8 @@ class ClinicalUseTest : public QObject {
     QVERIFY2(errors_.isEmpty(), qPrintable(errors_.join('\n')));
     const core::SceneObject* uterus = window.document().scenario().find_object("uterus");
     QVERIFY(uterus->surface.vertex_attributes.contains(textures::kSeamVertexAttribute));
-    QVERIFY_EXCEPTION_THROWN(templates::SurfaceQueries(uterus->surface, "baked"), core::InputError);
+    QVERIFY_EXCEPTION_THROWN(templates::SurfaceQueries baked(uterus->surface, "baked"),
+                             core::InputError);
 
     // Click the middle of the view: the outside of the uterus.
     studio::PathologyPanel* panel = window.organ_panels()->pathologies();

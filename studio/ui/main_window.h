@@ -151,6 +151,7 @@ class MainWindow : public QMainWindow {
 
  protected:
   void closeEvent(QCloseEvent* event) override;
+  void showEvent(QShowEvent* event) override;
 
  private:
   void build_menus();
@@ -197,6 +198,8 @@ class MainWindow : public QMainWindow {
   class QDockWidget* variants_dock_ = nullptr;
   LibraryBrowser* library_ = nullptr;
   DisplayPanel* display_ = nullptr;
+  std::array<QDockWidget*, 2> first_layout_docks_{nullptr,
+                                                  nullptr};  ///< left, right: sized on show
   class QAction* slice_planes_action_ = nullptr;
   std::function<void(const QString&)> error_handler_;
 };

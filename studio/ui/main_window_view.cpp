@@ -7,6 +7,7 @@
 #include <QMenu>
 #include <QScreen>
 #include <QSettings>
+#include <QShowEvent>
 #include <QUndoStack>
 #include <algorithm>
 
@@ -165,9 +166,19 @@ void MainWindow::restore_layout() {
     if (dockWidgetArea(dock) == Qt::LeftDockWidgetArea) left << dock;
     if (dockWidgetArea(dock) == Qt::RightDockWidgetArea) right << dock;
   }
+  // The dock widths apply once the window is laid out (showEvent).
+  first_layout_docks_ = {left.isEmpty() ? nullptr : left.front(),
+                         right.isEmpty() ? nullptr : right.front()};
+}
+
+void MainWindow::showEvent(QShowEvent* event) {
+  QMainWindow::showEvent(event);
   const int side = std::clamp(width() / 6, 220, 320);
-  if (!left.isEmpty()) resizeDocks({left.front()}, {side}, Qt::Horizontal);
-  if (!right.isEmpty()) resizeDocks({right.front()}, {side + 40}, Qt::Horizontal);
+  if (first_layout_docks_[0] != nullptr)
+    resizeDocks({first_layout_docks_[0]}, {side}, Qt::Horizontal);
+  if (first_layout_docks_[1] != nullptr)
+    resizeDocks({first_layout_docks_[1]}, {side + 60}, Qt::Horizontal);
+  first_layout_docks_ = {nullptr, nullptr};
 }
 
 void MainWindow::save_layout() const {

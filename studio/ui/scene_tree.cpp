@@ -40,13 +40,13 @@ SceneTree::SceneTree(QWidget* parent) : QTreeWidget(parent) {
     emit object_selected(items.isEmpty() ? QString() : items[0]->data(0, kObjectRole).toString());
   });
   connect(this, &QTreeWidget::itemChanged, this, [this](QTreeWidgetItem* item, int column) {
-    if (updating_ || column != 0 || !(item->flags() & Qt::ItemIsUserCheckable)) return;
+    if (updating_ || column != 0) return;
     const bool visible = item->checkState(0) != Qt::Unchecked;
     QStringList keys;
     const QString key = item->data(0, kVisibilityRole).toString();
     if (!key.isEmpty()) {
       keys << key;
-    } else {
+    } else if (item->data(0, kGroupRole).toBool()) {
       for (int c = 0; c < item->childCount(); ++c) {
         const QString child = item->child(c)->data(0, kVisibilityRole).toString();
         if (!child.isEmpty()) keys << child;
@@ -76,7 +76,7 @@ void SceneTree::show_scenario(const core::Scenario& scenario, const ViewState& s
     auto& parent = folders[folder];
     if (parent == nullptr) {
       parent = new QTreeWidgetItem(objects, {folder});
-      parent->setFlags(parent->flags() | Qt::ItemIsUserCheckable);
+      parent->setData(0, kGroupRole, true);
     }
     const QString details =
         q(core::to_string(object.role)) +
@@ -93,6 +93,7 @@ void SceneTree::show_scenario(const core::Scenario& scenario, const ViewState& s
 
   auto* vessels = new QTreeWidgetItem(
       this, {tr("Vessel trees"), QString::number(scenario.vessel_trees.size())});
+  vessels->setData(0, kGroupRole, !scenario.vessel_trees.empty());
   for (const auto& tree : scenario.vessel_trees) {
     auto* item = new QTreeWidgetItem(vessels, {q(tree.id), tr("%1, %2 segments in %3")
                                                                .arg(q(tree.kind))
@@ -136,7 +137,7 @@ void SceneTree::apply_view_state(const ViewState& state) {
 void SceneTree::update_group_boxes() {
   for (QTreeWidgetItemIterator it(this); *it != nullptr; ++it) {
     QTreeWidgetItem* group = *it;
-    if (!(group->flags() & Qt::ItemIsUserCheckable) || group->childCount() == 0) continue;
+    if (!group->data(0, kGroupRole).toBool() || group->childCount() == 0) continue;
     int shown = 0;
     for (int c = 0; c < group->childCount(); ++c)
       shown += group->child(c)->checkState(0) == Qt::Checked ? 1 : 0;

@@ -36,6 +36,8 @@ class SceneTree : public QTreeWidget {
   static constexpr int kObjectRole = Qt::UserRole + 1;
   /// Item data role holding the visibility key of a box.
   static constexpr int kVisibilityRole = Qt::UserRole + 2;
+  /// Item data role marking a group whose box shows and hides its children's.
+  static constexpr int kGroupRole = Qt::UserRole + 3;
   /// Visibility key of the image volume's item.
   static inline const QString kImageVolumeKey = QStringLiteral("image-volume");
 

@@ -366,6 +366,24 @@ class ClinicalUseTest : public QObject {
     window.scene_tree()->visibility_item("uterus")->setCheckState(0, Qt::Unchecked);
     QVERIFY(agree("ticking twice"));
 
+    // A group's box hides all its objects in one step; undo shows them again.
+    QTreeWidgetItem* group = window.scene_tree()->visibility_item("uterus")->parent();
+    QVERIFY(group != nullptr && group->childCount() >= 3);
+    const int before_group = undo->count();
+    window.scene_tree()->visibility_item("uterus")->setCheckState(0, Qt::Checked);
+    QCOMPARE(group->checkState(0), Qt::Checked);
+    group->setCheckState(0, Qt::Unchecked);
+    QCOMPARE(undo->count(), before_group + 2);
+    for (int c = 0; c < group->childCount(); ++c)
+      QVERIFY(!window.scene_view()->object_visible(
+          group->child(c)->data(0, studio::SceneTree::kVisibilityRole).toString()));
+    QVERIFY(agree("hiding a group"));
+    undo->undo();
+    QCOMPARE(group->checkState(0), Qt::Checked);
+    QVERIFY(agree("undoing the group"));
+    window.scene_tree()->visibility_item("uterus")->setCheckState(0, Qt::Unchecked);
+    QCOMPARE(group->checkState(0), Qt::PartiallyChecked);
+
     // Saved and reopened: the package holds the same view state.
     const studio::ViewState saved = studio::view_state_of(window.document().files());
     QVERIFY(saved.hidden.contains("uterus"));
@@ -510,10 +528,25 @@ class ClinicalUseTest : public QObject {
     window.set_slice_planes_shown(false);
     window.scene_view()->render();
     const QImage image = window.scene_view()->grabFramebuffer();
-    // The liver in label colour (red), not an opaque box: most of the view stays background.
-    const double red = studio_tests::tissue_share(image);
-    qInfo("label rendering: %.1f %% red pixels", 100.0 * red);
-    QVERIFY(red > 0.01 && red < 0.6);
+    // The liver in its label's colour, not an opaque box: saturated pixels on part of the view.
+    QString values;
+    for (const double v : window.volume_rendering().distinct_values())
+      values += QString::number(v) + ' ';
+    long coloured = 0;
+    const QImage rgb = image.convertToFormat(QImage::Format_RGB32);
+    for (int y = 0; y < rgb.height(); ++y) {
+      for (int x = 0; x < rgb.width(); ++x) {
+        const QRgb p = rgb.pixel(x, y);
+        const int high = std::max({qRed(p), qGreen(p), qBlue(p)});
+        const int low = std::min({qRed(p), qGreen(p), qBlue(p)});
+        coloured += high - low > 80 ? 1 : 0;
+      }
+    }
+    const double share = static_cast<double>(coloured) / (rgb.width() * rgb.height());
+    qInfo("label rendering: %.1f %% coloured pixels (%s ray casting), label values %s",
+          100.0 * share, window.volume_rendering().last_render_mode().c_str(), qPrintable(values));
+    image.save(QString::fromStdString((out_dir_ / "label-rendering.png").string()));
+    QVERIFY(share > 0.01 && share < 0.6);
   }
 
   void firstLayoutEmptyPanelAndTabs() {
@@ -550,15 +583,19 @@ class ClinicalUseTest : public QObject {
   }
 
   void screenshotOfTheClippedPatient() {
+    QSettings().clear();  // the first layout
     studio::MainWindow window(options());
     open_patient(window);
-    window.resize(1600, 1000);
     window.select_object("uterus");
     studio::TextureRequest bake;
     bake.width = bake.height = 256;
     QVERIFY(window.organ_panels()->texture()->apply_texture(bake));
     window.select_object("uterus");
     window.display_panel()->set_clipping(true, 1, 0.5, false);
+    window.select_object({});
+    window.scene_view()->renderer()->GetActiveCamera()->Dolly(1.15);
+    window.scene_view()->renderer()->ResetCameraClippingRange();
+    window.scene_view()->render();
     QTest::qWait(100);
     const QImage view = window.scene_view()->grabFramebuffer();
     QVERIFY(studio_tests::tissue_share(view) > 0.03);

@@ -2,8 +2,8 @@
 // template form fits a 768-px screen in clinical units; a clipping plane changes the picture; a
 // polyp clicked on the outside of the uterus lands on the cavity wall, also after a bake; the
 // scene tree, the 3D view and the saved package agree after every command, undo, redo and
-// reopen; Mesh organ honours the tet count with a moving bar; segmentation steps undo byte for
-// byte; closing volumes and documents; the first layout and the empty material panel.
+// reopen; the first layout and the empty material panel; the README's screenshot. The volume
+// workflow is in volume_workflow_test.cpp.
 
 #include <QVTKOpenGLNativeWidget.h>
 #include <vtkCamera.h>
@@ -14,24 +14,18 @@
 #include <QElapsedTimer>
 #include <QGroupBox>
 #include <QLabel>
-#include <QProgressDialog>
 #include <QScrollArea>
 #include <QSettings>
 #include <QSlider>
 #include <QSurfaceFormat>
 #include <QTabBar>
-#include <QTimer>
 #include <QTreeWidget>
 #include <QtTest>
 #include <cmath>
-#include <cstring>
 #include <filesystem>
 
 #include "core/error.h"
-#include "core/image/downsample.h"
-#include "core/image/image_volume_io.h"
 #include "core/package/scenario_package.h"
-#include "importers/volume/volume_reader.h"
 #include "studio/document/organ_authoring.h"
 #include "studio/document/view_state.h"
 #include "studio/ui/display_panel.h"
@@ -41,43 +35,17 @@
 #include "studio/ui/pathology_panel.h"
 #include "studio/ui/scene_tree.h"
 #include "studio/ui/scene_view.h"
-#include "studio/ui/segmentation_panel.h"
 #include "studio/ui/template_dialog.h"
 #include "studio/ui/texture_panel.h"
-#include "studio/ui/volume_rendering.h"
 #include "templates/geometry/surface_queries.h"
 #include "templates/template_catalog.h"
+#include "tests/studio_gui/clinical_checks.h"
 #include "tests/studio_gui/image_checks.h"
-#include "tests/studio_gui/liver_volume.h"
 #include "textures/scenario_baking.h"
 
 namespace fs = std::filesystem;
 using namespace viscera;
-
-namespace {
-
-/// Share of pixels that differ between two images of one size by more than 24 grey levels.
-double changed_share(const QImage& a, const QImage& b) {
-  const QImage x = a.convertToFormat(QImage::Format_Grayscale8);
-  const QImage y = b.convertToFormat(QImage::Format_Grayscale8);
-  if (x.size() != y.size()) return 1.0;
-  long changed = 0;
-  for (int r = 0; r < x.height(); ++r)
-    for (int c = 0; c < x.width(); ++c)
-      changed += std::abs(x.constScanLine(r)[c] - y.constScanLine(r)[c]) > 24 ? 1 : 0;
-  return static_cast<double>(changed) / (x.width() * x.height());
-}
-
-/// Whether the triangle of `wall` nearest to `p` lies on the cavity wall ("cavity" = 1).
-bool on_cavity_side(const core::SurfaceMesh& wall, const templates::SurfaceQueries& queries,
-                    const core::Vec3& p) {
-  const templates::SurfacePoint near = queries.closest(p);
-  const auto& cavity = wall.vertex_attributes.at("cavity");
-  const auto& tri = wall.triangles.at(static_cast<std::size_t>(near.triangle));
-  return cavity[tri[0]] == 1.0 && cavity[tri[1]] == 1.0 && cavity[tri[2]] == 1.0;
-}
-
-}  // namespace
+using namespace viscera::studio_tests;
 
 class ClinicalUseTest : public QObject {
   Q_OBJECT
@@ -104,55 +72,6 @@ class ClinicalUseTest : public QObject {
     window.show();
     QVERIFY(QTest::qWaitForWindowExposed(&window));
     QVERIFY(window.open_package(patient_));
-  }
-
-  /// The tree's box, the 3D view and the document's view state agree for every object and
-  /// vessel tree; returns the first disagreement.
-  static QString disagreement(studio::MainWindow& window) {
-    const studio::ViewState state = studio::view_state_of(window.document().files());
-    for (const auto& object : window.document().scenario().objects) {
-      const QString id = QString::fromStdString(object.id);
-      const bool model = state.visible(object.id);
-      QTreeWidgetItem* item = window.scene_tree()->visibility_item(id);
-      if (item == nullptr) return id + ": no box";
-      if ((item->checkState(0) == Qt::Checked) != model) return id + ": box differs";
-      if (window.scene_view()->object_visible(id) != model) return id + ": view differs";
-      if (std::abs(window.scene_view()->object_opacity(id) - state.opacity_of(object.id)) > 1e-9)
-        return id + ": opacity differs";
-    }
-    for (const auto& tree : window.document().scenario().vessel_trees) {
-      const QString key = QString::fromStdString(studio::vessel_tree_key(tree.id));
-      const bool model = state.visible(studio::vessel_tree_key(tree.id));
-      QTreeWidgetItem* item = window.scene_tree()->visibility_item(key);
-      if (item == nullptr) return key + ": no box";
-      if ((item->checkState(0) == Qt::Checked) != model) return key + ": box differs";
-      if (window.scene_view()->vessel_tree_visible(QString::fromStdString(tree.id)) != model)
-        return key + ": view differs";
-    }
-    return {};
-  }
-
-  bool open_coarse_liver(studio::MainWindow& window) {
-    const fs::path coarse = dir() / "liver_coarse.vti";
-    if (!fs::exists(coarse)) {
-      const fs::path liver = studio_tests::cgal_liver(dir());
-      core::write_volume_vti(core::downsample(importers::read_volume(liver).volume, {4, 4, 2}),
-                             coarse);
-    }
-    return window.open_image_volume(coarse);
-  }
-
-  /// Thresholds the coarse liver into label 1 and grows label 2 from deep inside it.
-  void grow_liver_label_2(studio::MainWindow& window) {
-    QVERIFY(open_coarse_liver(window));
-    studio::SegmentationPanel* panel = window.segmentation_panel();
-    QVERIFY(panel->segment_threshold(128.0, 255.0, 1));
-    const core::ImageVolume& volume = panel->segmentation().volume();
-    const std::array<int, 3> inside = studio_tests::deep_inside(volume, {54, 44, 41});
-    QVERIFY(inside[0] >= 0);
-    QVERIFY(panel->grow_region_at(
-        volume.index_to_world(core::Vec3(inside[0], inside[1], inside[2])), 127.0, 2));
-    QVERIFY(panel->segmentation().voxel_count(2) > 50'000);
   }
 
  private slots:
@@ -397,156 +316,6 @@ class ClinicalUseTest : public QObject {
     QVERIFY(!reopened.scene_view()->object_visible("uterus"));
     QVERIFY(disagreement(reopened).isEmpty());
     QVERIFY(errors_.isEmpty());
-  }
-
-  void meshOrganHonoursTheTetCountWithAMovingBar() {
-    studio::MainWindow window(options());
-    errors_.clear();
-    window.set_error_handler([this](const QString& m) { errors_ << m; });
-    window.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&window));
-    grow_liver_label_2(window);
-    studio::SegmentationPanel* panel = window.segmentation_panel();
-    // Mesh organ takes the label just grown.
-    studio::OrganMeshRequest request = panel->mesh_request();
-    QCOMPARE(request.label, std::uint16_t{2});
-    request.target_tets = 5000;
-    // Sample the bar while Mesh_3 runs.
-    QList<int> values;
-    QTimer sampler;
-    connect(&sampler, &QTimer::timeout, &window, [&] {
-      if (auto* dialog = window.findChild<QProgressDialog*>()) values << dialog->value();
-    });
-    sampler.start(20);
-    QElapsedTimer clock;
-    clock.start();
-    const QString id = panel->mesh_segmentation(request);
-    sampler.stop();
-    QVERIFY2(errors_.isEmpty(), qPrintable(errors_.join('\n')));
-    QVERIFY(!id.isEmpty());
-    const core::SceneObject* organ = window.document().scenario().find_object(id.toStdString());
-    QVERIFY(organ != nullptr);
-    const std::size_t tets = organ->body.tets.size();
-    qInfo("5000 tets asked, %zu made in %lld ms; bar values sampled: %lld", tets,
-          static_cast<long long>(clock.elapsed()), static_cast<long long>(values.size()));
-    QVERIFY(tets >= 4000 && tets <= 6000);
-    QList<int> distinct;
-    for (int v : values)
-      if (distinct.isEmpty() || distinct.back() != v) distinct << v;
-    qInfo("distinct bar values: %lld", static_cast<long long>(distinct.size()));
-    QVERIFY(distinct.size() >= 3);
-    for (int i = 1; i < distinct.size(); ++i)
-      QVERIFY(distinct[i] > distinct[i - 1]);  // it only moves forward
-  }
-
-  void segmentationUndoRestoresTheLabelsByteForByte() {
-    studio::MainWindow window(options());
-    errors_.clear();
-    window.set_error_handler([this](const QString& m) { errors_ << m; });
-    window.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&window));
-    QVERIFY(open_coarse_liver(window));
-    studio::SegmentationPanel* panel = window.segmentation_panel();
-    const core::LabelMap empty = panel->segmentation().labels();
-    QVERIFY(panel->segment_threshold(128.0, 255.0, 1));
-    const core::LabelMap thresholded = panel->segmentation().labels();
-    const core::ImageVolume& volume = panel->segmentation().volume();
-    const std::array<int, 3> inside = studio_tests::deep_inside(volume, {54, 44, 41});
-    QVERIFY(panel->grow_region_at(
-        volume.index_to_world(core::Vec3(inside[0], inside[1], inside[2])), 127.0, 2));
-    QVERIFY(panel->open_labels(1));
-    const core::LabelMap opened = panel->segmentation().labels();
-    QVERIFY(!(opened == thresholded));
-    QCOMPARE(panel->history()->count(), 3);
-    QVERIFY(panel->undo_step());
-    QVERIFY(panel->undo_step());
-    QVERIFY(panel->segmentation().labels().image.voxels == thresholded.image.voxels);
-    QVERIFY(panel->undo_step());
-    QVERIFY(panel->segmentation().labels().image.voxels == empty.image.voxels);
-    QVERIFY(!panel->undo_step());
-    QVERIFY(panel->redo_step() && panel->redo_step() && panel->redo_step());
-    QVERIFY(panel->segmentation().labels().image.voxels == opened.image.voxels);
-    // Segmentation steps are not document edits.
-    QCOMPARE(window.document().undo_stack()->count(), 0);
-    QVERIFY(errors_.isEmpty());
-  }
-
-  void slicePlanesVolumeAndDocumentClose() {
-    studio::MainWindow window(options());
-    open_patient(window);
-    const fs::path phantom = dir() / "phantom.vti";
-    studio_tests::write_phantom(phantom, {40, 40, 40}, 0.03);
-    QVERIFY(window.open_image_volume(phantom));
-    QVERIFY(window.has_image_volume());
-    QVERIFY(window.slice_planes_shown());
-    QCOMPARE(window.volume_rendering().preset(), std::string("CT soft tissue"));
-    QTreeWidgetItem* box = window.scene_tree()->visibility_item(studio::SceneTree::kImageVolumeKey);
-    QVERIFY(box != nullptr);
-    box->setCheckState(0, Qt::Unchecked);
-    QVERIFY(!window.slice_planes_shown());
-    window.set_slice_planes_shown(true);
-    QVERIFY(window.slice_planes_shown());
-    window.close_image_volume();
-    QVERIFY(!window.has_image_volume());
-    QVERIFY(!window.slice_planes_shown());
-    QVERIFY(window.scene_tree()->visibility_item(studio::SceneTree::kImageVolumeKey) == nullptr);
-    QVERIFY(!window.segmentation_panel()->segmentation().has_volume());
-    // A label image is rendered coloured by label.
-    QVERIFY(open_coarse_liver(window));
-    qInfo("coarse liver preset: %s", window.volume_rendering().preset().c_str());
-    QVERIFY(window.close_document());
-    QVERIFY(window.document().scenario().objects.empty());
-    QVERIFY(!window.has_image_volume());
-    QVERIFY(!window.document().is_dirty());
-    QVERIFY(errors_.isEmpty());
-  }
-
-  void labelImageRendersColouredByLabel() {
-    studio::MainWindow window(options());
-    window.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&window));
-    const fs::path liver = studio_tests::cgal_liver(dir());
-    core::ImageVolume labels = importers::read_volume(liver).volume;
-    // Every 4th voxel along each axis keeps the 0/255 labels a label image has.
-    core::ImageVolume small;
-    small.dims = {labels.dims[0] / 4, labels.dims[1] / 4, labels.dims[2] / 2};
-    small.spacing = labels.spacing.cwiseProduct(core::Vec3(4, 4, 2));
-    small.origin = labels.origin;
-    small.scalar_type = labels.scalar_type;
-    small.allocate();
-    const std::size_t bytes = core::scalar_size(labels.scalar_type);
-    for (int k = 0; k < small.dims[2]; ++k)
-      for (int j = 0; j < small.dims[1]; ++j)
-        for (int i = 0; i < small.dims[0]; ++i)
-          std::memcpy(&small.voxels[small.linear_index(i, j, k) * bytes],
-                      &labels.voxels[labels.linear_index(4 * i, 4 * j, 2 * k) * bytes], bytes);
-    const fs::path path = dir() / "liver_labels.vti";
-    core::write_volume_vti(small, path);
-    QVERIFY(window.open_image_volume(path));
-    QCOMPARE(window.volume_rendering().preset(), std::string("Labels"));
-    window.set_volume_rendering(true);
-    window.set_slice_planes_shown(false);
-    window.scene_view()->render();
-    const QImage image = window.scene_view()->grabFramebuffer();
-    // The liver in its label's colour, not an opaque box: saturated pixels on part of the view.
-    QString values;
-    for (const double v : window.volume_rendering().distinct_values())
-      values += QString::number(v) + ' ';
-    long coloured = 0;
-    const QImage rgb = image.convertToFormat(QImage::Format_RGB32);
-    for (int y = 0; y < rgb.height(); ++y) {
-      for (int x = 0; x < rgb.width(); ++x) {
-        const QRgb p = rgb.pixel(x, y);
-        const int high = std::max({qRed(p), qGreen(p), qBlue(p)});
-        const int low = std::min({qRed(p), qGreen(p), qBlue(p)});
-        coloured += high - low > 80 ? 1 : 0;
-      }
-    }
-    const double share = static_cast<double>(coloured) / (rgb.width() * rgb.height());
-    qInfo("label rendering: %.1f %% coloured pixels (%s ray casting), label values %s",
-          100.0 * share, window.volume_rendering().last_render_mode().c_str(), qPrintable(values));
-    image.save(QString::fromStdString((out_dir_ / "label-rendering.png").string()));
-    QVERIFY(share > 0.01 && share < 0.6);
   }
 
   void firstLayoutEmptyPanelAndTabs() {

@@ -50,6 +50,10 @@ DisplayPanel::DisplayPanel(ScenarioDocument& document, SceneView& view, QWidget*
   clip_form->addRow(tr("Position"), clip_position_);
   clip_flip_ = new QCheckBox(tr("Keep the other side"), clip_box_);
   clip_form->addRow(clip_flip_);
+  follow_slices_ = new QCheckBox(tr("With the slices"), clip_box_);
+  follow_slices_->setToolTip(
+      tr("The plane moves with the image volume's slice of its orientation"));
+  clip_form->addRow(follow_slices_);
   layout->addWidget(clip_box_);
   connect(clip_box_, &QGroupBox::toggled, this, [this] { update_clip(); });
   connect(clip_axis_, qOverload<int>(&QComboBox::currentIndexChanged), this,
@@ -110,9 +114,33 @@ void DisplayPanel::set_clipping(bool on, int axis, double fraction, bool keep_lo
 
 void DisplayPanel::update_clip() {
   if (updating_) return;
+  if (follows_slices() && clip_box_->isChecked()) {
+    emit slice_plane_requested();
+    return;
+  }
   view_.set_clip_across(clip_axis_->currentIndex(), clip_position_->value() / 100.0,
                         clip_flip_->isChecked());
   view_.set_clipping(clip_box_->isChecked());
+}
+
+bool DisplayPanel::follows_slices() const {
+  return follow_slices_->isChecked();
+}
+
+void DisplayPanel::set_follows_slices(bool on) {
+  follow_slices_->setChecked(on);
+}
+
+int DisplayPanel::clip_axis() const {
+  return clip_axis_->currentIndex();
+}
+
+void DisplayPanel::follow_slice(const core::Vec3& on_slice) {
+  if (!follows_slices() || !clip_box_->isChecked()) return;
+  core::Vec3 normal = core::Vec3::Zero();
+  normal[clip_axis()] = clip_flip_->isChecked() ? -1.0 : 1.0;
+  view_.set_clip_plane(on_slice, normal);
+  view_.set_clipping(true);
 }
 
 bool DisplayPanel::view_from_cervix() {

@@ -40,6 +40,18 @@ void MainWindow::build_view_docks() {
   connect(display_, &DisplayPanel::opacity_requested, this,
           [this](const QString& id, double opacity) { set_object_opacity(id, opacity); });
   connect(display_, &DisplayPanel::failed, this, &MainWindow::show_error);
+  // With the slices: the clipping plane goes through the slice of its orientation.
+  const auto follow = [this] {
+    if (!has_image_volume()) return;
+    const core::ImageVolume& volume = segmentation_->segmentation().volume();
+    const int axis = display_->clip_axis();
+    core::Vec3 ijk(0.5 * (volume.dims[0] - 1), 0.5 * (volume.dims[1] - 1),
+                   0.5 * (volume.dims[2] - 1));
+    ijk[axis] = slices_->slice(axis);
+    display_->follow_slice(volume.index_to_world(ijk));
+  };
+  connect(display_, &DisplayPanel::slice_plane_requested, this, follow);
+  connect(slices_, &SliceViews::changed, this, follow);
 }
 
 void MainWindow::build_view_menu_items(QMenu* file, QMenu* view) {

@@ -4,6 +4,8 @@
 // the volume and the document close; a label image renders coloured by label.
 
 #include <QVTKOpenGLNativeWidget.h>
+#include <vtkImageSlice.h>
+#include <vtkPlane.h>
 
 #include <QElapsedTimer>
 #include <QProgressDialog>
@@ -12,17 +14,21 @@
 #include <QTreeWidget>
 #include <QtTest>
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <vector>
 
 #include "core/image/downsample.h"
 #include "core/image/image_volume_io.h"
 #include "core/package/scenario_package.h"
 #include "importers/volume/volume_reader.h"
+#include "studio/ui/display_panel.h"
 #include "studio/ui/main_window.h"
 #include "studio/ui/scene_tree.h"
 #include "studio/ui/scene_view.h"
 #include "studio/ui/segmentation_panel.h"
+#include "studio/ui/slice_views.h"
 #include "studio/ui/volume_rendering.h"
 #include "templates/template_catalog.h"
 #include "tests/studio_gui/image_checks.h"
@@ -179,6 +185,27 @@ class VolumeWorkflowTest : public QObject {
     QVERIFY(!window.slice_planes_shown());
     window.set_slice_planes_shown(true);
     QVERIFY(window.slice_planes_shown());
+    // The clipping plane moves with the axial slice.
+    studio::DisplayPanel* display = window.display_panel();
+    display->set_follows_slices(true);
+    display->set_clipping(true, 2, 0.5, false);
+    studio::SliceViews* slices = window.slice_views();
+    const core::ImageVolume& volume = window.segmentation_panel()->segmentation().volume();
+    const auto slice_z = [&volume, slices] {
+      return volume.index_to_world(core::Vec3(0.0, 0.0, slices->slice(2))).z();
+    };
+    std::vector<double> origins;
+    for (const int k : {10, 30}) {
+      slices->set_slice(2, k);
+      QVERIFY(window.scene_view()->clipping());
+      origins.push_back(window.scene_view()->clip_plane()->GetOrigin()[2]);
+      QVERIFY(std::abs(origins.back() - slice_z()) < 1e-9);
+      QCOMPARE(window.scene_view()->clip_plane()->GetNormal()[2], 1.0);
+    }
+    qInfo("clip plane z at slices 10 and 30: %.6f %.6f", origins[0], origins[1]);
+    // 20 slices of 2 mm apart.
+    QVERIFY(std::abs(origins[1] - origins[0] - 0.04) < 1e-6);
+    display->set_clipping(false);
     window.close_image_volume();
     QVERIFY(!window.has_image_volume());
     QVERIFY(!window.slice_planes_shown());

@@ -39,7 +39,8 @@ class Classifier {
     double edge_sum = 0.0;
     for (int t = 0; t < static_cast<int>(body_.tets.size()); ++t) {
       core::BoundingBox box;
-      for (int n : body_.tets[t]) box.add(x_[n]);
+      for (int n : body_.tets[t])
+        box.add(x_[n]);
       if ((box.max.array() < reach.min.array()).any() ||
           (box.min.array() > reach.max.array()).any()) {
         continue;
@@ -157,19 +158,21 @@ class Classifier {
     if (checked_once_) {
       if (newly_snapped_.empty()) return false;
       dirty_node.assign(body_.nodes.size(), 0);
-      for (int v : newly_snapped_) dirty_node[v] = 1;
+      for (int v : newly_snapped_)
+        dirty_node[v] = 1;
     }
     newly_snapped_.clear();
     const int n = static_cast<int>(body_.nodes.size());
     for (int t : candidates_) {
       const Tetrahedron& tet = body_.tets[t];
-      if (checked_once_ && !(dirty_node[tet[0]] || dirty_node[tet[1]] || dirty_node[tet[2]] ||
-                             dirty_node[tet[3]])) {
+      if (checked_once_ &&
+          !(dirty_node[tet[0]] || dirty_node[tet[1]] || dirty_node[tet[2]] || dirty_node[tet[3]])) {
         continue;
       }
       const TetCutPattern pattern = pattern_of(c_, tet, n);
       bool any_cut = false;
-      for (bool cut : pattern.edge_cut) any_cut = any_cut || cut;
+      for (bool cut : pattern.edge_cut)
+        any_cut = any_cut || cut;
       if (!any_cut) continue;
       if (children_fit(tet, pattern)) continue;
       int worst = -1;
@@ -189,7 +192,8 @@ class Classifier {
 
   bool children_fit(const Tetrahedron& tet, const TetCutPattern& pattern) const {
     std::array<Vec3, 10> cur, rest;
-    for (int i = 0; i < 4; ++i) cur[i] = x_[tet[i]], rest[i] = body_.nodes[tet[i]];
+    for (int i = 0; i < 4; ++i)
+      cur[i] = x_[tet[i]], rest[i] = body_.nodes[tet[i]];
     for (int e = 0; e < 6; ++e) {
       if (!pattern.edge_cut[e]) continue;
       const int a = tet[kTetEdges[e][0]], b = tet[kTetEdges[e][1]];
@@ -221,8 +225,10 @@ class Classifier {
         const int a = tet[e[0]], b = tet[e[1]];
         if (c_.side[a] * c_.side[b] != -1) continue;
         touched = true;
-        if (a < b) c_.cut_edges.push_back(edge_key(a, b));
-        else c_.cut_edges.push_back(edge_key(b, a));
+        if (a < b)
+          c_.cut_edges.push_back(edge_key(a, b));
+        else
+          c_.cut_edges.push_back(edge_key(b, a));
       }
       if (touched) c_.traversed.push_back(t);
     }
@@ -245,7 +251,9 @@ class Classifier {
 
 }  // namespace
 
-bool is_cut(const CutClassification& c, int a, int b) { return c.side[a] * c.side[b] == -1; }
+bool is_cut(const CutClassification& c, int a, int b) {
+  return c.side[a] * c.side[b] == -1;
+}
 
 TetCutPattern pattern_of(const CutClassification& c, const Tetrahedron& tet, int /*node_count*/) {
   TetCutPattern p;

@@ -30,16 +30,16 @@ struct EdgeHit {
 };
 
 struct CutClassification {
-  std::vector<int> traversed;          ///< tets with a cut edge or a corner on the cut
-  std::vector<std::int8_t> side;       ///< per node: −1, 0 (on the cut), +1 or kUnknownSide
+  std::vector<int> traversed;     ///< tets with a cut edge or a corner on the cut
+  std::vector<std::int8_t> side;  ///< per node: −1, 0 (on the cut), +1 or kUnknownSide
   std::unordered_map<std::uint64_t, EdgeHit> hits;  ///< edges crossed away from their ends
-  std::vector<std::uint64_t> cut_edges;  ///< sorted keys of the edges that get a node
+  std::vector<std::uint64_t> cut_edges;             ///< sorted keys of the edges that get a node
   std::size_t snapped = 0;
 };
 
 /// Tuning of node snapping and the quality gate.
 struct ClassificationOptions {
-  double snap_fraction = 0.2;       ///< crossing within this fraction of an edge from a node
+  double snap_fraction = 0.2;         ///< crossing within this fraction of an edge from a node
   double min_dihedral_degrees = 1.0;  ///< children below this, in either configuration, snap
 };
 

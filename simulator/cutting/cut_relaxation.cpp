@@ -17,10 +17,12 @@ double worst_cos(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   const Vec3 n[4] = {(c - b).cross(d - b), (d - a).cross(c - a), (b - a).cross(d - a),
                      (c - a).cross(b - a)};
   double len[4];
-  for (int i = 0; i < 4; ++i) len[i] = n[i].norm();
+  for (int i = 0; i < 4; ++i)
+    len[i] = n[i].norm();
   double worst = -1.0;
   for (int i = 0; i < 4; ++i) {
-    for (int j = i + 1; j < 4; ++j) worst = std::max(worst, -n[i].dot(n[j]) / (len[i] * len[j]));
+    for (int j = i + 1; j < 4; ++j)
+      worst = std::max(worst, -n[i].dot(n[j]) / (len[i] * len[j]));
   }
   return worst;
 }
@@ -59,7 +61,8 @@ bool try_move(const RelaxationMesh& m, int node, const Vec3& d) {
   if (host < 0 || best < -1e-12) return false;
   const auto& t = (*m.tets)[host];
   Vec3 new_rest = Vec3::Zero();
-  for (int i = 0; i < 4; ++i) new_rest += weights[i] * rest[t[i]];
+  for (int i = 0; i < 4; ++i)
+    new_rest += weights[i] * rest[t[i]];
   const double before_x = star_worst(m, node, x), before_rest = star_worst(m, node, rest);
   x[node] = target;
   rest[node] = new_rest;
@@ -88,8 +91,10 @@ bool try_move(const RelaxationMesh& m, int node, const Vec3& d) {
     }
   }
   std::erase_if(merged, [](const NodeSource& s) { return s.weight < 1e-15; });
-  for (const NodeSource& s : merged) total += s.weight;
-  for (NodeSource& s : merged) s.weight /= total;
+  for (const NodeSource& s : merged)
+    total += s.weight;
+  for (NodeSource& s : merged)
+    s.weight /= total;
   (*m.origin)[node] = std::move(merged);
   return true;
 }
@@ -114,7 +119,8 @@ int relax_cut_neighbourhood(const RelaxationMesh& m, const std::vector<RelaxedNo
     std::sort(nb.begin(), nb.end());
     nb.erase(std::unique(nb.begin(), nb.end()), nb.end());
     double sum = 0.0;
-    for (int v : nb) sum += (x[v] - x[node]).norm();
+    for (int v : nb)
+      sum += (x[v] - x[node]).norm();
     r0[i] = nb.empty() ? 0.0 : sum / nb.size();
   }
   std::vector<std::uint8_t> moved(count, 0);

@@ -24,8 +24,8 @@
 namespace viscera::sim::cutting {
 
 struct RelaxationOptions {
-  int iterations = 3;             ///< "a few iteration steps"
-  double damping = 0.3;           ///< velocity kept per step (heavily damped: ≪ 1)
+  int iterations = 3;               ///< "a few iteration steps"
+  double damping = 0.3;             ///< velocity kept per step (heavily damped: ≪ 1)
   double max_step_fraction = 0.15;  ///< largest move per step, fraction of r0
   /// Nodes of new tets whose smallest dihedral angle is below this (degrees) are relaxed.
   double relax_below_degrees = 15.0;

@@ -12,7 +12,9 @@ namespace {
 using core::InputError;
 using core::Vec3;
 
-bool finite(const Vec3& v) { return v.allFinite(); }
+bool finite(const Vec3& v) {
+  return v.allFinite();
+}
 
 std::string describe(const Vec3& v) {
   std::ostringstream s;
@@ -84,7 +86,8 @@ CutSurface swept_loop_surface(const LoopElectrode& loop, const std::vector<LoopP
   CutSurface surface;
   const int row = loop.segments + 1;
   for (const LoopPose& pose : sweep) {
-    for (const Vec3& p : loop_points(loop, pose)) surface.vertices.push_back(p);
+    for (const Vec3& p : loop_points(loop, pose))
+      surface.vertices.push_back(p);
   }
   for (int k = 0; k + 1 < static_cast<int>(sweep.size()); ++k) {
     for (int i = 0; i < loop.segments; ++i) {
@@ -93,8 +96,9 @@ CutSurface swept_loop_surface(const LoopElectrode& loop, const std::vector<LoopP
     }
   }
   if (surface.triangles.empty()) {
-    throw InputError("the loop sweep moves the loop only within its own wire, so it sweeps no "
-                     "cut surface");
+    throw InputError(
+        "the loop sweep moves the loop only within its own wire, so it sweeps no "
+        "cut surface");
   }
   return surface;
 }
@@ -113,8 +117,8 @@ CutSurface planar_cut_surface(const Vec3& center, const Vec3& normal, const Vec3
   }
   if (half_width <= 0.0 || half_height <= 0.0) {
     throw InputError("the planar cut's extents must be positive (half width " +
-                     std::to_string(half_width) + " m, half height " +
-                     std::to_string(half_height) + " m)");
+                     std::to_string(half_width) + " m, half height " + std::to_string(half_height) +
+                     " m)");
   }
   if (divisions < 1) throw InputError("the planar cut needs at least one division");
   const Vec3 u = u_raw.normalized();
@@ -129,8 +133,8 @@ CutSurface planar_cut_surface(const Vec3& center, const Vec3& normal, const Vec3
   }
   const int row = divisions + 1;
   for (int j = 0; j < divisions; ++j) {
-    for (int i = 0; i < divisions; ++i) add_quad(surface, j * row + i, j * row + i + 1,
-                                                 (j + 1) * row + i + 1, (j + 1) * row + i);
+    for (int i = 0; i < divisions; ++i)
+      add_quad(surface, j * row + i, j * row + i + 1, (j + 1) * row + i + 1, (j + 1) * row + i);
   }
   return surface;
 }

@@ -35,7 +35,8 @@ Vec3 closest_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3
 
 CutSurfaceIndex::CutSurfaceIndex(CutSurface surface, double cell_size)
     : surface_(std::move(surface)), cell_(cell_size) {
-  for (const Vec3& v : surface_.vertices) bounds_.add(v);
+  for (const Vec3& v : surface_.vertices)
+    bounds_.add(v);
   normals_.reserve(surface_.triangles.size());
   for (const auto& t : surface_.triangles) {
     const Vec3& a = surface_.vertices[t[0]];
@@ -52,11 +53,13 @@ CutSurfaceIndex::CutSurfaceIndex(CutSurface surface, double cell_size)
   }
   for (int t = 0; t < static_cast<int>(surface_.triangles.size()); ++t) {
     core::BoundingBox box;
-    for (int k : surface_.triangles[t]) box.add(surface_.vertices[k]);
+    for (int k : surface_.triangles[t])
+      box.add(surface_.vertices[k]);
     const auto lo = cell_of(box.min), hi = cell_of(box.max);
     for (int i = lo[0]; i <= hi[0]; ++i)
       for (int j = lo[1]; j <= hi[1]; ++j)
-        for (int k = lo[2]; k <= hi[2]; ++k) cells_.emplace_back(key(i, j, k), t);
+        for (int k = lo[2]; k <= hi[2]; ++k)
+          cells_.emplace_back(key(i, j, k), t);
   }
   std::sort(cells_.begin(), cells_.end());
   stamp_.assign(surface_.triangles.size(), 0);

@@ -2,8 +2,10 @@
 /// A uniform grid over the triangles of a cut surface, for the two queries of the hybrid cut:
 /// where a tet edge crosses the surface, and how far a node lies from it (node snapping).
 
+#include <array>
 #include <cstdint>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "simulator/cutting/cut_surface.h"
@@ -56,7 +58,7 @@ class CutSurfaceIndex {
   core::Vec3 origin_ = core::Vec3::Zero();
   std::array<int, 3> dims_{1, 1, 1};
   std::vector<std::pair<std::int64_t, int>> cells_;  ///< sorted (cell key, triangle)
-  mutable std::vector<std::uint32_t> stamp_;  ///< per triangle, de-duplicates visits
+  mutable std::vector<std::uint32_t> stamp_;         ///< per triangle, de-duplicates visits
   mutable std::uint32_t query_ = 0;
 };
 

@@ -10,7 +10,8 @@ namespace viscera::sim::cutting {
 namespace {
 
 int find(std::vector<int>& up, int i) {
-  while (up[i] != i) i = up[i] = up[up[i]];
+  while (up[i] != i)
+    i = up[i] = up[up[i]];
   return i;
 }
 
@@ -34,7 +35,8 @@ std::vector<Fragment> body_fragments(const core::TetMesh& mesh,
       }
     }
     const int root = find(up, mesh.tets[t][0]);
-    for (int k = 1; k < 4; ++k) up[find(up, mesh.tets[t][k])] = root;
+    for (int k = 1; k < 4; ++k)
+      up[find(up, mesh.tets[t][k])] = root;
   }
   std::vector<int> index_of_root(n, -1);
   std::vector<Fragment> fragments;
@@ -47,8 +49,8 @@ std::vector<Fragment> body_fragments(const core::TetMesh& mesh,
     Fragment& f = fragments[index_of_root[root]];
     f.tets.push_back(static_cast<int>(t));
     const auto& q = mesh.tets[t];
-    f.rest_volume += core::signed_volume(mesh.nodes[q[0]], mesh.nodes[q[1]], mesh.nodes[q[2]],
-                                         mesh.nodes[q[3]]);
+    f.rest_volume +=
+        core::signed_volume(mesh.nodes[q[0]], mesh.nodes[q[1]], mesh.nodes[q[2]], mesh.nodes[q[3]]);
   }
   for (int v = 0; v < n; ++v) {
     const int root = find(up, v);

@@ -12,8 +12,8 @@
 namespace viscera::sim::cutting {
 
 struct Fragment {
-  std::vector<int> tets;   ///< ascending
-  std::vector<int> nodes;  ///< ascending
+  std::vector<int> tets;     ///< ascending
+  std::vector<int> nodes;    ///< ascending
   double rest_volume = 0.0;  ///< m³
   bool anchored = false;     ///< holds a node flagged in `anchored`
 };

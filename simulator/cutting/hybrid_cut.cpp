@@ -17,12 +17,12 @@ using core::InputError;
 using core::Tetrahedron;
 using core::Vec3;
 
-void check_input(const core::TetMesh& body, const std::vector<Vec3>& current,
-                 const CutSurface& cut, const HybridCutOptions& options) {
+void check_input(const core::TetMesh& body, const std::vector<Vec3>& current, const CutSurface& cut,
+                 const HybridCutOptions& options) {
   if (body.tets.empty()) throw InputError("the body to cut has no tetrahedra");
   if (current.size() != body.nodes.size()) {
-    throw InputError("the body to cut has " + std::to_string(body.nodes.size()) +
-                     " nodes but " + std::to_string(current.size()) + " current positions");
+    throw InputError("the body to cut has " + std::to_string(body.nodes.size()) + " nodes but " +
+                     std::to_string(current.size()) + " current positions");
   }
   for (std::size_t i = 0; i < current.size(); ++i) {
     if (!current[i].allFinite() || !body.nodes[i].allFinite()) {
@@ -65,7 +65,8 @@ double mean_cut_edge(const CutSurface& cut) {
 
 double volume_of(const std::vector<Tetrahedron>& tets, const std::vector<Vec3>& x) {
   double v = 0.0;
-  for (const auto& t : tets) v += core::signed_volume(x[t[0]], x[t[1]], x[t[2]], x[t[3]]);
+  for (const auto& t : tets)
+    v += core::signed_volume(x[t[0]], x[t[1]], x[t[2]], x[t[3]]);
   return v;
 }
 
@@ -75,11 +76,14 @@ TopologyChange unchanged(const core::TetMesh& body, const std::vector<Vec3>& cur
   change.current = current;
   const int n = static_cast<int>(body.nodes.size());
   change.node_source_offset.resize(n + 1);
-  for (int i = 0; i <= n; ++i) change.node_source_offset[i] = i;
+  for (int i = 0; i <= n; ++i)
+    change.node_source_offset[i] = i;
   change.node_source.reserve(n);
-  for (int i = 0; i < n; ++i) change.node_source.push_back({i, 1.0});
+  for (int i = 0; i < n; ++i)
+    change.node_source.push_back({i, 1.0});
   change.tet_parent.resize(body.tets.size());
-  for (std::size_t t = 0; t < body.tets.size(); ++t) change.tet_parent[t] = static_cast<int>(t);
+  for (std::size_t t = 0; t < body.tets.size(); ++t)
+    change.tet_parent[t] = static_cast<int>(t);
   change.on_cut.assign(n, 0);
   change.statistics.tets_before = change.statistics.tets_after = body.tets.size();
   change.statistics.rest_volume_before = change.statistics.rest_volume_after =
@@ -97,14 +101,15 @@ std::vector<int> decompose_traversed(const core::TetMesh& body, const CutClassif
   min_dihedral_before = 180.0;
   for (int t : c.traversed) {
     const Tetrahedron& tet = body.tets[t];
-    min_dihedral_before = std::min(
-        min_dihedral_before, min_dihedral_degrees(w.current[tet[0]], w.current[tet[1]],
-                                                  w.current[tet[2]], w.current[tet[3]]));
+    min_dihedral_before =
+        std::min(min_dihedral_before, min_dihedral_degrees(w.current[tet[0]], w.current[tet[1]],
+                                                           w.current[tet[2]], w.current[tet[3]]));
     const TetCutPattern pattern = pattern_of(c, tet, n);
     const auto children = decompose(pattern);
     if (children.empty()) continue;
     int local[10];
-    for (int i = 0; i < 4; ++i) local[i] = tet[i];
+    for (int i = 0; i < 4; ++i)
+      local[i] = tet[i];
     for (int e = 0; e < 6; ++e) {
       if (!pattern.edge_cut[e]) continue;
       const std::uint64_t key = edge_key(tet[kTetEdges[e][0]], tet[kTetEdges[e][1]]);
@@ -131,6 +136,16 @@ std::vector<int> decompose_traversed(const core::TetMesh& body, const CutClassif
   return children_of_cut;
 }
 
+// Twice the longest edge around node v: the reach of its nearest-surface query.
+double star_reach(const CutWork& w, int v) {
+  double longest = 0.0;
+  for (int k = w.star_offset[v]; k < w.star_offset[v + 1]; ++k) {
+    for (int u : w.tets[w.star_tets[k]])
+      longest = std::max(longest, (w.current[u] - w.current[v]).norm());
+  }
+  return 2.0 * longest;
+}
+
 // The relaxation's node classes (seed 000 §5.1): nodes of poor new tets, except nodes on the
 // body's surface, fixed nodes and nodes on cut surface edges; nodes on the cut slide on it.
 std::vector<RelaxedNode> relaxation_nodes(const core::TetMesh& body, const CutWork& w,
@@ -140,7 +155,8 @@ std::vector<RelaxedNode> relaxation_nodes(const core::TetMesh& body, const CutWo
   const int n = static_cast<int>(body.nodes.size());
   std::vector<std::uint8_t> on_surface(w.rest.size(), 0);
   for (const auto& f : body.surface_faces) {
-    for (int v : f) on_surface[v] = 1;
+    for (int v : f)
+      on_surface[v] = 1;
   }
   for (int v = n; v < static_cast<int>(w.rest.size()); ++v) {
     const auto& s = w.origin[v];  // an edge node lies on the surface when both ends do
@@ -151,8 +167,7 @@ std::vector<RelaxedNode> relaxation_nodes(const core::TetMesh& body, const CutWo
   std::vector<RelaxedNode> nodes;
   for (int t : children) {
     const Tetrahedron& c = w.tets[t];
-    if (tet_is_fit(w.current[c[0]], w.current[c[1]], w.current[c[2]], w.current[c[3]],
-                   threshold)) {
+    if (tet_is_fit(w.current[c[0]], w.current[c[1]], w.current[c[2]], w.current[c[3]], threshold)) {
       continue;
     }
     for (int v : c) {
@@ -161,7 +176,7 @@ std::vector<RelaxedNode> relaxation_nodes(const core::TetMesh& body, const CutWo
       chosen[v] = 1;
       RelaxedNode r{v, Vec3::Zero()};
       if (w.on_cut[v]) {
-        const auto near = index.nearest(w.current[v], 1e30);
+        const auto near = index.nearest(w.current[v], star_reach(w, v));
         if (!near) continue;
         r.slide_normal = near->normal;
       }
@@ -174,13 +189,18 @@ std::vector<RelaxedNode> relaxation_nodes(const core::TetMesh& body, const CutWo
 }
 
 std::int8_t side_of_tet(const Tetrahedron& t, const CutClassification& c, int old_nodes,
-                        const CutWork& w, const CutSurfaceIndex& index, double radius) {
+                        const CutWork& w, const CutSurfaceIndex& index) {
   for (int v : t) {
     if (v < old_nodes && (c.side[v] == 1 || c.side[v] == -1)) return c.side[v];
   }
-  const Vec3 centroid = 0.25 * (w.current[t[0]] + w.current[t[1]] + w.current[t[2]] +
-                                w.current[t[3]]);
-  const auto near = index.nearest(centroid, radius);
+  const Vec3 centroid =
+      0.25 * (w.current[t[0]] + w.current[t[1]] + w.current[t[2]] + w.current[t[3]]);
+  double longest = 0.0;
+  for (int i = 0; i < 4; ++i) {
+    for (int j = i + 1; j < 4; ++j)
+      longest = std::max(longest, (w.current[t[i]] - w.current[t[j]]).norm());
+  }
+  const auto near = index.nearest(centroid, 3.0 * longest);
   if (!near || std::abs(near->signed_distance) < 1e-15) return 0;
   return near->signed_distance > 0 ? 1 : -1;
 }
@@ -190,8 +210,8 @@ TopologyChange cut_body(const core::TetMesh& body, const std::vector<Vec3>& curr
                         const core::SurfaceEmbedding* embedding, const HybridCutOptions& options) {
   check_input(body, current, cut, options);
   const CutSurfaceIndex index(cut, mean_cut_edge(cut));
-  const CutClassification c = classify_cut(
-      body, current, index, {options.snap_fraction, options.min_dihedral_degrees});
+  const CutClassification c =
+      classify_cut(body, current, index, {options.snap_fraction, options.min_dihedral_degrees});
   if (c.traversed.empty()) {
     TopologyChange change = unchanged(body, current);
     if (visual) change.visual = *visual, change.visual_embedding = *embedding;
@@ -203,10 +223,12 @@ TopologyChange cut_body(const core::TetMesh& body, const std::vector<Vec3>& curr
   w.current = current;
   w.tets = body.tets;
   w.parent.resize(body.tets.size());
-  for (std::size_t t = 0; t < body.tets.size(); ++t) w.parent[t] = static_cast<int>(t);
+  for (std::size_t t = 0; t < body.tets.size(); ++t)
+    w.parent[t] = static_cast<int>(t);
   w.origin.resize(n);
   w.on_cut.assign(n, 0);
-  for (int v = 0; v < n; ++v) w.on_cut[v] = c.side[v] == 0;
+  for (int v = 0; v < n; ++v)
+    w.on_cut[v] = c.side[v] == 0;
   for (std::uint64_t key : c.cut_edges) {
     const int a = static_cast<int>(key >> 32), b = static_cast<int>(key & 0xffffffffu);
     const double t = c.hits.at(key).t;
@@ -225,23 +247,23 @@ TopologyChange cut_body(const core::TetMesh& body, const std::vector<Vec3>& curr
   s.current_volume_before = volume_of(body.tets, current);
   const std::vector<int> children = decompose_traversed(body, c, w, s.min_dihedral_before_degrees);
   std::vector<int> decomposed_parents;
-  for (int t : children) decomposed_parents.push_back(w.parent[t]);
+  for (int t : children)
+    decomposed_parents.push_back(w.parent[t]);
   std::sort(decomposed_parents.begin(), decomposed_parents.end());
-  s.tets_decomposed = static_cast<std::size_t>(
-      std::unique(decomposed_parents.begin(), decomposed_parents.end()) -
-      decomposed_parents.begin());
+  s.tets_decomposed =
+      static_cast<std::size_t>(std::unique(decomposed_parents.begin(), decomposed_parents.end()) -
+                               decomposed_parents.begin());
   build_stars(w);
   RelaxationMesh rm{&w.tets, &w.current, &w.rest, &w.star_offset, &w.star_tets, &w.origin};
   s.nodes_relaxed = static_cast<std::size_t>(relax_cut_neighbourhood(
       rm, relaxation_nodes(body, w, children, index, options.relaxation), options.relaxation));
   // Sides of the tets around nodes on the cut, then node separation.
-  const double radius = 4.0 * mean_cut_edge(cut) + index.bounds().size().norm();
   std::vector<std::int8_t> tet_side(w.tets.size(), 0);
   for (int v = 0; v < static_cast<int>(w.rest.size()); ++v) {
     if (!w.on_cut[v]) continue;
     for (int k = w.star_offset[v]; k < w.star_offset[v + 1]; ++k) {
       const int t = w.star_tets[k];
-      tet_side[t] = side_of_tet(w.tets[t], c, n, w, index, radius);
+      tet_side[t] = side_of_tet(w.tets[t], c, n, w, index);
     }
   }
   const SeparationResult separation = separate_cut_nodes(w, tet_side);
@@ -267,7 +289,8 @@ TopologyChange cut_body(const core::TetMesh& body, const std::vector<Vec3>& curr
     change.node_source_offset.push_back(static_cast<int>(change.node_source.size()));
   }
   if (!body.tet_labels.empty()) {
-    for (int p : change.tet_parent) change.mesh.tet_labels.push_back(body.tet_labels[p]);
+    for (int p : change.tet_parent)
+      change.mesh.tet_labels.push_back(body.tet_labels[p]);
   }
   if (!body.fixed.empty()) {
     change.mesh.fixed.assign(total, 0);
@@ -280,7 +303,8 @@ TopologyChange cut_body(const core::TetMesh& body, const std::vector<Vec3>& curr
   }
   if (!body.node_mass.empty() && s.rest_volume_before > 0.0) {
     double mass = 0.0;
-    for (double m : body.node_mass) mass += m;
+    for (double m : body.node_mass)
+      mass += m;
     change.mesh.node_mass = core::lumped_node_masses(change.mesh, mass / s.rest_volume_before);
   }
   s.tets_after = change.mesh.tets.size();
@@ -336,16 +360,17 @@ void require_sweep_leaves_tissue(const core::TetMesh& body, const std::vector<Ve
     for (std::size_t t = 0; t < body.tets.size(); ++t) {
       const Tetrahedron& q = body.tets[t];
       core::BoundingBox box;
-      for (int v : q) box.add(current[v]);
+      for (int v : q)
+        box.add(current[v]);
       if ((p.array() < box.min.array()).any() || (p.array() > box.max.array()).any()) continue;
-      const auto w = core::barycentric(p, current[q[0]], current[q[1]], current[q[2]],
-                                       current[q[3]]);
+      const auto w =
+          core::barycentric(p, current[q[0]], current[q[1]], current[q[2]], current[q[3]]);
       if (std::min({w[0], w[1], w[2], w[3]}) >= 0.0) return static_cast<int>(t);
     }
     return -1;
   };
-  for (const auto& [pose, which] : {std::pair{sweep.front(), "starts"},
-                                    std::pair{sweep.back(), "ends"}}) {
+  for (const auto& [pose, which] :
+       {std::pair{sweep.front(), "starts"}, std::pair{sweep.back(), "ends"}}) {
     const auto points = loop_points(loop, pose);
     for (std::size_t i = 0; i < points.size(); ++i) {
       const int t = inside(points[i]);

@@ -34,7 +34,8 @@ FaceKey key_of(int a, int b, int c) {
 }
 
 int find(std::vector<int>& up, int i) {
-  while (up[i] != i) i = up[i] = up[up[i]];
+  while (up[i] != i)
+    i = up[i] = up[up[i]];
   return i;
 }
 
@@ -44,13 +45,15 @@ void build_stars(CutWork& w) {
   const std::size_t n = w.rest.size();
   w.star_offset.assign(n + 1, 0);
   for (const Tetrahedron& t : w.tets) {
-    for (int v : t) ++w.star_offset[v + 1];
+    for (int v : t)
+      ++w.star_offset[v + 1];
   }
   std::partial_sum(w.star_offset.begin(), w.star_offset.end(), w.star_offset.begin());
   w.star_tets.assign(w.star_offset.back(), 0);
   std::vector<int> fill(w.star_offset.begin(), w.star_offset.end() - 1);
   for (int t = 0; t < static_cast<int>(w.tets.size()); ++t) {
-    for (int v : w.tets[t]) w.star_tets[fill[v]++] = t;
+    for (int v : w.tets[t])
+      w.star_tets[fill[v]++] = t;
   }
 }
 
@@ -67,12 +70,15 @@ SeparationResult separate_cut_nodes(CutWork& w, const std::vector<std::int8_t>& 
   for (int t = 0; t < static_cast<int>(w.tets.size()); ++t) {
     if (in_affected[t]) result.affected.push_back(t);
   }
-  for (int t : result.affected) result.conforming.push_back(w.tets[t]);
+  for (int t : result.affected)
+    result.conforming.push_back(w.tets[t]);
   const std::vector<Tetrahedron> conforming_all = w.tets;  // ids before any duplication
   struct Entry {
     std::uint64_t key;
     int local;
-    bool operator<(const Entry& o) const { return key < o.key || (key == o.key && local < o.local); }
+    bool operator<(const Entry& o) const {
+      return key < o.key || (key == o.key && local < o.local);
+    }
   };
   std::vector<Entry> entries;
   std::vector<int> up;
@@ -142,7 +148,8 @@ std::vector<Triangle> rebuild_surface(const std::vector<Triangle>& old_surface,
     if (parent_affected[p]) continue;
     parent_affected[p] = 1;
     const Tetrahedron& o = old_tets[p];
-    for (const auto& f : kFaces) parent_faces.insert(key_of(o[f[0]], o[f[1]], o[f[2]]));
+    for (const auto& f : kFaces)
+      parent_faces.insert(key_of(o[f[0]], o[f[1]], o[f[2]]));
   }
   std::vector<Triangle> surface;
   std::unordered_set<FaceKey, FaceHash> removed;

@@ -13,17 +13,17 @@ namespace viscera::sim::cutting {
 struct CutWork {
   std::vector<core::Vec3> rest, current;
   std::vector<core::Tetrahedron> tets;
-  std::vector<int> parent;                       ///< per tet: the old tet
-  std::vector<std::vector<NodeSource>> origin;   ///< per node; empty = itself
-  std::vector<std::uint8_t> on_cut;              ///< per node
-  std::vector<int> star_offset, star_tets;       ///< node → tets (CSR), conforming mesh
+  std::vector<int> parent;                      ///< per tet: the old tet
+  std::vector<std::vector<NodeSource>> origin;  ///< per node; empty = itself
+  std::vector<std::uint8_t> on_cut;             ///< per node
+  std::vector<int> star_offset, star_tets;      ///< node → tets (CSR), conforming mesh
 };
 
 /// Fills w.star_offset / w.star_tets for the current tets.
 void build_stars(CutWork& w);
 
 struct SeparationResult {
-  std::vector<int> affected;   ///< sorted tets around nodes on the cut
+  std::vector<int> affected;                  ///< sorted tets around nodes on the cut
   std::vector<core::Tetrahedron> conforming;  ///< the affected tets before separation
   std::size_t duplicated = 0;
 };
@@ -37,8 +37,7 @@ SeparationResult separate_cut_nodes(CutWork& w, const std::vector<std::int8_t>& 
 /// boundary faces of the affected tets. cut_faces receives the indices of faces on the cut.
 std::vector<core::Triangle> rebuild_surface(const std::vector<core::Triangle>& old_surface,
                                             const std::vector<core::Tetrahedron>& old_tets,
-                                            const CutWork& w,
-                                            const SeparationResult& separation,
+                                            const CutWork& w, const SeparationResult& separation,
                                             std::vector<int>& cut_faces);
 
 }  // namespace viscera::sim::cutting

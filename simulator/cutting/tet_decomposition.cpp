@@ -94,7 +94,8 @@ std::vector<std::array<int, 4>> decompose(const TetCutPattern& pattern) {
   }
   // The lone corner: the corner on the side that holds one corner only (for 4 cuts: corner 0).
   int plus = 0, minus = 0;
-  for (int s : pattern.side) plus += s > 0, minus += s < 0;
+  for (int s : pattern.side)
+    plus += s > 0, minus += s < 0;
   if (cuts == 2 || cuts == 3) {
     const int lone_side = plus == 1 ? 1 : -1;
     int lone = -1;
@@ -123,7 +124,8 @@ std::vector<std::array<int, 4>> decompose(const TetCutPattern& pattern) {
   }
   if (cuts == 4) {
     std::vector<int> p, q;
-    for (int c = 0; c < 4; ++c) (pattern.side[c] > 0 ? p : q).push_back(c);
+    for (int c = 0; c < 4; ++c)
+      (pattern.side[c] > 0 ? p : q).push_back(c);
     const int p1 = p.at(0), p2 = p.at(1), q1 = q.at(0), q2 = q.at(1);
     const int m11 = node(p1, q1), m12 = node(p1, q2), m21 = node(p2, q1), m22 = node(p2, q2);
     prism(pattern, {p1, m11, m12}, {p2, m21, m22}, out);

@@ -31,8 +31,8 @@ inline constexpr std::array<std::array<int, 2>, 6> kTetEdges{
 
 /// One traversed tet. Local vertices 0–3 are its corners, 4 + e the node on edge e.
 struct TetCutPattern {
-  std::array<int, 4> side{};         ///< −1, 0 (on the cut) or +1 per corner
-  std::array<bool, 6> edge_cut{};    ///< true when edge e is cut (its corners on opposite sides)
+  std::array<int, 4> side{};       ///< −1, 0 (on the cut) or +1 per corner
+  std::array<bool, 6> edge_cut{};  ///< true when edge e is cut (its corners on opposite sides)
   std::array<std::uint64_t, 10> rank{};  ///< global order of the local vertices (quad diagonals)
 };
 

@@ -48,7 +48,8 @@ struct NodeSource {
 struct CutStatistics {
   std::size_t tets_before = 0;
   std::size_t tets_after = 0;
-  std::size_t tets_traversed = 0;  ///< tets the cut surface passes through (decomposed or separated)
+  std::size_t tets_traversed =
+      0;  ///< tets the cut surface passes through (decomposed or separated)
   std::size_t tets_decomposed = 0;
   std::size_t nodes_snapped = 0;     ///< existing nodes the cut was moved onto (node snapping)
   std::size_t nodes_created = 0;     ///< nodes on cut edges
@@ -67,7 +68,7 @@ struct CutStatistics {
 /// (every other field still describes the unchanged body, so it can be applied blindly).
 struct TopologyChange {
   bool changed = false;
-  core::TetMesh mesh;              ///< new topology; nodes = rest positions in m
+  core::TetMesh mesh;               ///< new topology; nodes = rest positions in m
   std::vector<core::Vec3> current;  ///< deformed positions in m, one per mesh node
   /// CSR: the sources of node i are node_source[node_source_offset[i] …
   /// node_source_offset[i + 1]). node_source_offset.size() == mesh.nodes.size() + 1.
@@ -103,7 +104,8 @@ std::vector<T> carry_node_values(const TopologyChange& change, const std::vector
   for (int i = 0; i + 1 < static_cast<int>(change.node_source_offset.size()); ++i) {
     auto [begin, end] = change.sources(i);
     T sum = old_values[begin->old_node] * begin->weight;
-    for (const NodeSource* s = begin + 1; s != end; ++s) sum += old_values[s->old_node] * s->weight;
+    for (const NodeSource* s = begin + 1; s != end; ++s)
+      sum += old_values[s->old_node] * s->weight;
     values.push_back(sum);
   }
   return values;

@@ -67,7 +67,8 @@ class VisualCutter {
         c_.visual_embedding.weights[i] = e.weights;
       }
     }
-    for (const auto& tri : in_.triangles) split_triangle(tri);
+    for (const auto& tri : in_.triangles)
+      split_triangle(tri);
     add_cut_faces();
     finish_attributes();
     c_.visual = std::move(out_);
@@ -134,7 +135,8 @@ class VisualCutter {
     // A tet holding each cut node, for its embedding.
     std::unordered_map<int, std::pair<int, int>> holder;  // node → (tet, corner)
     for (int f : c_.cut_surface_faces) {
-      for (int v : c_.mesh.surface_faces[f]) holder.emplace(v, std::make_pair(-1, -1));
+      for (int v : c_.mesh.surface_faces[f])
+        holder.emplace(v, std::make_pair(-1, -1));
     }
     for (int t = 0; t < static_cast<int>(c_.mesh.tets.size()); ++t) {
       for (int k = 0; k < 4; ++k) {
@@ -153,7 +155,8 @@ class VisualCutter {
           out_.vertices.push_back(c_.current[node]);
           if (!in_.normals.empty()) out_.normals.push_back(Vec3::UnitZ());
           if (!in_.uvs.empty()) out_.uvs.push_back(core::Vec2::Zero());
-          for (auto& [name, values] : out_.vertex_attributes) values.push_back(0.0);
+          for (auto& [name, values] : out_.vertex_attributes)
+            values.push_back(0.0);
           material_.push_back(c_.mesh.nodes[node]);
           current_.push_back(c_.current[node]);
           cut_flag_.resize(out_.vertices.size(), 0);

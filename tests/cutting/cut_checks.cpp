@@ -25,8 +25,8 @@ const core::TetMesh& cutting_ball(double radius, int subdivisions) {
 double smallest_dihedral(const std::vector<core::Tetrahedron>& tets, const std::vector<Vec3>& x) {
   double smallest = 180.0;
   for (const auto& t : tets) {
-    smallest = std::min(smallest,
-                        sim::cutting::min_dihedral_degrees(x[t[0]], x[t[1]], x[t[2]], x[t[3]]));
+    smallest =
+        std::min(smallest, sim::cutting::min_dihedral_degrees(x[t[0]], x[t[1]], x[t[2]], x[t[3]]));
   }
   return smallest;
 }
@@ -51,17 +51,17 @@ void expect_valid_cut(const core::TetMesh& before, const std::vector<Vec3>& curr
   // Positive tets and no degenerate ones, in both configurations.
   for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
     const auto& q = mesh.tets[t];
-    for (int v : q) ASSERT_TRUE(v >= 0 && v < static_cast<int>(n)) << "tet " << t;
+    for (int v : q)
+      ASSERT_TRUE(v >= 0 && v < static_cast<int>(n)) << "tet " << t;
     ASSERT_GT(core::signed_volume(mesh, static_cast<int>(t)), 0.0) << "rest tet " << t;
-    ASSERT_GT(core::signed_volume(change.current[q[0]], change.current[q[1]],
-                                  change.current[q[2]], change.current[q[3]]),
+    ASSERT_GT(core::signed_volume(change.current[q[0]], change.current[q[1]], change.current[q[2]],
+                                  change.current[q[3]]),
               0.0)
         << "current tet " << t;
     ASSERT_LT(change.tet_parent[t], static_cast<int>(before.tets.size()));
   }
-  const double bound =
-      std::min({min_dihedral, smallest_dihedral(before.tets, before.nodes),
-                smallest_dihedral(before.tets, current_before)});
+  const double bound = std::min({min_dihedral, smallest_dihedral(before.tets, before.nodes),
+                                 smallest_dihedral(before.tets, current_before)});
   EXPECT_GE(smallest_dihedral(mesh.tets, mesh.nodes), bound);
   EXPECT_GE(smallest_dihedral(mesh.tets, change.current), bound);
   // Volume kept in both configurations.
@@ -74,8 +74,10 @@ void expect_valid_cut(const core::TetMesh& before, const std::vector<Vec3>& curr
   EXPECT_NEAR(core::total_volume(current_after_mesh), cur_before, 1e-9 * cur_before);
   // The surface is exactly the boundary of the tets, oriented outward.
   std::vector<core::Triangle> expected = core::boundary_faces(mesh.tets), actual;
-  for (auto& f : expected) f = canonical(f);
-  for (const auto& f : mesh.surface_faces) actual.push_back(canonical(f));
+  for (auto& f : expected)
+    f = canonical(f);
+  for (const auto& f : mesh.surface_faces)
+    actual.push_back(canonical(f));
   std::sort(expected.begin(), expected.end());
   std::sort(actual.begin(), actual.end());
   EXPECT_EQ(actual, expected);
@@ -90,7 +92,8 @@ void expect_valid_cut(const core::TetMesh& before, const std::vector<Vec3>& curr
     EXPECT_GT(fragment.rest_volume, 0.0);
   }
   // Node sources reproduce both configurations from the old nodes.
-  const double scale = (core::bounds(core::SurfaceMesh{before.nodes, {}, {}, {}, {}}).size()).norm();
+  const double scale =
+      (core::bounds(core::SurfaceMesh{before.nodes, {}, {}, {}, {}}).size()).norm();
   for (std::size_t i = 0; i < n; ++i) {
     auto [begin, end] = change.sources(static_cast<int>(i));
     ASSERT_NE(begin, end) << "node " << i;
@@ -109,7 +112,8 @@ void expect_valid_cut(const core::TetMesh& before, const std::vector<Vec3>& curr
   }
   for (int f : change.cut_surface_faces) {
     ASSERT_LT(f, static_cast<int>(mesh.surface_faces.size()));
-    for (int v : mesh.surface_faces[f]) EXPECT_TRUE(change.on_cut[v]);
+    for (int v : mesh.surface_faces[f])
+      EXPECT_TRUE(change.on_cut[v]);
   }
 }
 

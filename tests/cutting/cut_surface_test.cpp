@@ -15,7 +15,8 @@ using core::Vec3;
 double area(const CutSurface& s) {
   double a = 0.0;
   for (const auto& t : s.triangles) {
-    a += 0.5 * (s.vertices[t[1]] - s.vertices[t[0]]).cross(s.vertices[t[2]] - s.vertices[t[0]]).norm();
+    a += 0.5 *
+         (s.vertices[t[1]] - s.vertices[t[0]]).cross(s.vertices[t[2]] - s.vertices[t[0]]).norm();
   }
   return a;
 }
@@ -25,7 +26,8 @@ TEST(CutSurface, a_straight_loop_sweep_covers_the_wire_length_times_the_path) {
   loop.radius = 0.004;
   loop.segments = 64;
   std::vector<LoopPose> sweep(5);
-  for (int k = 0; k < 5; ++k) sweep[k].position = Vec3(0, 0, 0.005 * k);
+  for (int k = 0; k < 5; ++k)
+    sweep[k].position = Vec3(0, 0, 0.005 * k);
   const CutSurface s = swept_loop_surface(loop, sweep);
   EXPECT_EQ(s.triangles.size(), 2u * 64u * 4u);
   // The chords of a half circle of radius r: 2·n·r·sin(π/(2n)) long, times the 2 cm path.
@@ -96,11 +98,13 @@ TEST(CutSurface, bad_loops_and_sweeps_are_refused_with_a_clear_sentence) {
   broken[0].rotation(0, 0) = 2.0;
   EXPECT_NE(message([&] { swept_loop_surface(loop, broken); }).find("orthonormal"),
             std::string::npos);
-  EXPECT_NE(message([&] { planar_cut_surface(Vec3::Zero(), Vec3::UnitZ(), Vec3::UnitZ(), 1, 1); })
-                .find("parallel"),
+  EXPECT_NE(message([&] {
+              planar_cut_surface(Vec3::Zero(), Vec3::UnitZ(), Vec3::UnitZ(), 1, 1);
+            }).find("parallel"),
             std::string::npos);
-  EXPECT_NE(message([&] { scissor_cut_surface(Vec3::Zero(), Vec3::UnitX(), 2 * Vec3::UnitX()); })
-                .find("collinear"),
+  EXPECT_NE(message([&] {
+              scissor_cut_surface(Vec3::Zero(), Vec3::UnitX(), 2 * Vec3::UnitX());
+            }).find("collinear"),
             std::string::npos);
 }
 

@@ -12,9 +12,11 @@ TEST(Fragments, two_separate_blocks_are_two_fragments_with_their_volumes) {
   core::TetMesh a = testing::tet_block(2, 1, 1, 0.01);
   const core::TetMesh b = testing::tet_block(1, 1, 1, 0.02);
   const int offset = static_cast<int>(a.nodes.size());
-  for (const auto& p : b.nodes) a.nodes.push_back(p + core::Vec3(0.1, 0, 0));
+  for (const auto& p : b.nodes)
+    a.nodes.push_back(p + core::Vec3(0.1, 0, 0));
   for (auto t : b.tets) {
-    for (int& v : t) v += offset;
+    for (int& v : t)
+      v += offset;
     a.tets.push_back(t);
   }
   a.surface_faces = core::boundary_faces(a.tets);

@@ -50,7 +50,8 @@ TEST(HybridCut, hundred_random_planar_cuts_through_a_ball_keep_every_invariant) 
     double plus_side = 0.0;
     for (const auto& f : fragments) {
       Vec3 centroid = Vec3::Zero();
-      for (int v : f.nodes) centroid += change.mesh.nodes[v];
+      for (int v : f.nodes)
+        centroid += change.mesh.nodes[v];
       if ((centroid / f.nodes.size()).dot(normal) > d) plus_side = f.rest_volume;
     }
     EXPECT_NEAR(plus_side, cap_volume(radius, d), 0.06 * total);
@@ -103,7 +104,8 @@ TEST(HybridCut, cuts_a_deformed_body_where_it_is_and_carries_the_rest_shape) {
   const core::TetMesh& ball = testing::cutting_ball();
   // A sheared deformation: the cut lives in the deformed configuration.
   std::vector<Vec3> current;
-  for (const Vec3& p : ball.nodes) current.push_back(p + Vec3(0.4 * p.z(), 0.0, 0.1 * p.x()));
+  for (const Vec3& p : ball.nodes)
+    current.push_back(p + Vec3(0.4 * p.z(), 0.0, 0.1 * p.x()));
   const CutSurface plane =
       planar_cut_surface(Vec3(0.003, 0, 0), Vec3(1, 0.2, 0), Vec3(0, 0, 1), 0.05, 0.05, 6);
   const TopologyChange change = hybrid_cut(ball, current, plane);
@@ -174,17 +176,21 @@ TEST(HybridCut, carries_masses_fixed_flags_labels_and_velocities) {
   core::TetMesh block = testing::tet_block(3, 3, 3, 0.01);
   block.node_mass = core::lumped_node_masses(block, 1000.0);
   block.fixed.assign(block.nodes.size(), 0);
-  for (std::size_t v = 0; v < block.nodes.size(); ++v) block.fixed[v] = block.nodes[v].z() < 1e-9;
+  for (std::size_t v = 0; v < block.nodes.size(); ++v)
+    block.fixed[v] = block.nodes[v].z() < 1e-9;
   block.tet_labels.assign(block.tets.size(), 0);
-  for (std::size_t t = 0; t < block.tets.size(); ++t) block.tet_labels[t] = static_cast<int>(t % 3);
+  for (std::size_t t = 0; t < block.tets.size(); ++t)
+    block.tet_labels[t] = static_cast<int>(t % 3);
   const CutSurface plane = planar_cut_surface(Vec3(0.015, 0.015, 0.013), Vec3(0.2, 0.1, 1),
                                               Vec3::UnitX(), 0.05, 0.05, 4);
   const TopologyChange change = hybrid_cut(block, block.nodes, plane);
   ASSERT_TRUE(change.changed);
   testing::expect_valid_cut(block, block.nodes, change);
   double before = 0.0, after = 0.0;
-  for (double m : block.node_mass) before += m;
-  for (double m : change.mesh.node_mass) after += m;
+  for (double m : block.node_mass)
+    before += m;
+  for (double m : change.mesh.node_mass)
+    after += m;
   EXPECT_NEAR(after, before, 1e-12 * before);
   ASSERT_EQ(change.mesh.tet_labels.size(), change.mesh.tets.size());
   for (std::size_t t = 0; t < change.mesh.tets.size(); ++t) {
@@ -196,7 +202,8 @@ TEST(HybridCut, carries_masses_fixed_flags_labels_and_velocities) {
   }
   // A rigid velocity field is carried exactly.
   std::vector<Vec3> velocity;
-  for (const Vec3& p : block.nodes) velocity.push_back(Vec3(1, 2, 3) + Vec3(0, 0, 1).cross(p));
+  for (const Vec3& p : block.nodes)
+    velocity.push_back(Vec3(1, 2, 3) + Vec3(0, 0, 1).cross(p));
   const auto carried = carry_node_values(change, velocity);
   for (std::size_t v = 0; v < carried.size(); ++v) {
     EXPECT_LT((carried[v] - (Vec3(1, 2, 3) + Vec3(0, 0, 1).cross(change.mesh.nodes[v]))).norm(),
@@ -232,8 +239,8 @@ TEST(HybridCut, a_surface_that_misses_the_body_changes_nothing) {
 TEST(HybridCut, an_incision_that_ends_inside_keeps_the_body_in_one_piece) {
   // Scissors closing on the middle of a block: the crack ends inside the tissue.
   const core::TetMesh block = testing::tet_block(6, 6, 2, 0.01);
-  const CutSurface blades = scissor_cut_surface(Vec3(-0.01, 0.03, -0.005), Vec3(0.035, 0.03, -0.005),
-                                                Vec3(0.035, 0.03, 0.025), 6);
+  const CutSurface blades = scissor_cut_surface(
+      Vec3(-0.01, 0.03, -0.005), Vec3(0.035, 0.03, -0.005), Vec3(0.035, 0.03, 0.025), 6);
   const TopologyChange change = hybrid_cut(block, block.nodes, blades);
   ASSERT_TRUE(change.changed);
   EXPECT_GT(change.cut_surface_faces.size(), 0u);

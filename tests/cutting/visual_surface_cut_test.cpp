@@ -17,8 +17,7 @@ TEST(VisualSurfaceCut, the_visual_surface_is_split_along_the_cut_and_gets_cut_fa
   const core::SurfaceMesh visual = core::make_icosphere(0.0199, 5);
   const core::SurfaceEmbedding embedding = core::embed_points(visual.vertices, ball);
   const Vec3 normal = Vec3(0.3, 1, 0.2).normalized();
-  const CutSurface plane =
-      planar_cut_surface(0.004 * normal, normal, Vec3::UnitX(), 0.05, 0.05, 4);
+  const CutSurface plane = planar_cut_surface(0.004 * normal, normal, Vec3::UnitX(), 0.05, 0.05, 4);
   const TopologyChange change = hybrid_cut(ball, ball.nodes, plane, visual, embedding);
   ASSERT_TRUE(change.changed);
   const core::SurfaceMesh& out = change.visual;
@@ -29,15 +28,16 @@ TEST(VisualSurfaceCut, the_visual_surface_is_split_along_the_cut_and_gets_cut_fa
   ASSERT_EQ(out.uvs.size(), out.vertices.size());
   const auto& flag = out.vertex_attributes.at("cut_face");
   for (int f : change.visual_cut_triangles) {
-    for (int v : out.triangles[f]) EXPECT_EQ(flag[v], 1.0);
+    for (int v : out.triangles[f])
+      EXPECT_EQ(flag[v], 1.0);
   }
   // Every vertex follows a tet of the new body, and its embedding gives back its material
   // point; the original vertices stay inside their tets as much as they were before.
   const auto& mx = out.vertex_attributes.at("material_x");
   const auto& my = out.vertex_attributes.at("material_y");
   const auto& mz = out.vertex_attributes.at("material_z");
-  const auto rest = core::embedded_positions(change.visual_embedding, change.mesh.tets,
-                                             change.mesh.nodes);
+  const auto rest =
+      core::embedded_positions(change.visual_embedding, change.mesh.tets, change.mesh.nodes);
   for (std::size_t v = 0; v < out.vertices.size(); ++v) {
     const int t = change.visual_embedding.tet[v];
     ASSERT_TRUE(t >= 0 && t < static_cast<int>(change.mesh.tets.size()));
@@ -51,8 +51,8 @@ TEST(VisualSurfaceCut, the_visual_surface_is_split_along_the_cut_and_gets_cut_fa
     }
   }
   // No visual triangle of the body's skin spans the cut: its corners lie on one side.
-  const auto current = core::embedded_positions(change.visual_embedding, change.mesh.tets,
-                                                change.current);
+  const auto current =
+      core::embedded_positions(change.visual_embedding, change.mesh.tets, change.current);
   std::size_t spanning = 0;
   for (std::size_t f = 0; f < out.triangles.size(); ++f) {
     if (std::find(change.visual_cut_triangles.begin(), change.visual_cut_triangles.end(),

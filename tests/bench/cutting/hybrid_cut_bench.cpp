@@ -42,14 +42,14 @@ void report(benchmark::State& state, const sim::cutting::TopologyChange& change)
 
 void HybridCutPlanarThroughBall(benchmark::State& state) {
   const Ball& b = ball();
-  const auto plane = sim::cutting::planar_cut_surface(
-      core::Vec3(0.001, 0.002, 0.0005), core::Vec3(0.2, 1.0, 0.1), core::Vec3::UnitX(), 0.06,
-      0.06, 8);
+  const auto plane =
+      sim::cutting::planar_cut_surface(core::Vec3(0.001, 0.002, 0.0005), core::Vec3(0.2, 1.0, 0.1),
+                                       core::Vec3::UnitX(), 0.06, 0.06, 8);
   sim::cutting::TopologyChange change;
   for (auto _ : state) {
-    change = state.range(0) ? sim::cutting::hybrid_cut(b.body, b.body.nodes, plane, b.visual,
-                                                        b.embedding)
-                            : sim::cutting::hybrid_cut(b.body, b.body.nodes, plane);
+    change = state.range(0)
+                 ? sim::cutting::hybrid_cut(b.body, b.body.nodes, plane, b.visual, b.embedding)
+                 : sim::cutting::hybrid_cut(b.body, b.body.nodes, plane);
     benchmark::DoNotOptimize(change.mesh.tets.data());
   }
   report(state, change);
@@ -64,7 +64,8 @@ void HybridCutLoopSweepThroughBall(benchmark::State& state) {
   std::vector<sim::cutting::LoopPose> sweep;
   for (int k = 0; k <= 16; ++k) {
     sim::cutting::LoopPose pose;
-    pose.position = core::Vec3(0.0, 0.032 + 0.004 * std::sin(M_PI * k / 16.0), -0.065 + 0.13 * k / 16.0);
+    pose.position =
+        core::Vec3(0.0, 0.032 + 0.004 * std::sin(M_PI * k / 16.0), -0.065 + 0.13 * k / 16.0);
     sweep.push_back(pose);
   }
   const auto surface = sim::cutting::swept_loop_surface(loop, sweep);

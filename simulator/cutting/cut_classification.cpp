@@ -259,7 +259,7 @@ TetCutPattern pattern_of(const CutClassification& c, const Tetrahedron& tet, int
   TetCutPattern p;
   for (int i = 0; i < 4; ++i) {
     const int s = c.side[tet[i]];
-    p.side[i] = (s == kUnknownSide) ? 1 : s;  // unknown corners only occur in uncut tets
+    p.side[i] = (s == kUnknownSide) ? 0 : s;  // unknown corners only occur in uncut tets
     p.rank[i] = static_cast<std::uint64_t>(tet[i]);
   }
   for (int e = 0; e < 6; ++e) {

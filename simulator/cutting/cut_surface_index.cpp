@@ -56,10 +56,18 @@ CutSurfaceIndex::CutSurfaceIndex(CutSurface surface, double cell_size)
     for (int k : surface_.triangles[t])
       box.add(surface_.vertices[k]);
     const auto lo = cell_of(box.min), hi = cell_of(box.max);
+    // Only the cells the triangle's plane passes through (a large oblique triangle's box holds
+    // many cells it never touches).
+    const Vec3& p0 = surface_.vertices[surface_.triangles[t][0]];
+    const Vec3& n = normals_[t];
+    const double reach = 0.5 * cell_ * n.cwiseAbs().sum() * (1.0 + 1e-9) + 1e-15;
     for (int i = lo[0]; i <= hi[0]; ++i)
       for (int j = lo[1]; j <= hi[1]; ++j)
-        for (int k = lo[2]; k <= hi[2]; ++k)
+        for (int k = lo[2]; k <= hi[2]; ++k) {
+          const Vec3 centre = origin_ + (Vec3(i, j, k) + Vec3::Constant(0.5)) * cell_;
+          if (std::abs(n.dot(centre - p0)) > reach) continue;
           cells_.emplace_back(key(i, j, k), t);
+        }
   }
   std::sort(cells_.begin(), cells_.end());
   stamp_.assign(surface_.triangles.size(), 0);

@@ -209,7 +209,10 @@ TopologyChange cut_body(const core::TetMesh& body, const std::vector<Vec3>& curr
                         const CutSurface& cut, const core::SurfaceMesh* visual,
                         const core::SurfaceEmbedding* embedding, const HybridCutOptions& options) {
   check_input(body, current, cut, options);
-  const CutSurfaceIndex index(cut, mean_cut_edge(cut));
+  // Grid cells about twice the body's mean edge length (a regular tet of the mean volume).
+  const double mean_volume = std::abs(volume_of(body.tets, current)) / body.tets.size();
+  const double edge = std::cbrt(6.0 * std::sqrt(2.0) * mean_volume);
+  const CutSurfaceIndex index(cut, std::max(2.0 * edge, 1e-3 * mean_cut_edge(cut)));
   const CutClassification c =
       classify_cut(body, current, index, {options.snap_fraction, options.min_dihedral_degrees});
   if (c.traversed.empty()) {

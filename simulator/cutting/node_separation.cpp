@@ -124,7 +124,8 @@ SeparationResult separate_cut_nodes(CutWork& w, const std::vector<std::int8_t>& 
         copy_of_root[root] = static_cast<int>(w.rest.size());
         w.rest.push_back(w.rest[v]);
         w.current.push_back(w.current[v]);
-        w.origin.push_back(w.origin[v]);
+        // A copy has the sources of its original (an old node is its own source).
+        w.origin.push_back(w.origin[v].empty() ? std::vector<NodeSource>{{v, 1.0}} : w.origin[v]);
         w.on_cut.push_back(1);
         ++result.duplicated;
       }

@@ -57,8 +57,13 @@ class VisualCutter {
         current_[i] += emb_.weights[i][k] * old_x_[q[k]];
       }
       const auto& candidates = pieces_[emb_.tet[i]];
-      if (candidates.size() == 1 && candidates.front() == emb_.tet[i] &&
-          c_.mesh.tets[emb_.tet[i]] == q) {
+      const auto& now = c_.mesh.tets[emb_.tet[i]];
+      const bool same = candidates.size() == 1 && now == q &&
+                        c_.mesh.nodes[q[0]] == body_.nodes[q[0]] &&
+                        c_.mesh.nodes[q[1]] == body_.nodes[q[1]] &&
+                        c_.mesh.nodes[q[2]] == body_.nodes[q[2]] &&
+                        c_.mesh.nodes[q[3]] == body_.nodes[q[3]];
+      if (same) {
         c_.visual_embedding.tet[i] = emb_.tet[i];
         c_.visual_embedding.weights[i] = emb_.weights[i];
       } else {

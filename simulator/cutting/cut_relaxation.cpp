@@ -43,7 +43,8 @@ std::vector<NodeSource> sources_of(const RelaxationMesh& m, int node) {
 }
 
 // Tries to move `node` by d; keeps the move when both configurations stay at least as good.
-bool try_move(const RelaxationMesh& m, int node, const Vec3& d) {
+bool try_move(const RelaxationMesh& m, int node, const Vec3& d, double before_x,
+              double before_rest) {
   std::vector<Vec3>& x = *m.current;
   std::vector<Vec3>& rest = *m.rest;
   const Vec3 old_x = x[node], old_rest = rest[node];
@@ -63,7 +64,6 @@ bool try_move(const RelaxationMesh& m, int node, const Vec3& d) {
   Vec3 new_rest = Vec3::Zero();
   for (int i = 0; i < 4; ++i)
     new_rest += weights[i] * rest[t[i]];
-  const double before_x = star_worst(m, node, x), before_rest = star_worst(m, node, rest);
   x[node] = target;
   rest[node] = new_rest;
   if (star_worst(m, node, x) > before_x || star_worst(m, node, rest) > before_rest) {
@@ -148,7 +148,9 @@ int relax_cut_neighbourhood(const RelaxationMesh& m, const std::vector<RelaxedNo
         velocity[i].setZero();
         continue;
       }
-      if (try_move(m, node, step) || try_move(m, node, 0.5 * step)) {
+      const double before_x = star_worst(m, node, x), before_rest = star_worst(m, node, *m.rest);
+      if (try_move(m, node, step, before_x, before_rest) ||
+          try_move(m, node, 0.5 * step, before_x, before_rest)) {
         velocity[i] = step;
         moved[i] = 1;
       } else {

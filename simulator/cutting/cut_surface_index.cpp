@@ -47,9 +47,16 @@ CutSurfaceIndex::CutSurfaceIndex(CutSurface surface, double cell_size)
   const double longest = bounds_.size().maxCoeff();
   cell_ = std::max(cell_, longest / 128.0);
   if (!(cell_ > 0.0)) cell_ = 1e-6;
-  origin_ = bounds_.min - Vec3::Constant(cell_);
-  for (int d = 0; d < 3; ++d) {
-    dims_[d] = static_cast<int>(std::ceil((bounds_.size()[d] + 2 * cell_) / cell_)) + 1;
+  // A dense grid of at most ~260,000 cells.
+  for (;;) {
+    origin_ = bounds_.min - Vec3::Constant(cell_);
+    double cells = 1.0;
+    for (int d = 0; d < 3; ++d) {
+      dims_[d] = static_cast<int>(std::ceil((bounds_.size()[d] + 2 * cell_) / cell_)) + 1;
+      cells *= dims_[d];
+    }
+    if (cells <= double(1 << 18)) break;
+    cell_ *= 1.01 * std::cbrt(cells / double(1 << 18));
   }
   for (int t = 0; t < static_cast<int>(surface_.triangles.size()); ++t) {
     core::BoundingBox box;
@@ -70,6 +77,13 @@ CutSurfaceIndex::CutSurfaceIndex(CutSurface surface, double cell_size)
         }
   }
   std::sort(cells_.begin(), cells_.end());
+  // first_[c]: where cell c's triangles start in cells_ (dense, so a column is one range).
+  const std::int64_t count = static_cast<std::int64_t>(dims_[0]) * dims_[1] * dims_[2];
+  first_.assign(static_cast<std::size_t>(count) + 1, 0);
+  for (const auto& [cell, tri] : cells_)
+    ++first_[static_cast<std::size_t>(cell) + 1];
+  for (std::size_t c = 1; c < first_.size(); ++c)
+    first_[c] += first_[c - 1];
   stamp_.assign(surface_.triangles.size(), 0);
 }
 
@@ -99,21 +113,29 @@ void CutSurfaceIndex::for_triangles_in(const core::BoundingBox& box, Visit&& vis
   const auto lo = cell_of(box.min), hi = cell_of(box.max);
   for (int i = lo[0]; i <= hi[0]; ++i) {
     for (int j = lo[1]; j <= hi[1]; ++j) {
-      const std::int64_t first = key(i, j, lo[2]), last = key(i, j, hi[2]);
-      auto it = std::lower_bound(cells_.begin(), cells_.end(), std::make_pair(first, -1));
-      for (; it != cells_.end() && it->first <= last; ++it) {
-        if (stamp_[it->second] == query_) continue;
-        stamp_[it->second] = query_;
-        visit(it->second);
+      const int begin = first_[key(i, j, lo[2])], end = first_[key(i, j, hi[2]) + 1];
+      for (int e = begin; e < end; ++e) {
+        const int tri = cells_[e].second;
+        if (stamp_[tri] == query_) continue;
+        stamp_[tri] = query_;
+        visit(tri);
       }
     }
   }
 }
 
 bool CutSurfaceIndex::may_touch(const core::BoundingBox& box) const {
-  bool any = false;
-  for_triangles_in(box, [&](int) { any = true; });
-  return any;
+  if (box.empty()) return false;
+  for (int d = 0; d < 3; ++d) {
+    if (box.max[d] < bounds_.min[d] - cell_ || box.min[d] > bounds_.max[d] + cell_) return false;
+  }
+  const auto lo = cell_of(box.min), hi = cell_of(box.max);
+  for (int i = lo[0]; i <= hi[0]; ++i) {
+    for (int j = lo[1]; j <= hi[1]; ++j) {
+      if (first_[key(i, j, lo[2])] != first_[key(i, j, hi[2]) + 1]) return true;
+    }
+  }
+  return false;
 }
 
 std::optional<SegmentCrossing> CutSurfaceIndex::crossing(const Vec3& a, const Vec3& b) const {

@@ -58,7 +58,8 @@ class CutSurfaceIndex {
   core::Vec3 origin_ = core::Vec3::Zero();
   std::array<int, 3> dims_{1, 1, 1};
   std::vector<std::pair<std::int64_t, int>> cells_;  ///< sorted (cell key, triangle)
-  mutable std::vector<std::uint32_t> stamp_;         ///< per triangle, de-duplicates visits
+  std::vector<int> first_;                    ///< per cell + 1: start of its entries in cells_
+  mutable std::vector<std::uint32_t> stamp_;  ///< per triangle, de-duplicates visits
   mutable std::uint32_t query_ = 0;
 };
 

@@ -275,8 +275,8 @@ TopologyChange cut_body(const core::TetMesh& body, const std::vector<Vec3>& curr
   change.changed = true;
   change.mesh.nodes = std::move(w.rest);
   change.mesh.tets = w.tets;
-  change.mesh.surface_faces =
-      rebuild_surface(body.surface_faces, body.tets, w, separation, change.cut_surface_faces);
+  change.mesh.surface_faces = rebuild_surface(body.surface_faces, body.tets, w, separation,
+                                              change.cut_surface_faces, change.cut_face_tets);
   change.current = std::move(w.current);
   change.tet_parent = w.parent;
   change.on_cut = w.on_cut;

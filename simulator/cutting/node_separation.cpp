@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <numeric>
-#include <unordered_map>
-#include <unordered_set>
 
 namespace viscera::sim::cutting {
 namespace {
@@ -17,14 +15,6 @@ constexpr int kFaces[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
 struct FaceKey {
   std::array<int, 3> n;
   bool operator==(const FaceKey&) const = default;
-};
-struct FaceHash {
-  std::size_t operator()(const FaceKey& k) const {
-    std::uint64_t h = static_cast<std::uint32_t>(k.n[0]);
-    h = h * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint32_t>(k.n[1]);
-    h = h * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint32_t>(k.n[2]);
-    return static_cast<std::size_t>(h ^ (h >> 29));
-  }
 };
 
 FaceKey key_of(int a, int b, int c) {
@@ -72,7 +62,9 @@ SeparationResult separate_cut_nodes(CutWork& w, const std::vector<std::int8_t>& 
   }
   for (int t : result.affected)
     result.conforming.push_back(w.tets[t]);
-  const std::vector<Tetrahedron> conforming_all = w.tets;  // ids before any duplication
+  // Copies map back to the node they were made from, so face keys use the conforming ids.
+  std::vector<int> original;
+  const auto conforming_id = [&](int u) { return u < first_new ? u : original[u - first_new]; };
   struct Entry {
     std::uint64_t key;
     int local;
@@ -88,10 +80,10 @@ SeparationResult separate_cut_nodes(CutWork& w, const std::vector<std::int8_t>& 
     const int size = end - begin;
     entries.clear();
     for (int i = 0; i < size; ++i) {
-      const Tetrahedron& t = conforming_all[w.star_tets[begin + i]];
+      const Tetrahedron& t = w.tets[w.star_tets[begin + i]];
       int others[3], count = 0;
       for (int u : t) {
-        if (u != v) others[count++] = u;
+        if (u != v) others[count++] = conforming_id(u);
       }
       // The three faces through v: v with each pair of the other corners.
       for (int a = 0; a < 3; ++a) {
@@ -127,6 +119,7 @@ SeparationResult separate_cut_nodes(CutWork& w, const std::vector<std::int8_t>& 
         // A copy has the sources of its original (an old node is its own source).
         w.origin.push_back(w.origin[v].empty() ? std::vector<NodeSource>{{v, 1.0}} : w.origin[v]);
         w.on_cut.push_back(1);
+        original.push_back(v);
         ++result.duplicated;
       }
       for (int& u : w.tets[w.star_tets[begin + i]]) {
@@ -140,51 +133,84 @@ SeparationResult separate_cut_nodes(CutWork& w, const std::vector<std::int8_t>& 
 std::vector<Triangle> rebuild_surface(const std::vector<Triangle>& old_surface,
                                       const std::vector<Tetrahedron>& old_tets, const CutWork& w,
                                       const SeparationResult& separation,
-                                      std::vector<int>& cut_faces) {
+                                      std::vector<int>& cut_faces,
+                                      std::vector<int>& cut_face_tets) {
   // The old surface faces of the tets the cut affects are replaced by their new versions.
   std::vector<std::uint8_t> parent_affected(old_tets.size(), 0);
-  std::unordered_set<FaceKey, FaceHash> parent_faces;
+  std::vector<std::array<int, 3>> parent_faces;
   for (int t : separation.affected) {
     const int p = w.parent[t];
     if (parent_affected[p]) continue;
     parent_affected[p] = 1;
     const Tetrahedron& o = old_tets[p];
     for (const auto& f : kFaces)
-      parent_faces.insert(key_of(o[f[0]], o[f[1]], o[f[2]]));
+      parent_faces.push_back(key_of(o[f[0]], o[f[1]], o[f[2]]).n);
   }
+  std::sort(parent_faces.begin(), parent_faces.end());
   std::vector<Triangle> surface;
-  std::unordered_set<FaceKey, FaceHash> removed;
+  std::vector<std::array<int, 3>> removed;
   for (const Triangle& f : old_surface) {
-    const FaceKey k = key_of(f[0], f[1], f[2]);
-    if (parent_faces.count(k)) {
-      removed.insert(k);
+    const auto k = key_of(f[0], f[1], f[2]).n;
+    if (std::binary_search(parent_faces.begin(), parent_faces.end(), k)) {
+      removed.push_back(k);
     } else {
       surface.push_back(f);
     }
   }
-  // Boundary faces of the affected tets, before and after separation.
-  std::unordered_map<FaceKey, int, FaceHash> before, after;
-  before.reserve(separation.affected.size() * 4);
-  after.reserve(separation.affected.size() * 4);
-  for (std::size_t i = 0; i < separation.affected.size(); ++i) {
+  std::sort(removed.begin(), removed.end());
+  // Boundary faces of the affected tets after separation (sorted keys: a face seen once is on
+  // the boundary of the affected set), and which of them were shared before (cut faces).
+  struct Face {
+    FaceKey key;
+    int slot;  // 4 · (index in affected) + face
+  };
+  const auto by_key = [](const Face& a, const Face& b) { return a.key.n < b.key.n; };
+  const std::size_t count = separation.affected.size();
+  std::vector<Face> before, after;
+  before.reserve(4 * count);
+  after.reserve(4 * count);
+  for (std::size_t i = 0; i < count; ++i) {
     const Tetrahedron& c = separation.conforming[i];
     const Tetrahedron& t = w.tets[separation.affected[i]];
-    for (const auto& f : kFaces) {
-      ++before[key_of(c[f[0]], c[f[1]], c[f[2]])];
-      ++after[key_of(t[f[0]], t[f[1]], t[f[2]])];
+    for (int f = 0; f < 4; ++f) {
+      const auto& k = kFaces[f];
+      before.push_back({key_of(c[k[0]], c[k[1]], c[k[2]]), static_cast<int>(4 * i + f)});
+      after.push_back({key_of(t[k[0]], t[k[1]], t[k[2]]), static_cast<int>(4 * i + f)});
     }
   }
-  for (std::size_t i = 0; i < separation.affected.size(); ++i) {
+  std::sort(before.begin(), before.end(), by_key);
+  std::sort(after.begin(), after.end(), by_key);
+  std::vector<std::uint8_t> shared_before(4 * count, 0), boundary_after(4 * count, 0);
+  for (std::size_t i = 0; i < before.size();) {
+    std::size_t j = i + 1;
+    while (j < before.size() && before[j].key == before[i].key)
+      ++j;
+    if (j - i == 2) shared_before[before[i].slot] = shared_before[before[i + 1].slot] = 1;
+    i = j;
+  }
+  for (std::size_t i = 0; i < after.size();) {
+    std::size_t j = i + 1;
+    while (j < after.size() && after[j].key == after[i].key)
+      ++j;
+    if (j - i == 1) boundary_after[after[i].slot] = 1;
+    i = j;
+  }
+  for (std::size_t i = 0; i < count; ++i) {
     const Tetrahedron& c = separation.conforming[i];
     const Tetrahedron& t = w.tets[separation.affected[i]];
-    for (const auto& f : kFaces) {
-      if (after[key_of(t[f[0]], t[f[1]], t[f[2]])] != 1) continue;
-      const FaceKey old_key = key_of(c[f[0]], c[f[1]], c[f[2]]);
-      const bool on_cut_nodes = w.on_cut[c[f[0]]] || w.on_cut[c[f[1]]] || w.on_cut[c[f[2]]];
-      const bool was_inside = before[old_key] == 2;
-      if (!on_cut_nodes && !removed.count(old_key)) continue;  // shared with an untouched tet
-      if (was_inside) cut_faces.push_back(static_cast<int>(surface.size()));
-      surface.push_back({t[f[0]], t[f[1]], t[f[2]]});
+    for (int f = 0; f < 4; ++f) {
+      if (!boundary_after[4 * i + f]) continue;
+      const auto& k = kFaces[f];
+      const bool on_cut_nodes = w.on_cut[c[k[0]]] || w.on_cut[c[k[1]]] || w.on_cut[c[k[2]]];
+      if (!on_cut_nodes && !std::binary_search(removed.begin(), removed.end(),
+                                               key_of(c[k[0]], c[k[1]], c[k[2]]).n)) {
+        continue;  // shared with an untouched tet
+      }
+      if (shared_before[4 * i + f]) {
+        cut_faces.push_back(static_cast<int>(surface.size()));
+        cut_face_tets.push_back(separation.affected[i]);
+      }
+      surface.push_back({t[k[0]], t[k[1]], t[k[2]]});
     }
   }
   return surface;

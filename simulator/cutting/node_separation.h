@@ -34,10 +34,12 @@ struct SeparationResult {
 SeparationResult separate_cut_nodes(CutWork& w, const std::vector<std::int8_t>& tet_side);
 
 /// The surface faces after separation: the old ones that no affected tet touches, then the
-/// boundary faces of the affected tets. cut_faces receives the indices of faces on the cut.
+/// boundary faces of the affected tets. cut_faces receives the indices of faces on the cut and
+/// cut_face_tets the tet each of them bounds.
 std::vector<core::Triangle> rebuild_surface(const std::vector<core::Triangle>& old_surface,
                                             const std::vector<core::Tetrahedron>& old_tets,
                                             const CutWork& w, const SeparationResult& separation,
-                                            std::vector<int>& cut_faces);
+                                            std::vector<int>& cut_faces,
+                                            std::vector<int>& cut_face_tets);
 
 }  // namespace viscera::sim::cutting

@@ -78,6 +78,7 @@ struct TopologyChange {
   /// Surface faces that lie on the cut (new surface, both sides), indices into
   /// mesh.surface_faces. The core gives them the area energy like every surface face.
   std::vector<int> cut_surface_faces;
+  std::vector<int> cut_face_tets;  ///< per cut surface face: the tet it bounds
   /// Per mesh node: 1 when it lies on the cut (a snapped node, a node on a cut edge, or a copy).
   std::vector<std::uint8_t> on_cut;
   /// The visual surface after the cut and its embedding in `mesh` (empty when none was given).

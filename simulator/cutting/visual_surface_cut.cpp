@@ -58,11 +58,10 @@ class VisualCutter {
       }
       const auto& candidates = pieces_[emb_.tet[i]];
       const auto& now = c_.mesh.tets[emb_.tet[i]];
-      const bool same = candidates.size() == 1 && now == q &&
-                        c_.mesh.nodes[q[0]] == body_.nodes[q[0]] &&
-                        c_.mesh.nodes[q[1]] == body_.nodes[q[1]] &&
-                        c_.mesh.nodes[q[2]] == body_.nodes[q[2]] &&
-                        c_.mesh.nodes[q[3]] == body_.nodes[q[3]];
+      const bool same =
+          candidates.size() == 1 && now == q && c_.mesh.nodes[q[0]] == body_.nodes[q[0]] &&
+          c_.mesh.nodes[q[1]] == body_.nodes[q[1]] && c_.mesh.nodes[q[2]] == body_.nodes[q[2]] &&
+          c_.mesh.nodes[q[3]] == body_.nodes[q[3]];
       if (same) {
         c_.visual_embedding.tet[i] = emb_.tet[i];
         c_.visual_embedding.weights[i] = emb_.weights[i];
@@ -137,19 +136,8 @@ class VisualCutter {
 
   void add_cut_faces() {
     std::unordered_map<int, int> vertex_of_node;
-    // A tet holding each cut node, for its embedding.
-    std::unordered_map<int, std::pair<int, int>> holder;  // node → (tet, corner)
-    for (int f : c_.cut_surface_faces) {
-      for (int v : c_.mesh.surface_faces[f])
-        holder.emplace(v, std::make_pair(-1, -1));
-    }
-    for (int t = 0; t < static_cast<int>(c_.mesh.tets.size()); ++t) {
-      for (int k = 0; k < 4; ++k) {
-        const auto it = holder.find(c_.mesh.tets[t][k]);
-        if (it != holder.end() && it->second.first < 0) it->second = {t, k};
-      }
-    }
-    for (int f : c_.cut_surface_faces) {
+    for (std::size_t slot = 0; slot < c_.cut_surface_faces.size(); ++slot) {
+      const int f = c_.cut_surface_faces[slot];
       const auto& face = c_.mesh.surface_faces[f];
       core::Triangle tri{};
       for (int k = 0; k < 3; ++k) {
@@ -166,9 +154,11 @@ class VisualCutter {
           current_.push_back(c_.current[node]);
           cut_flag_.resize(out_.vertices.size(), 0);
           cut_flag_.back() = 1;
-          const auto [tet, corner] = holder.at(node);
+          // The node is a corner of the tet the cut face bounds.
+          const int tet = c_.cut_face_tets[slot];
+          const auto& corners = c_.mesh.tets[tet];
           std::array<double, 4> w{0, 0, 0, 0};
-          w[corner] = 1.0;
+          w[std::find(corners.begin(), corners.end(), node) - corners.begin()] = 1.0;
           c_.visual_embedding.tet.push_back(tet);
           c_.visual_embedding.weights.push_back(w);
         }

@@ -210,7 +210,8 @@ TopologyChange cut_body(const core::TetMesh& body, const std::vector<Vec3>& curr
                         const core::SurfaceEmbedding* embedding, const HybridCutOptions& options) {
   check_input(body, current, cut, options);
   // Grid cells about twice the body's mean edge length (a regular tet of the mean volume).
-  const double mean_volume = std::abs(volume_of(body.tets, current)) / body.tets.size();
+  const double current_volume = volume_of(body.tets, current);
+  const double mean_volume = std::abs(current_volume) / body.tets.size();
   const double edge = std::cbrt(6.0 * std::sqrt(2.0) * mean_volume);
   const CutSurfaceIndex index(cut, std::max(2.0 * edge, 1e-3 * mean_cut_edge(cut)));
   const CutClassification c =
@@ -247,7 +248,7 @@ TopologyChange cut_body(const core::TetMesh& body, const std::vector<Vec3>& curr
   s.nodes_snapped = c.snapped;
   s.nodes_created = c.cut_edges.size();
   s.rest_volume_before = volume_of(body.tets, body.nodes);
-  s.current_volume_before = volume_of(body.tets, current);
+  s.current_volume_before = current_volume;
   const std::vector<int> children = decompose_traversed(body, c, w, s.min_dihedral_before_degrees);
   std::vector<int> decomposed_parents;
   for (int t : children)

@@ -158,54 +158,65 @@ std::vector<Triangle> rebuild_surface(const std::vector<Triangle>& old_surface,
     }
   }
   std::sort(removed.begin(), removed.end());
-  // Boundary faces of the affected tets after separation (sorted keys: a face seen once is on
-  // the boundary of the affected set), and which of them were shared before (cut faces).
+  // Boundary faces of the affected tets after separation: a face seen once among them. Faces
+  // without a node on the cut keep their ids, so only faces with one take part in the sort;
+  // those with all three nodes on the cut are also compared before separation (cut faces).
   struct Face {
-    FaceKey key;
+    std::uint64_t ab;
+    int c;
     int slot;  // 4 · (index in affected) + face
+    bool operator<(const Face& o) const { return ab < o.ab || (ab == o.ab && c < o.c); }
+    bool same(const Face& o) const { return ab == o.ab && c == o.c; }
   };
-  const auto by_key = [](const Face& a, const Face& b) { return a.key.n < b.key.n; };
+  const auto face_of = [](int x, int y, int z, int slot) {
+    const FaceKey k = key_of(x, y, z);
+    return Face{(static_cast<std::uint64_t>(k.n[0]) << 32) | static_cast<std::uint32_t>(k.n[1]),
+                k.n[2], slot};
+  };
   const std::size_t count = separation.affected.size();
   std::vector<Face> before, after;
-  before.reserve(4 * count);
   after.reserve(4 * count);
   for (std::size_t i = 0; i < count; ++i) {
     const Tetrahedron& c = separation.conforming[i];
     const Tetrahedron& t = w.tets[separation.affected[i]];
     for (int f = 0; f < 4; ++f) {
       const auto& k = kFaces[f];
-      before.push_back({key_of(c[k[0]], c[k[1]], c[k[2]]), static_cast<int>(4 * i + f)});
-      after.push_back({key_of(t[k[0]], t[k[1]], t[k[2]]), static_cast<int>(4 * i + f)});
+      const int cut_nodes = w.on_cut[c[k[0]]] + w.on_cut[c[k[1]]] + w.on_cut[c[k[2]]];
+      if (cut_nodes == 0) continue;
+      const int slot = static_cast<int>(4 * i + f);
+      after.push_back(face_of(t[k[0]], t[k[1]], t[k[2]], slot));
+      if (cut_nodes == 3) before.push_back(face_of(c[k[0]], c[k[1]], c[k[2]], slot));
     }
   }
-  std::sort(before.begin(), before.end(), by_key);
-  std::sort(after.begin(), after.end(), by_key);
+  std::sort(before.begin(), before.end());
+  std::sort(after.begin(), after.end());
   std::vector<std::uint8_t> shared_before(4 * count, 0), boundary_after(4 * count, 0);
-  for (std::size_t i = 0; i < before.size();) {
-    std::size_t j = i + 1;
-    while (j < before.size() && before[j].key == before[i].key)
-      ++j;
-    if (j - i == 2) shared_before[before[i].slot] = shared_before[before[i + 1].slot] = 1;
-    i = j;
+  for (std::size_t i = 0; i + 1 < before.size(); ++i) {
+    if (before[i].same(before[i + 1]))
+      shared_before[before[i].slot] = shared_before[before[i + 1].slot] = 1;
   }
   for (std::size_t i = 0; i < after.size();) {
     std::size_t j = i + 1;
-    while (j < after.size() && after[j].key == after[i].key)
+    while (j < after.size() && after[j].same(after[i]))
       ++j;
     if (j - i == 1) boundary_after[after[i].slot] = 1;
     i = j;
   }
+  // Faces without nodes on the cut are on the boundary exactly when they were old surface.
   for (std::size_t i = 0; i < count; ++i) {
     const Tetrahedron& c = separation.conforming[i];
+    for (int f = 0; f < 4; ++f) {
+      const auto& k = kFaces[f];
+      if (w.on_cut[c[k[0]]] || w.on_cut[c[k[1]]] || w.on_cut[c[k[2]]]) continue;
+      boundary_after[4 * i + f] =
+          std::binary_search(removed.begin(), removed.end(), key_of(c[k[0]], c[k[1]], c[k[2]]).n);
+    }
+  }
+  for (std::size_t i = 0; i < count; ++i) {
     const Tetrahedron& t = w.tets[separation.affected[i]];
     for (int f = 0; f < 4; ++f) {
       if (!boundary_after[4 * i + f]) continue;
       const auto& k = kFaces[f];
-      const bool on_cut_nodes = w.on_cut[c[k[0]]] || w.on_cut[c[k[1]]] || w.on_cut[c[k[2]]];
-      if (!on_cut_nodes && !std::binary_search(removed.begin(), removed.end(),
-                                               key_of(c[k[0]], c[k[1]], c[k[2]]).n)) {
-        continue;  // shared with an untouched tet
-      }
       if (shared_before[4 * i + f]) {
         cut_faces.push_back(static_cast<int>(surface.size()));
         cut_face_tets.push_back(separation.affected[i]);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/mesh/surface_embedding.h"
 #include "core/mesh/tet_mesh.h"
@@ -27,13 +28,28 @@ double worst_cos(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   return worst;
 }
 
-double star_worst(const RelaxationMesh& m, int node, const std::vector<Vec3>& x) {
+// Largest worst_cos over the star of `node`, with per-tet values cached (NaN = not known).
+double star_worst(const RelaxationMesh& m, int node, const std::vector<Vec3>& x,
+                  std::vector<double>& cache) {
   double worst = -1.0;
   for (int k = (*m.star_offset)[node]; k < (*m.star_offset)[node + 1]; ++k) {
-    const auto& t = (*m.tets)[(*m.star_tets)[k]];
-    worst = std::max(worst, worst_cos(x[t[0]], x[t[1]], x[t[2]], x[t[3]]));
+    const int id = (*m.star_tets)[k];
+    if (std::isnan(cache[id])) {
+      const auto& t = (*m.tets)[id];
+      cache[id] = worst_cos(x[t[0]], x[t[1]], x[t[2]], x[t[3]]);
+    }
+    worst = std::max(worst, cache[id]);
   }
   return worst;
+}
+
+// True when no tet of the star is worse than `limit` (stops at the first that is).
+bool star_within(const RelaxationMesh& m, int node, const std::vector<Vec3>& x, double limit) {
+  for (int k = (*m.star_offset)[node]; k < (*m.star_offset)[node + 1]; ++k) {
+    const auto& t = (*m.tets)[(*m.star_tets)[k]];
+    if (worst_cos(x[t[0]], x[t[1]], x[t[2]], x[t[3]]) > limit) return false;
+  }
+  return true;
 }
 
 std::vector<NodeSource> sources_of(const RelaxationMesh& m, int node) {
@@ -66,7 +82,7 @@ bool try_move(const RelaxationMesh& m, int node, const Vec3& d, double before_x,
     new_rest += weights[i] * rest[t[i]];
   x[node] = target;
   rest[node] = new_rest;
-  if (star_worst(m, node, x) > before_x || star_worst(m, node, rest) > before_rest) {
+  if (!star_within(m, node, x, before_x) || !star_within(m, node, rest, before_rest)) {
     x[node] = old_x;
     rest[node] = old_rest;
     return false;
@@ -124,6 +140,8 @@ int relax_cut_neighbourhood(const RelaxationMesh& m, const std::vector<RelaxedNo
     r0[i] = nb.empty() ? 0.0 : sum / nb.size();
   }
   std::vector<std::uint8_t> moved(count, 0);
+  constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();
+  std::vector<double> cache_x(m.tets->size(), kUnknown), cache_rest(m.tets->size(), kUnknown);
   for (int iteration = 0; iteration < options.iterations; ++iteration) {
     for (std::size_t i = 0; i < count; ++i) {
       const int node = nodes[i].node;
@@ -148,11 +166,15 @@ int relax_cut_neighbourhood(const RelaxationMesh& m, const std::vector<RelaxedNo
         velocity[i].setZero();
         continue;
       }
-      const double before_x = star_worst(m, node, x), before_rest = star_worst(m, node, *m.rest);
+      const double before_x = star_worst(m, node, x, cache_x);
+      const double before_rest = star_worst(m, node, *m.rest, cache_rest);
       if (try_move(m, node, step, before_x, before_rest) ||
           try_move(m, node, 0.5 * step, before_x, before_rest)) {
         velocity[i] = step;
         moved[i] = 1;
+        for (int k = (*m.star_offset)[node]; k < (*m.star_offset)[node + 1]; ++k) {
+          cache_x[(*m.star_tets)[k]] = cache_rest[(*m.star_tets)[k]] = kUnknown;
+        }
       } else {
         velocity[i].setZero();
       }

@@ -272,6 +272,14 @@ TopologyChange cut_body(const core::TetMesh& body, const std::vector<Vec3>& curr
   }
   const SeparationResult separation = separate_cut_nodes(w, tet_side);
   s.nodes_duplicated = separation.duplicated;
+  if (children.empty() && separation.duplicated == 0) {
+    // The surface only touched nodes without separating anything: nothing changes.
+    TopologyChange same = unchanged(body, current);
+    same.statistics.tets_traversed = c.traversed.size();
+    same.statistics.nodes_snapped = c.snapped;
+    if (visual) same.visual = *visual, same.visual_embedding = *embedding;
+    return same;
+  }
   // Assemble the change.
   change.changed = true;
   change.mesh.nodes = std::move(w.rest);

@@ -64,8 +64,9 @@ struct CutStatistics {
   double min_dihedral_after_degrees = 0.0;   ///< over the tets it created, both configs
 };
 
-/// The result of a cut on one body. When `changed` is false the cut did not traverse the body
-/// (every other field still describes the unchanged body, so it can be applied blindly).
+/// The result of a cut on one body. When `changed` is false the cut neither decomposed nor
+/// separated anything (it missed the body or only touched nodes); every other field then still
+/// describes the unchanged body (identity sources and parents), so it can be applied blindly.
 struct TopologyChange {
   bool changed = false;
   core::TetMesh mesh;               ///< new topology; nodes = rest positions in m

@@ -289,3 +289,20 @@ TEST(HybridCut, bad_input_gets_one_clear_sentence) {
 
 }  // namespace
 }  // namespace viscera::sim::cutting
+
+namespace viscera::sim::cutting {
+namespace {
+
+TEST(HybridCut, a_surface_that_only_touches_the_skin_changes_nothing) {
+  // A plane resting on the block's top face touches its nodes but separates nothing.
+  const core::TetMesh block = testing::tet_block(2, 2, 2, 0.01);
+  const CutSurface plane = planar_cut_surface(core::Vec3(0.01, 0.01, 0.02), core::Vec3::UnitZ(),
+                                              core::Vec3::UnitX(), 0.05, 0.05, 2);
+  const TopologyChange change = hybrid_cut(block, block.nodes, plane);
+  EXPECT_FALSE(change.changed);
+  EXPECT_EQ(change.mesh, block);
+  EXPECT_GT(change.statistics.nodes_snapped, 0u);
+}
+
+}  // namespace
+}  // namespace viscera::sim::cutting

@@ -213,7 +213,7 @@ TopologyChange cut_body(const core::TetMesh& body, const std::vector<Vec3>& curr
   const double current_volume = volume_of(body.tets, current);
   const double mean_volume = std::abs(current_volume) / body.tets.size();
   const double edge = std::cbrt(6.0 * std::sqrt(2.0) * mean_volume);
-  const CutSurfaceIndex index(cut, std::max(2.0 * edge, 1e-3 * mean_cut_edge(cut)));
+  const CutSurfaceIndex index(cut, std::max(edge, 1e-3 * mean_cut_edge(cut)));
   const CutClassification c =
       classify_cut(body, current, index, {options.snap_fraction, options.min_dihedral_degrees});
   if (c.traversed.empty()) {

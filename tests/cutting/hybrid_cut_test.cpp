@@ -306,3 +306,32 @@ TEST(HybridCut, a_surface_that_only_touches_the_skin_changes_nothing) {
 
 }  // namespace
 }  // namespace viscera::sim::cutting
+
+namespace viscera::sim::cutting {
+namespace {
+
+TEST(HybridCut, successive_cuts_through_earlier_cut_faces_keep_every_invariant) {
+  // Stepwise shaving: each cut runs on the result of the last one, across its cut faces.
+  core::TetMesh body = testing::cutting_ball();
+  std::vector<core::Vec3> current = body.nodes;
+  std::mt19937_64 rng(3);
+  std::size_t pieces = 1;
+  for (int cut = 0; cut < 6; ++cut) {
+    SCOPED_TRACE("cut " + std::to_string(cut));
+    const core::Vec3 normal = random_unit(rng);
+    const CutSurface plane =
+        planar_cut_surface(0.004 * (cut % 3 - 1) * normal, normal, random_unit(rng), 0.05, 0.05, 3);
+    const TopologyChange change = hybrid_cut(body, current, plane);
+    ASSERT_TRUE(change.changed);
+    testing::expect_valid_cut(body, current, change);
+    if (::testing::Test::HasFailure()) return;
+    const std::size_t now = body_fragments(change.mesh).size();
+    EXPECT_GT(now, pieces);
+    pieces = now;
+    body = change.mesh;
+    current = change.current;
+  }
+}
+
+}  // namespace
+}  // namespace viscera::sim::cutting

@@ -110,6 +110,13 @@ void expect_valid_cut(const core::TetMesh& before, const std::vector<Vec3>& curr
     ASSERT_LT((rest - mesh.nodes[i]).norm(), 1e-9 * scale) << "rest of node " << i;
     ASSERT_LT((cur - change.current[i]).norm(), 1e-9 * scale) << "current of node " << i;
   }
+  // The relaxation's node classes: nodes of the original surface never move.
+  for (const auto& f : before.surface_faces) {
+    for (int v : f) {
+      ASSERT_EQ(mesh.nodes[v], before.nodes[v]) << "surface node " << v << " moved (rest)";
+      ASSERT_EQ(change.current[v], current_before[v]) << "surface node " << v << " moved";
+    }
+  }
   for (int f : change.cut_surface_faces) {
     ASSERT_LT(f, static_cast<int>(mesh.surface_faces.size()));
     for (int v : mesh.surface_faces[f])

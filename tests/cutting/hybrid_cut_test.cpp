@@ -43,6 +43,12 @@ TEST(HybridCut, hundred_random_planar_cuts_through_a_ball_keep_every_invariant) 
     ASSERT_TRUE(change.changed);
     testing::expect_valid_cut(ball, ball.nodes, change);
     if (::testing::Test::HasFailure()) return;
+    // Nodes made on cut edges (appended first) lie on the plane and slide only within it.
+    for (std::size_t v = ball.nodes.size(); v < ball.nodes.size() + change.statistics.nodes_created;
+         ++v) {
+      EXPECT_NEAR((change.current[v] - d * normal).dot(normal), 0.0, 1e-12 * radius)
+          << "node " << v;
+    }
     const auto fragments = body_fragments(change.mesh);
     ASSERT_EQ(fragments.size(), 2u);
     // The piece on the normal's side is the cap beyond the plane (within the mesh's

@@ -28,7 +28,7 @@ struct RelaxationOptions {
   double damping = 0.3;             ///< velocity kept per step (heavily damped: ≪ 1)
   double max_step_fraction = 0.15;  ///< largest move per step, fraction of r0
   /// Nodes of new tets whose smallest dihedral angle is below this (degrees) are relaxed.
-  double relax_below_degrees = 15.0;
+  double relax_below_degrees = 10.0;
 };
 
 /// The mesh being relaxed, all arrays indexed by node; star_offset/star_tets: node → tets (CSR).

@@ -1,7 +1,8 @@
 /// `viscera-sim`: the simulator runtime. Opens a scenario package and runs a session on it, or
 /// replays a recorded session and checks it bit for bit.
 /// Exit codes (DESIGN.md §9): 0 success, 1 internal error, 2 usage, 3 unreadable or invalid
-/// input, 4 validation failed (a replay that departs from its recording).
+/// input, 4 validation failed (a replay that departs from its recording), 5 the simulation
+/// failed (core::SimulationError: the body, node, step and likely cause in one sentence).
 
 #include <CLI/CLI.hpp>
 #include <filesystem>

@@ -14,6 +14,7 @@
 #include <string>
 
 #include "core/scenario/scenario.h"
+#include "simulator/runtime/session_snapshot.h"
 #include "simulator/session/instrument_state.h"
 #include "simulator/session/session_runner.h"
 #include "simulator/view/session_overlay.h"
@@ -55,8 +56,10 @@ class EndoscopicView {
   /// Puts the camera at the tip looking along the optics (view_direction(state, angle)), with
   /// `state.up` as the image's up; focus and field of view from the scenario's instrument.
   void set_instrument(const sim::InstrumentState& state, double optics_angle);
-  /// Surfaces, camera and overlay from a running session.
+  /// Surfaces, camera and overlay from a running session (captures a snapshot of it).
   void update(const sim::SessionRunner& runner);
+  /// The same from a snapshot, as the render thread of a threaded session sees it.
+  void update(const sim::SessionSnapshot& snapshot);
   void render();
 
   /// RGB pixels of the current frame (renders first).
@@ -78,6 +81,7 @@ class EndoscopicView {
   vtkSmartPointer<EndoscopeLensPass> lens_;
   std::unique_ptr<SceneSurfaces> surfaces_;
   std::unique_ptr<SessionOverlay> overlay_;
+  sim::SessionSnapshot captured_;  ///< reused by update(runner)
 };
 
 }  // namespace viscera::view

@@ -88,6 +88,7 @@ void DeviceInput::stop_realtime() {
   if (loop_ == nullptr) return;
   loop_->stop();
   loop_sent_ += static_cast<std::uint64_t>(loop_->counters().feedback.load());
+  real_time_ = real_time_ || loop_->counters().real_time_priority.load();
   loop_.reset();
 }
 
@@ -102,6 +103,7 @@ void DeviceInput::add_stats(RealtimeStats& stats) const {
   stats.device = true;
   stats.device_poses = static_cast<long long>(bridge_.counters().accepted);
   stats.device_feedback = static_cast<long long>(feedback_sent());
+  stats.device_real_time = real_time_;
 }
 
 std::string DeviceInput::describe() const {

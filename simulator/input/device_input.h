@@ -69,6 +69,7 @@ class DeviceInput final : public LiveInput {
   ContactSurface surface_;  ///< of the tissue's body, while threaded
   std::unique_ptr<HapticDeviceLoop> loop_;
   std::uint64_t loop_sent_ = 0;  ///< feedback sent by loops that have stopped
+  bool real_time_ = false;       ///< a loop ran at a real-time priority
 };
 
 }  // namespace viscera::sim

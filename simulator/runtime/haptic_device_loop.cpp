@@ -1,5 +1,8 @@
 #include "simulator/runtime/haptic_device_loop.h"
 
+#include <pthread.h>
+#include <sched.h>
+
 #include <Eigen/Geometry>
 
 namespace viscera::sim {
@@ -59,6 +62,13 @@ void HapticDeviceLoop::send_feedback(const DevicePose& pose, std::uint32_t seque
 }
 
 void HapticDeviceLoop::run() {
+  // A haptic servo loop wants its wake-ups on time (seed 000 §8.2 runs it under a real-time
+  // OS): ask for a real-time priority. The thread sleeps between packets, so it never starves
+  // the others; without the privilege it runs at normal priority.
+  sched_param priority{};
+  priority.sched_priority = kRealtimePriority;
+  counters_.real_time_priority.store(pthread_setschedparam(pthread_self(), SCHED_FIFO, &priority) ==
+                                     0);
   using clock = std::chrono::steady_clock;
   const auto period = std::chrono::duration_cast<clock::duration>(
       std::chrono::duration<double>(1.0 / options_.feedback_rate));
@@ -69,8 +79,11 @@ void HapticDeviceLoop::run() {
   while (running_.load(std::memory_order_relaxed)) {
     // Until the next feedback is due, take poses the moment they arrive.
     const auto now = clock::now();
-    if (now < deadline)
-      bridge_.wait(std::chrono::duration_cast<std::chrono::microseconds>(deadline - now));
+    if (now < deadline &&
+        !bridge_.wait(std::chrono::duration_cast<std::chrono::microseconds>(deadline - now))) {
+      // Timed out, or the socket reported an error without data: never spin at this priority.
+      std::this_thread::sleep_until(deadline);
+    }
     if (const auto newest = bridge_.poll(0)) {
       pose = *newest;
       have_pose = true;

@@ -27,10 +27,11 @@ struct DeviceLoopOptions {
 
 /// Counters of the device loop, readable from any thread.
 struct DeviceLoopCounters {
-  std::atomic<long long> poses{0};          ///< poses taken from the bridge
-  std::atomic<long long> feedback{0};       ///< feedback packets sent
-  std::atomic<long long> late_ticks{0};     ///< feedback sent more than one period late
-  std::atomic<long long> local_contact{0};  ///< feedback computed with the local proxy touching
+  std::atomic<long long> poses{0};              ///< poses taken from the bridge
+  std::atomic<long long> feedback{0};           ///< feedback packets sent
+  std::atomic<long long> late_ticks{0};         ///< feedback sent more than one period late
+  std::atomic<long long> local_contact{0};      ///< feedback computed with the local proxy touching
+  std::atomic<bool> real_time_priority{false};  ///< the thread got SCHED_FIFO
 };
 
 /// The thread between a device and the physics.
@@ -55,6 +56,8 @@ class HapticDeviceLoop {
   void publish_tissue() { tissue_.publish(); }
 
   const DeviceLoopCounters& counters() const { return counters_; }
+  /// SCHED_FIFO priority the loop's thread asks for (it sleeps between packets).
+  static constexpr int kRealtimePriority = 20;
 
  private:
   void run();

@@ -93,7 +93,8 @@ nlohmann::json realtime_json(const SessionReport& r) {
   if (s.device) {
     out["device"] = {{"poses", s.device_poses},
                      {"feedback", s.device_feedback},
-                     {"feedback_rate", s.feedback_rate}};
+                     {"feedback_rate", s.feedback_rate},
+                     {"real_time_priority", s.device_real_time}};
   }
   return out;
 }

@@ -80,6 +80,7 @@ struct RealtimeStats {
   long long device_poses = 0;     ///< poses received from it
   long long device_feedback = 0;  ///< feedback packets sent to it
   double feedback_rate = 0.0;     ///< feedback packets per wall-clock second
+  bool device_real_time = false;  ///< the device thread ran at a real-time priority
 };
 
 /// The result of a session.

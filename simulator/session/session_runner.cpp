@@ -274,6 +274,7 @@ void SessionRunner::step(const InstrumentState& input) {
   if (has_instrument) {
     if (options_.record_inputs && !(input == state_))
       report_.inputs.emplace_back(world_.steps() + 1, input);
+    if (!(input == state_)) instrument_moved_ = true;
     state_ = input;
     tissue_->move(state_, world_.time_step());
   }
@@ -395,6 +396,7 @@ void SessionRunner::sample() {
   context.kinetic_energy = e.kinetic;
   context.camera = coverage_.get();
   context.fraction_seen = coverage_ ? coverage_->fraction_seen() : 0.0;
+  context.instrument_moved = instrument_moved_;
   for (auto& m : monitors_) {
     const bool watched = m.step < 0 || m.step == current_ || m.step == current_ + 1;
     if (!watched || m.task.done()) continue;

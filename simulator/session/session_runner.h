@@ -106,6 +106,7 @@ class SessionRunner {
   double time_limit_ = 0.0, force_warning_ = 0.0, perforation_depth_ = 0.0;
   long long total_steps_ = 0, sample_every_ = 1, look_every_ = 1;
   bool finished_ = false, over_force_ = false;
+  bool instrument_moved_ = false;  ///< the input has changed the instrument's state
   double last_view_distance_ = -1.0;
   double started_wall_clock_ = 0.0;
   /// The cavity's distension fluid, when the scenario enables it and an instrument drives the

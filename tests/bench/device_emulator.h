@@ -2,12 +2,15 @@
 // A haptic device emulator on the loopback interface (issue 16 item 3), the test tool behind
 // `viscera_device_emulator`, the window feedback benchmark and the threaded-session tests: one
 // thread sends pose packets at a fixed rate (1 kHz, on absolute deadlines), another receives
-// the simulator's feedback and times every packet, so the feedback rate and the gaps between
-// feedback packets (their percentiles) can be measured as the device would see them.
+// the simulator's feedback, each packet timed by the kernel on arrival (SO_TIMESTAMPNS), so the
+// feedback rate and the gaps between feedback packets (their percentiles) are measured as the
+// device's controller would see them, whatever the emulator's own threads' scheduling. Both
+// threads ask for a real-time priority as a device's servo loop runs (best effort).
 
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <vector>
 
 #include "simulator/haptics/device_packets.h"
 #include "simulator/session/instrument_state.h"

@@ -87,6 +87,8 @@ std::unique_ptr<viscera::view::EndoscopicView> make_view(const viscera::core::Sc
   view.lens_effects = !options.plain_optics;
   // A live window needs its frame rate; snapshots and videos take their time for full detail.
   view.render_scale = options.render_scale > 0.0 ? options.render_scale : (offscreen ? 1.0 : 0.5);
+  // Without --render-scale the window trades resolution for its frame rate (≥ 30 fps).
+  view.adaptive_resolution = !offscreen && options.render_scale <= 0.0;
   if (!offscreen) view.bindings = bindings;
   return std::make_unique<viscera::view::EndoscopicView>(scenario, package, view);
 }
@@ -319,9 +321,11 @@ int main(int argc, char** argv) {
   run_command->add_flag("--plain-optics", options.plain_optics,
                         "No barrel distortion, depth of field or round field stop");
   run_command
-      ->add_option("--render-scale", options.render_scale,
-                   "Resolution of the scene under the lens pass as a fraction of the view "
-                   "(default 0.5 in the window, 1 for snapshots)")
+      ->add_option(
+          "--render-scale", options.render_scale,
+          "Resolution of the scene under the lens pass as a fraction of the view; fixes it "
+          "(default: 0.5 in the window, lowered to 0.25 while it draws under 30 fps; 1 for "
+          "snapshots)")
       ->check(CLI::Range(0.25, 1.0));
   run_command->callback([&] { exit_code = run(options); });
 

@@ -86,9 +86,14 @@ nlohmann::json fluid_json(const SessionReport& r) {
 nlohmann::json realtime_json(const SessionReport& r) {
   if (!r.realtime) return nullptr;
   const RealtimeStats& s = *r.realtime;
-  nlohmann::json out = {{"wall_time", s.wall_time},   {"physics_steps", s.physics_steps},
-                        {"late_steps", s.late_steps}, {"max_lag", s.max_lag},
-                        {"frames", s.frames},         {"view_fps", s.view_fps},
+  nlohmann::json out = {{"wall_time", s.wall_time},
+                        {"physics_steps", s.physics_steps},
+                        {"late_steps", s.late_steps},
+                        {"max_lag", s.max_lag},
+                        {"frames", s.frames},
+                        {"view_fps", s.view_fps},
+                        {"render_scale", s.render_scale},
+                        {"lowest_render_scale", s.lowest_render_scale},
                         {"device", nullptr}};
   if (s.device) {
     out["device"] = {{"poses", s.device_poses},

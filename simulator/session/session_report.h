@@ -72,15 +72,17 @@ struct BodySummary {
 struct RealtimeStats {
   double wall_time = 0.0;  ///< s the physics thread ran
   long long physics_steps = 0;
-  long long late_steps = 0;       ///< steps that began more than one step late
-  double max_lag = 0.0;           ///< s, largest delay of a step behind the wall clock
-  long long frames = 0;           ///< frames the view rendered
-  double view_fps = 0.0;          ///< frames per wall-clock second
-  bool device = false;            ///< a haptic device drove the instrument
-  long long device_poses = 0;     ///< poses received from it
-  long long device_feedback = 0;  ///< feedback packets sent to it
-  double feedback_rate = 0.0;     ///< feedback packets per wall-clock second
-  bool device_real_time = false;  ///< the device thread ran at a real-time priority
+  long long late_steps = 0;          ///< steps that began more than one step late
+  double max_lag = 0.0;              ///< s, largest delay of a step behind the wall clock
+  long long frames = 0;              ///< frames the view rendered
+  double view_fps = 0.0;             ///< frames per wall-clock second
+  double render_scale = 1.0;         ///< scene resolution under the lens pass at the end (fraction)
+  double lowest_render_scale = 1.0;  ///< the smallest the adaptive resolution went
+  bool device = false;               ///< a haptic device drove the instrument
+  long long device_poses = 0;        ///< poses received from it
+  long long device_feedback = 0;     ///< feedback packets sent to it
+  double feedback_rate = 0.0;        ///< feedback packets per wall-clock second
+  bool device_real_time = false;     ///< the device thread ran at a real-time priority
 };
 
 /// The result of a session.

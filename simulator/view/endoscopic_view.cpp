@@ -9,6 +9,7 @@
 #include <vtkRenderer.h>
 #include <vtkWindowToImageFilter.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "simulator/view/endoscope_lens_pass.h"
@@ -120,6 +121,15 @@ void EndoscopicView::update(const sim::SessionSnapshot& snapshot) {
   state.step = snapshot.step;
   state.ended = snapshot.ended;
   overlay_->update(state);
+}
+
+void EndoscopicView::set_render_scale(double scale) {
+  options_.render_scale = std::clamp(scale, 0.25, 1.0);
+  if (lens_) lens_->render_scale = options_.render_scale;
+}
+
+double EndoscopicView::render_scale() const {
+  return options_.render_scale;
 }
 
 void EndoscopicView::render() {

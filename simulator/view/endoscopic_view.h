@@ -37,6 +37,11 @@ struct ViewOptions {
   /// the lens pass (EndoscopeLensPass::render_scale; 0.5 keeps a window at ≥ 30 fps on a
   /// software renderer, 1 for snapshots and videos).
   double render_scale = 1.0;
+  /// In a window: lower render_scale (down to 0.25) while the view draws fewer than
+  /// `target_fps` frames a second, and raise it back (up to the render_scale given) when there
+  /// is room — dynamic resolution, so a loaded machine keeps the frame rate, not the detail.
+  bool adaptive_resolution = false;
+  double target_fps = 30.0;
   std::string bindings;          ///< key bindings shown in the window ("" : none)
   double light_intensity = 1.4;  ///< head light
   double light_falloff = 0.03;   ///< m at which the head light has dimmed to half
@@ -68,6 +73,11 @@ class EndoscopicView {
   void write_png(const std::filesystem::path& path);
 
   vtkRenderWindow* window() const { return window_; }
+  const ViewOptions& options() const { return options_; }
+  /// The lens pass's scene resolution as a fraction of the view (0.25–1); no effect without
+  /// lens effects.
+  void set_render_scale(double scale);
+  double render_scale() const;
   vtkRenderer* scene_renderer() const { return scene_; }
   SessionOverlay& overlay() { return *overlay_; }
   const SceneSurfaces& surfaces() const { return *surfaces_; }

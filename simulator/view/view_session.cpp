@@ -120,14 +120,39 @@ struct WindowLoop {
   ManualStyle* style;
   vtkRenderWindowInteractor* interactor;
   long long frames = 0;
+  double lowest_scale = 1.0;  ///< smallest render scale the adaptive resolution used
+  long long frames_then = 0;
+  std::chrono::steady_clock::time_point then = std::chrono::steady_clock::now();
 
   void tick() {
     if (style->abort_requested) loop->request_end("abort", "the trainee ended the session");
     if (const sim::SessionSnapshot* snapshot = loop->latest()) view->update(*snapshot);
     view->render();
     ++frames;
+    adapt_resolution();
     if (loop->finished()) interactor->TerminateApp();
   }
+
+  /// Every half second: below the target frame rate, render the scene under the lens pass
+  /// smaller; well above it, larger again (never above the scale the view was given).
+  void adapt_resolution() {
+    const ViewOptions& options = view->options();
+    if (!options.adaptive_resolution || !options.lens_effects) return;
+    const auto now = std::chrono::steady_clock::now();
+    const double elapsed = std::chrono::duration<double>(now - then).count();
+    if (elapsed < 0.5) return;
+    const double fps = static_cast<double>(frames - frames_then) / elapsed;
+    const double scale = view->render_scale();
+    if (fps < options.target_fps * 1.05 && scale > kLowestScale)
+      view->set_render_scale(std::max(kLowestScale, 0.85 * scale));
+    else if (fps > options.target_fps * 1.6 && scale < ceiling)
+      view->set_render_scale(std::min(ceiling, 1.1 * scale));
+    lowest_scale = std::min(lowest_scale, view->render_scale());
+    frames_then = frames;
+    then = now;
+  }
+  static constexpr double kLowestScale = 0.25;
+  double ceiling = 1.0;  ///< the render scale the view was given
 };
 
 void on_timer(vtkObject*, unsigned long, void* client, void*) {
@@ -167,6 +192,8 @@ sim::SessionReport run_in_window(const core::Scenario& scenario,
   sim::RealtimeLoop loop(runner, guarded ? &*guarded : nullptr,
                          guarded ? nullptr : options.instrument);
   WindowLoop window{&loop, &view, style, interactor};
+  window.ceiling = view.render_scale();
+  window.lowest_scale = view.render_scale();
   vtkNew<vtkCallbackCommand> timer;
   timer->SetCallback(on_timer);
   timer->SetClientData(&window);
@@ -192,6 +219,8 @@ sim::SessionReport run_in_window(const core::Scenario& scenario,
   stats.max_lag = loop.max_lag();
   stats.frames = window.frames;
   stats.view_fps = shown > 0.0 ? static_cast<double>(window.frames) / shown : 0.0;
+  stats.render_scale = view.render_scale();
+  stats.lowest_render_scale = window.lowest_scale;
   if (guarded) guarded->add_stats(stats);
   if (stats.device && stats.wall_time > 0.0)
     stats.feedback_rate = static_cast<double>(stats.device_feedback) / stats.wall_time;

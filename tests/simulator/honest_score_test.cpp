@@ -15,6 +15,7 @@
 #include "simulator/session/simulation_check.h"
 #include "templates/template_catalog.h"
 #include "tests/simulator/session_fixtures.h"
+#include "tests/support/tet_block.h"
 
 namespace viscera::sim {
 namespace {
@@ -131,6 +132,34 @@ TEST(SimulationFailure, a_non_finite_node_is_named_with_body_step_and_cause) {
   EXPECT_NE(text.find("likely cause"), std::string::npos) << text;
   EXPECT_EQ(text.find('\n'), std::string::npos) << "one sentence, one line";
   EXPECT_EQ(core::exit_code_for(error), core::ExitCode::SimulationFailed);
+}
+
+TEST(SimulationFailure, a_session_whose_state_goes_non_finite_throws_it_typed) {
+  // A tool pressing on the tissue whose tip then turns into not-a-number (no shipped input can
+  // send one: scripts and device packets refuse them) drags the proxy spring, and with it the
+  // tissue, into NaN.
+  core::Scenario scenario = viscera::testing::held_soft_block();
+  scenario.session.gravity = core::Vec3::Zero();
+  InstrumentState above;
+  above.tip = {0.02, 0.021, 0.03};
+  InstrumentState pressing = above;
+  pressing.tip = {0.02, 0.021, 0.017};  // 3 mm into the top face: the proxy holds on it
+  InstrumentState broken = above;
+  broken.tip = {0.02, 0.021, std::numeric_limits<double>::quiet_NaN()};
+  const RecordedInput input({{0, above}, {1, pressing}, {5, broken}});
+  HeadlessRunOptions options;
+  options.duration = 0.5;
+  options.instrument = &input;
+  try {
+    run_headless(scenario, options);
+    FAIL() << "a non-finite state went unnoticed";
+  } catch (const core::SimulationError& e) {
+    EXPECT_EQ(e.body(), "block");
+    EXPECT_GE(e.step(), 5);
+    EXPECT_LE(e.step(), 40);  // noticed by the next sample at the latest (every 20 steps)
+    EXPECT_FALSE(e.cause().empty());
+    EXPECT_EQ(core::exit_code_for(e), core::ExitCode::SimulationFailed);
+  }
 }
 
 TEST(SimulationFailure, a_crushed_body_names_its_inverted_tets_as_the_cause) {

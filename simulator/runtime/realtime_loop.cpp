@@ -1,5 +1,8 @@
 #include "simulator/runtime/realtime_loop.h"
 
+#include <sys/resource.h>
+#include <unistd.h>
+
 #include <chrono>
 
 namespace viscera::sim {
@@ -60,6 +63,10 @@ void RealtimeLoop::publish_snapshot() {
 }
 
 void RealtimeLoop::physics_thread() {
+  // The physics keeps the session's clock: when the renderer's threads and the physics want
+  // the same core, the physics gets the larger share (nice −5, best effort; it sleeps whenever
+  // it is ahead of the wall clock, so the view keeps the rest).
+  setpriority(PRIO_PROCESS, static_cast<id_t>(gettid()), kPhysicsNice);
   using clock = std::chrono::steady_clock;
   const double dt = runner_.world().time_step();
   const auto began = clock::now();

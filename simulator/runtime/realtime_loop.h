@@ -56,6 +56,8 @@ class RealtimeLoop {
   const SessionSnapshot* latest();
 
   const RealtimeCounters& counters() const { return counters_; }
+  /// Niceness the physics thread asks for (higher share of a contended core than the view).
+  static constexpr int kPhysicsNice = -5;
   /// Largest delay in s of a step behind its wall-clock due time.
   double max_lag() const { return max_lag_.load(std::memory_order_relaxed); }
   /// Wall-clock seconds the physics thread ran.

@@ -133,18 +133,18 @@ struct WindowLoop {
     if (loop->finished()) interactor->TerminateApp();
   }
 
-  /// Every half second: below the target frame rate, render the scene under the lens pass
+  /// Every 0.3 s: below the target frame rate, render the scene under the lens pass
   /// smaller; well above it, larger again (never above the scale the view was given).
   void adapt_resolution() {
     const ViewOptions& options = view->options();
     if (!options.adaptive_resolution || !options.lens_effects) return;
     const auto now = std::chrono::steady_clock::now();
     const double elapsed = std::chrono::duration<double>(now - then).count();
-    if (elapsed < 0.5) return;
+    if (elapsed < 0.3) return;
     const double fps = static_cast<double>(frames - frames_then) / elapsed;
     const double scale = view->render_scale();
     if (fps < options.target_fps * 1.05 && scale > kLowestScale)
-      view->set_render_scale(std::max(kLowestScale, 0.85 * scale));
+      view->set_render_scale(std::max(kLowestScale, 0.75 * scale));
     else if (fps > options.target_fps * 1.6 && scale < ceiling)
       view->set_render_scale(std::min(ceiling, 1.1 * scale));
     lowest_scale = std::min(lowest_scale, view->render_scale());

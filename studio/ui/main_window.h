@@ -115,9 +115,14 @@ class MainWindow : public QMainWindow {
   /// Shows or hides the image volume's three slice planes in the 3D view.
   void set_slice_planes_shown(bool shown);
   bool slice_planes_shown() const;
-  /// Exports to a temporary package and starts the headless simulator; its report appears in
-  /// the report dock when it ends (training_finished()).
-  bool launch_training(double duration_s = 0.0);
+  /// Exports to a temporary package and starts the headless simulator, its instrument driven by
+  /// `script` (empty: none); its report appears in the report dock when it ends
+  /// (training_finished()).
+  bool launch_training(double duration_s = 0.0, const QString& script = {});
+  /// Training ▸ Launch: exports to a temporary package and opens the simulator's interactive
+  /// endoscopic view on it, driven by `input`; the report appears in the report dock when the
+  /// session ends, a failure as one sentence in the error dialog.
+  bool launch_interactive_training(const TrainingInput& input, double duration_s = 0.0);
   QString report_text() const;
 
   /// Generates `request.count` variants of the document off the UI thread (progress, Cancel;
@@ -175,6 +180,9 @@ class MainWindow : public QMainWindow {
   void restore_layout();
   void save_layout() const;
   bool ask_save_as();
+  /// Exports the document for the next training session; false after showing the error.
+  bool export_session_package();
+  void show_training_result(const TrainingResult& result);
   bool maybe_save();
 
   MainWindowOptions options_;

@@ -20,7 +20,8 @@ namespace viscera::cli {
 inline void add_common_options(CLI::App& app) {
   app.set_version_flag("--version", core::viscera_version());
   auto level = std::make_shared<std::string>("warn");
-  app.add_option("--log-level", *level, "trace, debug, info, warn, error or off")->capture_default_str();
+  app.add_option("--log-level", *level, "trace, debug, info, warn, error or off")
+      ->capture_default_str();
   app.parse_complete_callback([level] { core::set_log_level(*level); });
 }
 

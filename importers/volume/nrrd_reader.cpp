@@ -218,8 +218,8 @@ LoadedVolume read_nrrd(const fs::path& path, const VolumeReadOptions& options) {
     errno = 0;
     bytes = std::strtol(first, &end, 10);
     if (end == first || *end != '\0' || errno == ERANGE) {
-      throw core::InputError("header field \"byte skip: " + skip->second + "\" is not a whole number",
-                             {file, "", ""});
+      throw core::InputError(
+          "header field \"byte skip: " + skip->second + "\" is not a whole number", {file, "", ""});
     }
     if (bytes < 0) throw core::InputError("\"byte skip: -1\" is not supported", {file, "", ""});
     if (!gzip) offset += static_cast<std::uint64_t>(bytes);

@@ -42,10 +42,12 @@ double add_distance_forces(std::span<const Vec3> positions, std::span<const Vec3
                            const DistanceTerms& terms, std::span<Vec3> forces);
 
 /// Adds area-preservation forces and returns their energy.
-double add_area_forces(std::span<const Vec3> positions, const AreaTerms& terms, std::span<Vec3> forces);
+double add_area_forces(std::span<const Vec3> positions, const AreaTerms& terms,
+                       std::span<Vec3> forces);
 
 /// Adds volume-preservation forces and returns their energy.
-double add_volume_forces(std::span<const Vec3> positions, const VolumeTerms& terms, std::span<Vec3> forces);
+double add_volume_forces(std::span<const Vec3> positions, const VolumeTerms& terms,
+                         std::span<Vec3> forces);
 
 /// Potential energies alone (no forces), for checks and reports.
 double distance_energy(std::span<const Vec3> positions, const DistanceTerms& terms);

@@ -24,13 +24,7 @@ nlohmann::json script(const std::string& who) {
 
 void run(benchmark::State& state, const nlohmann::json& json, double duration) {
   const auto input = viscera::sim::ScriptedTrajectory::from_json(json, "script", 30.0);
-  viscera::sim::HeadlessRunOptions options;
-  options.duration = duration;
-  options.instrument = &input;
-  options.instrument_body = input.body();
-  options.instrument_stiffness = input.stiffness();
-  options.force_warning = input.force_warning();
-  options.end_when_complete = false;  // the tour goes on after the procedure's tasks are done
+  const auto options = viscera::bench::scripted_run(input, duration);
   double simulated = 0.0, wall = 0.0;
   for (auto _ : state) {
     const auto report = viscera::sim::run_headless(patient(), options);

@@ -34,4 +34,15 @@ nlohmann::json repeated(nlohmann::json script, double seconds) {
   return script;
 }
 
+sim::HeadlessRunOptions scripted_run(const sim::ScriptedTrajectory& input, double duration) {
+  sim::HeadlessRunOptions options;
+  options.duration = duration;
+  options.instrument = &input;
+  options.instrument_body = input.body();
+  options.instrument_stiffness = input.stiffness();
+  options.force_warning = input.force_warning();
+  options.end_when_complete = false;
+  return options;
+}
+
 }  // namespace viscera::bench

@@ -19,21 +19,8 @@ namespace viscera {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::cgal_images;
 using testing::shell_quote;
-
-/// CGAL's data/images, extracted into `scratch`.
-fs::path cgal_images(const fs::path& scratch) {
-  const fs::path archive = "/usr/share/doc/libcgal-dev/data.tar.gz";
-  EXPECT_TRUE(fs::exists(archive)) << archive << " is missing: install libcgal-demo (dev.sh)";
-  const fs::path images = scratch / "cgal" / "data" / "images";
-  if (!fs::exists(images)) {
-    fs::create_directories(scratch / "cgal");
-    const std::string command = "tar -xzf " + shell_quote(archive.string()) + " -C " +
-                                shell_quote((scratch / "cgal").string()) + " data/images";
-    EXPECT_EQ(std::system(command.c_str()), 0) << command;
-  }
-  return images;
-}
 
 /// `viscera ARGUMENTS` killed after `seconds` (exit code 137 then), so a hang fails the test
 /// instead of stalling the suite.

@@ -4,6 +4,7 @@
 // no staging behind (issue 21 §4). Real child processes, real SIGKILL.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <random>
 
@@ -31,18 +32,24 @@ std::vector<std::string> staging_beside(const fs::path& target) {
   return found;
 }
 
-/// Wall time of one complete run, to spread the kills over it.
+/// Wall time of a complete run, the shortest of three (the first run of a program pays for a
+/// cold file cache), to spread the kills over it.
 std::chrono::microseconds time_of(const std::string& program, const std::vector<std::string>& args,
                                   const fs::path& dir) {
-  const auto start = Clock::now();
-  const auto run = testing::run_and_kill(program, args, dir, std::chrono::minutes(5));
-  EXPECT_TRUE(run.finished_first);
-  EXPECT_EQ(run.exit_code, 0);
-  return std::chrono::duration_cast<std::chrono::microseconds>(Clock::now() - start);
+  auto shortest = std::chrono::microseconds::max();
+  for (int run_index = 0; run_index < 3; ++run_index) {
+    const auto start = Clock::now();
+    const auto run = testing::run_and_kill(program, args, dir, std::chrono::minutes(5));
+    EXPECT_TRUE(run.finished_first);
+    EXPECT_EQ(run.exit_code, 0);
+    shortest = std::min(
+        shortest, std::chrono::duration_cast<std::chrono::microseconds>(Clock::now() - start));
+  }
+  return shortest;
 }
 
 /// Runs `args` kKills times, each killed at a random moment between the end of the program's
-/// start-up (loading its libraries takes most of a short run) and 1.1× its whole duration, and
+/// start-up (loading its libraries takes most of a short run) and its whole duration, and
 /// calls `check` after each; then once to completion, after which no staging may remain.
 template <typename Check>
 void kill_repeatedly(const std::vector<std::string>& args, const fs::path& dir,
@@ -51,7 +58,7 @@ void kill_repeatedly(const std::vector<std::string>& args, const fs::path& dir,
   const auto duration = time_of("viscera", args, dir);
   std::mt19937 random(21);
   std::uniform_int_distribution<long> moment(
-      start_up.count() * 9 / 10, std::max(start_up.count(), duration.count()) * 11 / 10);
+      start_up.count() * 9 / 10, std::max(start_up.count(), duration.count()));
   int killed = 0;
   for (int k = 0; k < kKills; ++k) {
     const auto run =

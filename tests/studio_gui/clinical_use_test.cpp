@@ -41,45 +41,19 @@
 #include "templates/template_catalog.h"
 #include "tests/studio_gui/clinical_checks.h"
 #include "tests/studio_gui/image_checks.h"
+#include "tests/studio_gui/window_fixture.h"
 #include "textures/scenario_baking.h"
 
 namespace fs = std::filesystem;
 using namespace viscera;
 using namespace viscera::studio_tests;
 
-class ClinicalUseTest : public QObject {
+class ClinicalUseTest : public QObject, public viscera::studio_tests::WindowFixture {
   Q_OBJECT
-
- private:
-  QTemporaryDir tmp_;
-  fs::path patient_;
-  fs::path out_dir_;
-  QStringList errors_;
-
-  fs::path dir() const { return fs::path(tmp_.path().toStdString()); }
-
-  studio::MainWindowOptions options() const {
-    studio::MainWindowOptions o;
-    o.recovery_dir = dir() / "recovery";
-    o.autosave_interval_ms = 600'000;
-    return o;
-  }
-
-  /// A shown window with the hysteroscopy patient open.
-  void open_patient(studio::MainWindow& window) {
-    errors_.clear();
-    window.set_error_handler([this](const QString& m) { errors_ << m; });
-    window.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&window));
-    QVERIFY(window.open_package(patient_));
-  }
 
  private slots:
   void initTestCase() {
-    QVERIFY(tmp_.isValid());
-    const char* out = std::getenv("VISCERA_TEST_TMP");
-    out_dir_ = out != nullptr ? fs::path(out) : dir();
-    fs::create_directories(out_dir_);
+    make_folders();
     QElapsedTimer clock;
     clock.start();
     const core::Scenario patient = templates::build_from_template(

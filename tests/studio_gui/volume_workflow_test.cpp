@@ -33,37 +33,15 @@
 #include "templates/template_catalog.h"
 #include "tests/studio_gui/image_checks.h"
 #include "tests/studio_gui/liver_volume.h"
+#include "tests/studio_gui/window_fixture.h"
 
 namespace fs = std::filesystem;
 using namespace viscera;
 
-class VolumeWorkflowTest : public QObject {
+class VolumeWorkflowTest : public QObject, public viscera::studio_tests::WindowFixture {
   Q_OBJECT
 
  private:
-  QTemporaryDir tmp_;
-  fs::path patient_;
-  fs::path out_dir_;
-  QStringList errors_;
-
-  fs::path dir() const { return fs::path(tmp_.path().toStdString()); }
-
-  studio::MainWindowOptions options() const {
-    studio::MainWindowOptions o;
-    o.recovery_dir = dir() / "recovery";
-    o.autosave_interval_ms = 600'000;
-    return o;
-  }
-
-  /// A shown window with the ball open.
-  void open_patient(studio::MainWindow& window) {
-    errors_.clear();
-    window.set_error_handler([this](const QString& m) { errors_ << m; });
-    window.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&window));
-    QVERIFY(window.open_package(patient_));
-  }
-
   bool open_coarse_liver(studio::MainWindow& window) {
     const fs::path coarse = dir() / "liver_coarse.vti";
     if (!fs::exists(coarse)) {
@@ -89,10 +67,7 @@ class VolumeWorkflowTest : public QObject {
 
  private slots:
   void initTestCase() {
-    QVERIFY(tmp_.isValid());
-    const char* out = std::getenv("VISCERA_TEST_TMP");
-    out_dir_ = out != nullptr ? fs::path(out) : dir();
-    fs::create_directories(out_dir_);
+    make_folders();
     patient_ = dir() / "ball.vscene";
     core::write_package(templates::build_from_template("ball", {{"cell_size", "0.012"}}, 1),
                         patient_);

@@ -41,13 +41,7 @@ void BM_HysteroscopySessionSoak(benchmark::State& state) {
   const auto json =
       viscera::bench::repeated(viscera::bench::hysteroscopy_script("expert"), duration);
   const auto input = viscera::sim::ScriptedTrajectory::from_json(json, "script", 30.0);
-  viscera::sim::HeadlessRunOptions options;
-  options.duration = duration;
-  options.instrument = &input;
-  options.instrument_body = input.body();
-  options.instrument_stiffness = input.stiffness();
-  options.force_warning = input.force_warning();
-  options.end_when_complete = false;
+  const auto options = viscera::bench::scripted_run(input, duration);
   std::vector<std::pair<double, double>> samples;  // (fraction of the session, MB)
   viscera::core::Progress progress([&](double fraction, const std::string&) {
     samples.emplace_back(fraction, resident_megabytes());

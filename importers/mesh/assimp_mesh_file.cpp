@@ -6,6 +6,7 @@
 #include <assimp/Importer.hpp>
 
 #include "core/error.h"
+#include "importers/mesh/glb_container.h"
 #include "importers/mesh/mesh_integrity.h"
 
 namespace viscera::importers {
@@ -15,6 +16,7 @@ core::SurfaceMesh read_assimp_surface(const std::filesystem::path& path) {
   if (!std::filesystem::is_regular_file(path)) {
     throw core::InputError("no such file", {file, "", ""});
   }
+  if (is_glb_container(path)) check_glb_container(path);  // assimp trusts chunk lengths
   Assimp::Importer importer;
   // Triangulate polygons, bake node transforms, check indices, and drop points and lines.
   importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,

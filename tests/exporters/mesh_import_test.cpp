@@ -144,5 +144,30 @@ TEST(MeshImport, truncated_and_corrupt_files_are_refused_naming_the_file) {
   EXPECT_THROW(read_tet_mesh(dir / "whole.obj"), core::UsageError);
 }
 
+TEST(MeshImport, a_glb_whose_chunk_runs_past_the_end_is_refused_before_assimp_allocates_it) {
+  // The mesh_glb fuzz target's finding: a JSON chunk declaring 3.4 GB in a 624-byte file made
+  // assimp allocate it. The real binary box with each length patched in turn.
+  const fs::path dir = testing::scratch_dir();
+  const std::string glb =
+      testing::file_bytes(testing::assimp_model("glTF2/BoxTextured-glTF-Binary/BoxTextured.glb"));
+  ASSERT_GT(glb.size(), 20u);
+  const auto patched = [&](std::size_t at, std::uint32_t value, const std::string& name) {
+    std::string bytes = glb;
+    for (int k = 0; k < 4; ++k)
+      bytes[at + static_cast<std::size_t>(k)] = static_cast<char>((value >> (8 * k)) & 0xFFu);
+    std::ofstream(dir / name, std::ios::binary) << bytes;
+    return dir / name;
+  };
+  const std::string chunk = error_of(patched(12, 0xCF00020Cu, "chunk.glb"));
+  EXPECT_TRUE(testing::message_has(chunk, {"chunk.glb", "byte 12", "declares 3472884236 bytes"}))
+      << chunk;
+  const std::string total = error_of(patched(8, 1u << 30, "total.glb"));
+  EXPECT_TRUE(testing::message_has(total, {"total.glb", "declares 1073741824 bytes"})) << total;
+  const std::string version = error_of(patched(4, 1, "version.glb"));
+  EXPECT_TRUE(testing::message_has(version, {"version.glb", "GLB version 1"})) << version;
+  // The unpatched file still reads: the check refuses only what is damaged.
+  EXPECT_EQ(read_mesh(patched(4, 2, "same.glb")).triangles.size(), 12u);
+}
+
 }  // namespace
 }  // namespace viscera::importers

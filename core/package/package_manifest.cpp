@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "core/json_schema/json_schema_validator.h"
+#include "core/json_text.h"
 #include "core/package/package_schema.h"
 
 namespace viscera::core {
@@ -38,12 +39,7 @@ PackageIssue manifest_issue(const std::string& pointer, const std::string& messa
 }  // namespace
 
 nlohmann::json parse_manifest(const std::string& text, const std::string& file) {
-  try {
-    return nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw InputError("not valid JSON (syntax error at byte " + std::to_string(e.byte) + ")",
-                     {file, "", ""});
-  }
+  return parse_json_text(text, file);
 }
 
 void check_format_and_migrate(nlohmann::json& manifest, const std::string& file) {

@@ -18,6 +18,9 @@
 #include <vtkXMLUnstructuredGridReader.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
+#include <cmath>
+#include <limits>
+
 #include "core/error.h"
 #include "core/vtk_silence.h"
 
@@ -169,7 +172,15 @@ void polydata_to_surface(vtkPolyData& polydata, const std::string& what, Surface
     embedding.tet.resize(static_cast<std::size_t>(n));
     embedding.weights.resize(static_cast<std::size_t>(n));
     for (vtkIdType i = 0; i < n; ++i) {
-      embedding.tet[i] = static_cast<int>(tets->GetComponent(i, 0));
+      // A damaged file may hold any double here (the package_folder fuzz target's finding): a
+      // tet index must be a whole number an int holds before it is converted.
+      const double tet = tets->GetComponent(i, 0);
+      if (!(tet >= -1.0 && tet <= static_cast<double>(std::numeric_limits<int>::max())) ||
+          tet != std::floor(tet)) {
+        throw InputError("embedding_tet of vertex " + std::to_string(i) + " is not a tet index",
+                         {what, "", ""});
+      }
+      embedding.tet[i] = static_cast<int>(tet);
       weights->GetTuple(i, embedding.weights[i].data());
     }
   }

@@ -1,5 +1,7 @@
 #include "core/scenario/scenario_json.h"
 
+#include <charconv>
+
 #include "core/error.h"
 #include "core/json_eigen.h"
 
@@ -472,6 +474,8 @@ Scenario scenario_from_json(const nlohmann::json& j, const std::string& file,
 
   const auto objects = j.find("objects");
   if (objects == j.end()) return s;
+  if (!objects->is_array())
+    throw ValidationError("objects must be a JSON array", {file, pointer_prefix + "/objects", ""});
   for (std::size_t i = 0; i < objects->size(); ++i) {
     const auto& o = (*objects)[i];
     const std::string pointer = pointer_prefix + "/objects/" + std::to_string(i);
@@ -484,7 +488,14 @@ Scenario scenario_from_json(const nlohmann::json& j, const std::string& file,
       object.group = o.value("group", std::string());
       const nlohmann::json layers = o.value("layer_materials", nlohmann::json::object());
       for (const auto& [label, material] : layers.items()) {
-        object.layer_materials[std::stoi(label)] = material.get<std::string>();
+        int layer = 0;
+        const auto [end, status] =
+            std::from_chars(label.data(), label.data() + label.size(), layer);
+        if (status != std::errc() || end != label.data() + label.size()) {
+          throw ValidationError("a layer label is a whole number, not \"" + label + "\"",
+                                {file, pointer + "/layer_materials", ""});
+        }
+        object.layer_materials[layer] = material.get<std::string>();
       }
     } catch (const nlohmann::json::exception& e) {
       throw ValidationError(std::string("cannot read object: ") + e.what(), {file, pointer, ""});

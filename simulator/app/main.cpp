@@ -13,6 +13,7 @@
 
 #include "core/cli/command_line.h"
 #include "core/error.h"
+#include "core/json_text.h"
 #include "core/package/scenario_package.h"
 #include "simulator/app/live_inputs.h"
 #include "simulator/app/session_output.h"
@@ -28,8 +29,8 @@ namespace {
 
 namespace fs = std::filesystem;
 using viscera::app::publish;
-using viscera::app::read_json_file;
 using viscera::app::write_html;
+using viscera::core::read_json_file;
 using viscera::sim::SessionReport;
 
 struct RunOptions {

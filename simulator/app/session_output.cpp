@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "core/error.h"
+#include "core/json_text.h"
 #include "simulator/report/html_report.h"
 
 namespace viscera::app {
@@ -26,25 +27,13 @@ void write_atomically(const fs::path& path, const std::string& text) {
 
 }  // namespace
 
-/// Reads a JSON document; throws core::InputError naming the file.
-nlohmann::json read_json_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw viscera::core::InputError("cannot open", {path, "", ""});
-  try {
-    return nlohmann::json::parse(in);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw viscera::core::InputError(
-        "not valid JSON (syntax error at byte " + std::to_string(e.byte) + ")", {path, "", ""});
-  }
-}
-
 /// Writes report.json into `report_dir` (if given) and prints the summary or the JSON.
 /// Writes report.html and its plots into `folder` (offscreen VTK charts: needs an X server).
 std::string write_html(const nlohmann::json& json, const std::string& reference,
                        const fs::path& folder) {
   nlohmann::json expert;
   if (!reference.empty()) {
-    expert = read_json_file(reference);
+    expert = viscera::core::read_json_file(reference);
     if (!expert.is_object() || expert.value("format", std::string()) != "viscera-session-report")
       throw viscera::core::InputError("is not a viscera session report", {reference, "", ""});
   }

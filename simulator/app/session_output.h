@@ -10,9 +10,6 @@
 
 namespace viscera::app {
 
-/// Reads a JSON document; throws core::InputError naming the file.
-nlohmann::json read_json_file(const std::string& path);
-
 /// Writes report.html and its plots into `folder` (offscreen VTK charts: needs an X server),
 /// compared with the expert's report.json at `reference` when given; returns the page's path.
 std::string write_html(const nlohmann::json& json, const std::string& reference,

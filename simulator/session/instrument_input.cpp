@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "core/json_eigen.h"
+#include "core/json_text.h"
 
 namespace viscera::sim {
 
@@ -133,16 +134,7 @@ ScriptedTrajectory ScriptedTrajectory::from_json(const nlohmann::json& json,
 }
 
 ScriptedTrajectory ScriptedTrajectory::read(const std::string& path, double optics_angle) {
-  std::ifstream in(path);
-  if (!in) throw core::InputError("cannot open script", {path, "", ""});
-  std::stringstream text;
-  text << in.rdbuf();
-  try {
-    return from_json(nlohmann::json::parse(text.str()), path, optics_angle);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw core::InputError("not valid JSON (syntax error at byte " + std::to_string(e.byte) + ")",
-                           {path, "", ""});
-  }
+  return from_json(core::read_json_file(path), path, optics_angle);
 }
 
 InstrumentState ScriptedTrajectory::state(long long /*step*/, double time) const {

@@ -5,6 +5,7 @@
 
 #include "core/error.h"
 #include "core/json_eigen.h"
+#include "core/json_text.h"
 #include "core/package/package_manifest.h"
 #include "core/package/zip_archive.h"
 #include "core/sha256.h"
@@ -144,16 +145,7 @@ void write_trace(const SessionTrace& trace, const std::filesystem::path& path) {
 }
 
 SessionTrace read_trace(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw core::InputError("cannot open trace", {path.string(), "", ""});
-  std::stringstream text;
-  text << in.rdbuf();
-  try {
-    return trace_from_json(nlohmann::json::parse(text.str()), path.string());
-  } catch (const nlohmann::json::parse_error& e) {
-    throw core::InputError("not valid JSON (syntax error at byte " + std::to_string(e.byte) + ")",
-                           {path.string(), "", ""});
-  }
+  return trace_from_json(core::read_json_file(path.string()), path.string());
 }
 
 }  // namespace viscera::sim

@@ -138,6 +138,17 @@ core::TetMesh read_vtk_tet_mesh(const std::filesystem::path& path) {
     const int type = data->GetCellType(c);
     if (type == VTK_TETRA || type == VTK_QUADRATIC_TETRA) {
       data->GetCellPoints(c, ids);
+      // A damaged file may give a tetrahedron fewer corners or corners past the points (the
+      // tet_mesh_vtu fuzz target's finding): refuse it before indexing.
+      const vtkIdType points = data->GetNumberOfPoints();
+      const bool whole = ids->GetNumberOfIds() >= 4 &&
+                         std::all_of(ids->begin(), ids->begin() + 4,
+                                     [&](vtkIdType p) { return p >= 0 && p < points; });
+      if (!whole) {
+        throw core::InputError("tetrahedron " + std::to_string(c) +
+                                   " names fewer than 4 corners or a point the file does not have",
+                               {file, "", "cell " + std::to_string(c)});
+      }
       corners.push_back({ids->GetId(0), ids->GetId(1), ids->GetId(2), ids->GetId(3)});
       for (const vtkIdType p : corners.back())
         index[static_cast<std::size_t>(p)] = 0;

@@ -13,6 +13,7 @@
 #include <limits>
 
 #include "core/error.h"
+#include "importers/volume/crash_guard.h"
 #include "importers/vtk_error_capture.h"
 
 namespace viscera::importers::detail {
@@ -71,6 +72,9 @@ void check_voxel_budget(const std::array<std::int64_t, 3>& dims, std::int64_t co
 
 void check_reader_budget(vtkImageReader2& reader, const VolumeReadOptions& options,
                          const std::string& file) {
+  if (!survives_in_child([&] { reader.UpdateInformation(); })) {
+    throw core::InputError("the header is damaged: VTK's reader crashes on it", {file, "", ""});
+  }
   std::string error;
   {
     VtkErrorCapture capture;

@@ -96,7 +96,16 @@ LoadedVolume read_volume(const fs::path& path, const VolumeReadOptions& options)
     throw core::InputError("not an image volume format Viscera reads (" + known + ")",
                            {file, "", ""});
   }
-  LoadedVolume loaded = reader(path, options);
+  LoadedVolume loaded;
+  try {
+    loaded = reader(path, options);
+  } catch (const core::Error&) {
+    throw;
+  } catch (const std::exception& e) {
+    // A library's own exception on a damaged file (vtkmetaio's std::length_error on a header
+    // field, found by the volume_metaimage fuzz target) is an input error like any other.
+    throw core::InputError(std::string("the file cannot be read: ") + e.what(), {file, "", ""});
+  }
   detail::check_finite(loaded.volume, file);
   return loaded;
 }

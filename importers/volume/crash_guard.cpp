@@ -1,0 +1,36 @@
+#include "importers/volume/crash_guard.h"
+
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <string>
+
+#include "core/error.h"
+
+namespace viscera::importers::detail {
+
+bool survives_in_child(const std::function<void()>& attempt) {
+  const pid_t child = ::fork();
+  if (child < 0)
+    throw core::Error(std::string("cannot start a process to check the file: ") +
+                      std::strerror(errno));
+  if (child == 0) {
+    // The library's own messages would reach the user's terminal: the parent reports instead.
+    if (const int null = ::open("/dev/null", O_WRONLY); null >= 0) ::dup2(null, 2);
+    try {
+      attempt();
+    } catch (...) {  // a refusal: the parent's own attempt reports it
+    }
+    ::_exit(0);  // nothing of the parent's state (atexit handlers, buffered streams) runs twice
+  }
+  int status = 0;
+  while (::waitpid(child, &status, 0) < 0) {
+    if (errno != EINTR) return false;
+  }
+  return WIFEXITED(status) && WEXITSTATUS(status) == 0;
+}
+
+}  // namespace viscera::importers::detail

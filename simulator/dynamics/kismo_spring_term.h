@@ -26,6 +26,8 @@ class KismoSpringTerm : public BodyTerm {
                      BlockSparseMatrix&) const override;
   void add_damping(std::span<const Vec3> x, double scale, BlockSparseMatrix&) const override;
   const CubicSprings& springs() const { return springs_; }
+  /// Rest lengths may be moved by plasticity (after_step of another term); m.
+  CubicSprings& mutable_springs() { return springs_; }
 
  protected:
   void build(const SimulationState& state, int first) override;

@@ -46,6 +46,7 @@ void PulseWaves::build(const SimulationState& state, int first) {
   knots_ = pulse_wall_knots(tree_, state.range(state.rest_positions, model().body), spacing);
   pushed_.clear();
   pushed_force_.clear();
+  pushed_rest_.clear();
 }
 
 void PulseWaves::shift(int delta) {
@@ -60,9 +61,10 @@ double PulseWaves::front(double t) const {
   return spec_.pulse_velocity * (t - beat);
 }
 
-void PulseWaves::prepare(const SimulationState& /*state*/, const StepContext& context) {
+void PulseWaves::prepare(const SimulationState& state, const StepContext& context) {
   pushed_.clear();
   pushed_force_.clear();
+  pushed_rest_.clear();
   // Knot k is pushed in the step [time, end) holding an arrival n·T + arc/v of beat n ≥ 0, and
   // only while beat n's wave still runs (arc/v < T: the next beat deletes it).
   const double end = context.time + context.h;
@@ -73,13 +75,14 @@ void PulseWaves::prepare(const SimulationState& /*state*/, const StepContext& co
     if (beat < 0.0 || beat + travel < context.time) continue;
     pushed_.push_back(first_ + knot.node);
     pushed_force_.push_back(spec_.wall_force * knot.direction);
+    pushed_rest_.push_back(state.rest_positions[static_cast<std::size_t>(first_ + knot.node)]);
   }
 }
 
 double PulseWaves::energy(std::span<const Vec3> x) const {
   double e = 0.0;
   for (std::size_t k = 0; k < pushed_.size(); ++k)
-    e -= pushed_force_[k].dot(x[static_cast<std::size_t>(pushed_[k])]);
+    e -= pushed_force_[k].dot(x[static_cast<std::size_t>(pushed_[k])] - pushed_rest_[k]);
   return e;
 }
 

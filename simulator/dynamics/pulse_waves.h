@@ -10,8 +10,8 @@
 /// when the step is coarse). A new beat deletes the wave still running (the seed's rule when the
 /// heart rate is too high for the tree), so a front never travels further than one beat.
 ///
-/// Energy of the step's load: E = −Σ F_k · x_k over the knots pushed (a load constant in x,
-/// zero Hessian).
+/// Energy of the step's load, relative to rest: E = −Σ F_k · (x_k − X_k) over the knots pushed
+/// (a load constant in x, zero Hessian).
 
 #include <vector>
 
@@ -60,6 +60,7 @@ class PulseWaves : public BodyTerm {
   std::vector<PulseWallKnot> knots_;
   std::vector<int> pushed_;         ///< global nodes
   std::vector<Vec3> pushed_force_;  ///< N, per pushed node
+  std::vector<Vec3> pushed_rest_;   ///< m, their rest positions
 };
 
 /// Mean length in m of the edges of `mesh`'s tets (each tet's six edges counted), or of its

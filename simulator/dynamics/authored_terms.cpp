@@ -53,9 +53,9 @@ std::shared_ptr<BodyModel> add_cell_agent_body(const core::Scenario& scenario,
   for (const auto& face : cells.surface_faces)
     for (const int n : face)
       if (n < 0 || n >= static_cast<int>(cells.nodes.size()))
-        throw core::InputError("a surface face names cell " + std::to_string(n) +
-                                   ", which the tissue does not have",
-                               where);
+        throw core::InputError(
+            "a surface face names cell " + std::to_string(n) + ", which the tissue does not have",
+            where);
   core::Material material;
   if (!object.material.empty()) {
     const auto it = scenario.materials.find(object.material);
@@ -103,9 +103,9 @@ std::vector<std::unique_ptr<ForceTerm>> authored_terms(
     const core::ActiveDeformation& deformation = scenario.active_deformations[d];
     const core::ErrorLocation where{"", "/scenario/active_deformations/" + std::to_string(d),
                                     deformation.id};
-    const auto target =
-        std::find_if(models.begin(), models.end(),
-                     [&](const auto& m) { return m->name == deformation.target_object; });
+    const auto target = std::find_if(models.begin(), models.end(), [&](const auto& m) {
+      return m->name == deformation.target_object;
+    });
     if (target == models.end()) {
       throw core::InputError("active deformation \"" + deformation.id + "\" targets \"" +
                                  deformation.target_object + "\", which has no simulated body",

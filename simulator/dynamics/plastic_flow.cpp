@@ -1,9 +1,12 @@
 #include "simulator/dynamics/plastic_flow.h"
 
+#include <algorithm>
+
 namespace viscera::sim {
 
 int apply_plastic_flow(std::span<const Vec3> x, std::span<const std::array<int, 2>> edges,
-                       std::span<double> rest_length, std::span<const double> yield_strain) {
+                       std::span<double> rest_length, std::span<const double> yield_strain,
+                       std::span<const double> lower, std::span<const double> upper) {
   int moved = 0;
   for (std::size_t e = 0; e < edges.size(); ++e) {
     const double yield = yield_strain[e];
@@ -12,11 +15,14 @@ int apply_plastic_flow(std::span<const Vec3> x, std::span<const std::array<int, 
         (x[static_cast<std::size_t>(edges[e][1])] - x[static_cast<std::size_t>(edges[e][0])])
             .norm();
     double& rest = rest_length[e];
-    if (length > (1.0 + yield) * rest) {
-      rest = length / (1.0 + yield);
-      ++moved;
-    } else if (yield < 1.0 && length > 0.0 && length < (1.0 - yield) * rest) {
-      rest = length / (1.0 - yield);
+    double flowed = rest;
+    if (length > (1.0 + yield) * rest)
+      flowed = length / (1.0 + yield);
+    else if (yield < 1.0 && length > 0.0 && length < (1.0 - yield) * rest)
+      flowed = length / (1.0 - yield);
+    flowed = std::clamp(flowed, lower[e], upper[e]);
+    if (flowed != rest) {
+      rest = flowed;
       ++moved;
     }
   }
@@ -24,18 +30,31 @@ int apply_plastic_flow(std::span<const Vec3> x, std::span<const std::array<int, 
 }
 
 PlasticFlow::PlasticFlow(BodyEdges edges, const SimulationState& state) : edges_(edges) {
-  yield_ =
-      edges_.material_limit(&core::Material::plastic_yield, state.body(edges_.model().body).first);
+  capture(state);
+}
+
+void PlasticFlow::capture(const SimulationState& state) {
+  const int first = state.body(edges_.model().body).first;
+  yield_ = edges_.material_limit(&core::Material::plastic_yield, first);
+  const std::vector<double> tearing =
+      edges_.material_limit(&core::Material::tearing_threshold, first);
+  const auto rest = edges_.rest_lengths();
+  lower_.resize(rest.size());
+  upper_.resize(rest.size());
+  for (std::size_t e = 0; e < rest.size(); ++e) {
+    const double reach = 1.0 + std::max(0.0, tearing[e]);
+    lower_[e] = rest[e] / reach;
+    upper_[e] = rest[e] * reach;
+  }
 }
 
 void PlasticFlow::after_step(const SimulationState& state) {
-  flow_events_ +=
-      apply_plastic_flow(state.positions, edges_.edges(), edges_.rest_lengths(), yield_);
+  flow_events_ += apply_plastic_flow(state.positions, edges_.edges(), edges_.rest_lengths(), yield_,
+                                     lower_, upper_);
 }
 
 void PlasticFlow::topology_changed(const SimulationState& state, int body) {
-  if (body != edges_.model().body) return;  // global indices live in the edge term
-  yield_ = edges_.material_limit(&core::Material::plastic_yield, state.body(body).first);
+  if (body == edges_.model().body) capture(state);  // global indices live in the edge term
 }
 
 }  // namespace viscera::sim

@@ -6,9 +6,13 @@
 /// stays elastic and the rest becomes permanent set:
 ///   ε >  ε_y:  l0 ← l / (1 + ε_y)        (stretched past the yield)
 ///   ε < −ε_y:  l0 ← l / (1 − ε_y)        (compressed past it; only for ε_y < 1)
-/// Volume terms keep their rest volume (plastic flow of tissue is taken as isochoric) and area
-/// terms their rest area. A material with plastic_yield ≤ 0 does not flow. The term adds no
-/// energy or force; rest data rebuilt by a topology change start again from the new rest mesh.
+/// The flow stops where the tissue tears: a rest length never leaves [L / (1 + ε_t), L (1 + ε_t)]
+/// around its original length L (ε_t the tearing_threshold; TissueTearing reports the tear, the
+/// cutting module splits it), so a sustained load past the yield — ideal plasticity, no
+/// hardening — cannot stretch a body without bound. Volume terms keep their rest volume
+/// (plastic flow of tissue is taken as isochoric) and area terms their rest area. A material
+/// with plastic_yield ≤ 0 does not flow. The term adds no energy or force; rest data rebuilt by
+/// a topology change start again from the new rest mesh.
 
 #include <string>
 
@@ -16,10 +20,11 @@
 
 namespace viscera::sim {
 
-/// Applies the rule above to every edge (global node pairs) with its own yield strain; returns
-/// how many rest lengths moved.
+/// Applies the rule above to every edge (global node pairs) with its own yield strain, keeping
+/// each rest length within [lower, upper] (m); returns how many rest lengths moved.
 int apply_plastic_flow(std::span<const Vec3> x, std::span<const std::array<int, 2>> edges,
-                       std::span<double> rest_length, std::span<const double> yield_strain);
+                       std::span<double> rest_length, std::span<const double> yield_strain,
+                       std::span<const double> lower, std::span<const double> upper);
 
 class PlasticFlow : public ForceTerm {
  public:
@@ -45,8 +50,10 @@ class PlasticFlow : public ForceTerm {
   const std::vector<double>& yield_strain() const { return yield_; }
 
  private:
+  void capture(const SimulationState& state);
+
   BodyEdges edges_;
-  std::vector<double> yield_;
+  std::vector<double> yield_, lower_, upper_;
   long long flow_events_ = 0;
 };
 

@@ -55,24 +55,22 @@ void PulseWaves::shift(int delta) {
     n += delta;
 }
 
-double PulseWaves::front(double t) const {
-  if (t < 0.0) return -1.0;
-  const double beat = std::floor(t / period_) * period_;
-  return spec_.pulse_velocity * (t - beat);
-}
-
 void PulseWaves::prepare(const SimulationState& state, const StepContext& context) {
   pushed_.clear();
   pushed_force_.clear();
   pushed_rest_.clear();
   // Knot k is pushed in the step [time, end) holding an arrival n·T + arc/v of beat n ≥ 0, and
-  // only while beat n's wave still runs (arc/v < T: the next beat deletes it).
-  const double end = context.time + context.h;
+  // only while beat n's wave still runs (arc/v < T: the next beat deletes it). Both ends move
+  // back by a nanosecond-scale margin, so an arrival on a step boundary counts once, for the
+  // step it opens, however the boundary times were rounded.
+  const double margin = 1e-6 * context.h;
+  const double start = context.time - margin;
+  const double end = context.time + context.h - margin;
   for (const auto& knot : knots_) {
     const double travel = knot.arc / spec_.pulse_velocity;
     if (travel >= period_) break;  // sorted by arc: no wave reaches this far
     const double beat = (std::ceil((end - travel) / period_) - 1.0) * period_;
-    if (beat < 0.0 || beat + travel < context.time) continue;
+    if (beat < -margin || beat + travel < start) continue;
     pushed_.push_back(first_ + knot.node);
     pushed_force_.push_back(spec_.wall_force * knot.direction);
     pushed_rest_.push_back(state.rest_positions[static_cast<std::size_t>(first_ + knot.node)]);

@@ -38,8 +38,6 @@ class PulseWaves : public BodyTerm {
   void declare_blocks(BlockPattern&) const override {}
   void add_stiffness(std::span<const Vec3>, double, bool, BlockSparseMatrix&) const override {}
 
-  /// Arc length in m of the front of the running wave at time t s (0 at each beat).
-  double front(double t) const;
   /// s between beats.
   double period() const { return period_; }
   /// The wall knots, with body-local node indices.

@@ -53,9 +53,11 @@ TEST(MotilityForces, pull_towards_the_moving_rest_shape_with_an_exact_gradient_a
   motility.add_forces(x, std::vector<core::Vec3>(x.size(), core::Vec3::Zero()), f);
   EXPECT_EQ(f[0], core::Vec3::Zero());
   EXPECT_EQ(motility.stiffness()[0], 0.0);
-  // The far corner lies in at least one tet, whose three 1 cm edges at it give
-  // 20 kPa · (1 cm³ / 6) / (1 cm)² / 3 each.
-  EXPECT_GT(motility.stiffness()[free_node], 3.0 * 20e3 * (1e-6 / 6.0) / 1e-4 / 3.0);
+  // The far corner is the last corner of the six tets of its cube, each with edges of 1, √2
+  // and √3 cm to it and k_D = 20 kPa × V0/6 (V0 = 1 cm³ / 6): k = 6 k_D (1 + ½ + ⅓) / 3 cm².
+  const double k_d = 20e3 * (1e-6 / 6.0) / 6.0;
+  EXPECT_NEAR(motility.stiffness()[free_node], 6.0 * k_d * (1.0 + 0.5 + 1.0 / 3.0) / 3.0 / 1e-4,
+              1e-9);
   EXPECT_NEAR(f[free_node].x(), -motility.stiffness()[free_node] * 0.001, 1e-12);
 }
 

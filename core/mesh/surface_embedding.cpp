@@ -115,7 +115,7 @@ SurfaceEmbedding embed_points(const std::vector<Vec3>& points, const TetMesh& bo
 
 std::vector<Vec3> embedded_positions(const SurfaceEmbedding& embedding,
                                      const std::vector<Tetrahedron>& tets,
-                                     const std::vector<Vec3>& body_nodes) {
+                                     std::span<const Vec3> body_nodes) {
   std::vector<Vec3> out(embedding.tet.size());
   for (std::size_t v = 0; v < out.size(); ++v) {
     const auto& tet = tets[embedding.tet[v]];

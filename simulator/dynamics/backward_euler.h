@@ -37,8 +37,6 @@ class BackwardEuler : public Integrator {
 
  private:
   void declare(const SimulationState& state, std::span<ForceTerm* const> terms);
-  double potential(std::span<ForceTerm* const> terms, const SimulationState& state,
-                   std::span<const Vec3> x);
   int solve(const SimulationState& state, std::span<const Vec3> rhs, std::span<Vec3> solution);
 
   NewtonSettings settings_;

@@ -12,6 +12,7 @@
 
 namespace viscera::sim {
 
+using core::Vec3;
 using Mat3 = Eigen::Matrix3d;
 
 /// The (i, j) node pairs whose block a matrix holds; (i, i) is always present.

@@ -65,7 +65,8 @@ class BodyContactTerm : public ForceTerm {
   std::vector<std::vector<std::uint8_t>> rest_overlap_;  ///< per body, node × body flags
   std::vector<int> surface_nodes_;
   std::vector<Contact> contacts_;
-  std::vector<std::array<int, 2>> declared_;  ///< (vertex, tet node) pairs of the last pattern
+  /// (vertex, tet node) pairs declared since the last topology change, sorted.
+  mutable std::vector<std::array<int, 2>> declared_;
   bool structure_changed_ = false;
   ContactStatistics statistics_;
 };

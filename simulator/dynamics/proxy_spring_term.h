@@ -6,6 +6,7 @@
 /// p(x) = Σ b_k x_k of its triangle, and E = ½ k |p(x) − tip|² pulls the surface towards the tip:
 /// the tissue feels −k b_k (p − tip), the hand k (p − tip). Hessian k b bᵀ ⊗ I.
 
+#include <memory>
 #include <vector>
 
 #include "simulator/dynamics/body_model.h"

@@ -48,7 +48,8 @@ void RealtimeLoop::physics_thread() {
     snapshot.steps = world_.steps();
     snapshot.time = world_.time();
     snapshot.positions.resize(world_.bodies().size());
-    for (std::size_t b = 0; b < world_.bodies().size(); ++b) snapshot.positions[b] = world_.bodies()[b].positions();
+    for (std::size_t b = 0; b < world_.bodies().size(); ++b) snapshot.positions[b].assign(world_.bodies()[b].positions().begin(),
+                                                                                 world_.bodies()[b].positions().end());
     snapshot.instrument_force = world_.instrument_force();
     snapshot.instrument_in_contact = world_.instrument_in_contact();
     snapshots_.publish();

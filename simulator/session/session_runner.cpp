@@ -120,7 +120,8 @@ SessionRunner::SessionRunner(const core::Scenario& scenario, const HeadlessRunOp
     if (object != nullptr && !object->surface.triangles.empty()) {
       surface = object->surface;
     } else {
-      surface.vertices = tissue_->body()->positions();
+      surface.vertices.assign(tissue_->body()->positions().begin(),
+                              tissue_->body()->positions().end());
       surface.triangles = tissue_->body()->surface_faces();
     }
     try {
@@ -294,7 +295,7 @@ void SessionRunner::step(const InstrumentState& input) {
 }
 
 void SessionRunner::look() {
-  const DeformableBody& body = *tissue_->body();
+  const BodyView& body = *tissue_->body();
   const core::SceneObject* object = scenario_.find_object(body.name());
   if (body.max_displacement() > 1e-6) {
     if (object != nullptr && !object->surface.triangles.empty()) {
@@ -420,9 +421,9 @@ SessionReport SessionRunner::finish() {
     BodySummary summary;
     summary.name = body.name();
     summary.nodes = body.node_count();
-    summary.edges = body.distance_terms().edges.size();
-    summary.tets = body.volume_terms().tets.size();
-    summary.surface_triangles = body.area_terms().triangles.size();
+    summary.edges = body.edge_count();
+    summary.tets = body.tets().size();
+    summary.surface_triangles = body.surface_faces().size();
     summary.max_displacement = body.max_displacement();
     const core::Vec3 down = world_.gravity().norm() > 0.0
                                 ? core::Vec3(world_.gravity().normalized())

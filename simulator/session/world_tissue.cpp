@@ -12,7 +12,7 @@ WorldTissue::WorldTissue(World& world, int body, double stiffness, const core::V
       perforation_depth_(perforation_depth),
       tip_(tip) {
   world_.attach_instrument(body_, stiffness_, tip_);
-  const DeformableBody& b = world_.bodies()[static_cast<std::size_t>(body_)];
+  const BodyView& b = world_.bodies()[static_cast<std::size_t>(body_)];
   wall_ = std::make_unique<SurfaceBvh>(b.surface_faces(), b.rest_positions());
   thickness_.assign(b.surface_faces().size(), -1.0);
 }
@@ -21,7 +21,7 @@ const std::string& WorldTissue::name() const {
   return body()->name();
 }
 
-const DeformableBody* WorldTissue::body() const {
+const BodyView* WorldTissue::body() const {
   return &world_.bodies()[static_cast<std::size_t>(body_)];
 }
 
@@ -31,7 +31,9 @@ void WorldTissue::move(const InstrumentState& state, double /*dt*/) {
 }
 
 std::optional<TissueEvent> WorldTissue::complication() {
-  if (!world_.instrument_in_contact()) return std::nullopt;
+  // Perforation is judged on the wall the instrument works on, not on a polyp it touches.
+  if (!world_.instrument_in_contact() || world_.instrument_touched_body() != body_)
+    return std::nullopt;
   const double depth = penetration();
   const double limit = perforation_depth_ > 0.0
                            ? perforation_depth_
@@ -63,7 +65,8 @@ double WorldTissue::penetration() const {
   // wall gives way, but a tool through its rest thickness has gone through it.
   const double spring = world_.instrument_force().norm() / stiffness_;
   const ProxyContact contact = world_.instrument_contact();
-  if (wall_ == nullptr || contact.triangle < 0) return spring;
+  if (wall_ == nullptr || contact.triangle < 0 || world_.instrument_touched_body() != body_)
+    return spring;
   const auto& tri = wall_->triangles()[static_cast<std::size_t>(contact.triangle)];
   const auto& p = wall_->positions();
   const core::Vec3 rest_point = contact.barycentric[0] * p[tri[0]] +

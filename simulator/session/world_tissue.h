@@ -27,7 +27,7 @@ class WorldTissue final : public InstrumentTissue {
   std::optional<TissueEvent> complication() override;
   std::vector<TissueEvent> warnings() override { return {}; }
   std::string state_hash() const override { return {}; }
-  const DeformableBody* body() const override;
+  const BodyView* body() const override;
 
  private:
   double wall_thickness(int triangle);

@@ -1,6 +1,11 @@
 #include "simulator/session/world_tissue.h"
 
+#include <algorithm>
+#include <cstdio>
 #include <limits>
+#include <map>
+
+#include "simulator/dynamics/authored_terms.h"
 
 namespace viscera::sim {
 
@@ -28,6 +33,35 @@ const BodyView* WorldTissue::body() const {
 void WorldTissue::move(const InstrumentState& state, double /*dt*/) {
   tip_ = state.tip;
   world_.set_instrument_tip(tip_);
+}
+
+std::vector<TissueEvent> WorldTissue::warnings() {
+  const std::vector<TearEvent> tears = tears_of(world_.terms());
+  if (tears.size() <= reported_tears_) return {};
+  // One warning per body for the tears of this step.
+  struct Torn {
+    int count = 0;
+    double strain = 0.0, threshold = 0.0;
+  };
+  std::map<std::string, Torn> per_body;
+  for (std::size_t k = reported_tears_; k < tears.size(); ++k) {
+    Torn& torn = per_body[tears[k].body];
+    ++torn.count;
+    torn.strain = std::max(torn.strain, tears[k].strain);
+    torn.threshold = tears[k].threshold;
+  }
+  reported_tears_ = tears.size();
+  std::vector<TissueEvent> out;
+  for (const auto& [body, torn] : per_body) {
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "%d link%s of \"%s\" tore, stretched up to %.0f %% past the original length "
+                  "(tearing threshold %.0f %%)",
+                  torn.count, torn.count == 1 ? "" : "s", body.c_str(), 100.0 * torn.strain,
+                  100.0 * torn.threshold);
+    out.push_back({"tissue-tear", text});
+  }
+  return out;
 }
 
 std::optional<TissueEvent> WorldTissue::complication() {

@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "core/sha256.h"
+#include "simulator/dynamics/authored_terms.h"
 #include "simulator/dynamics/backward_euler.h"
 #include "simulator/dynamics/explicit_verlet.h"
 #include "simulator/dynamics/gravity_term.h"
@@ -21,6 +22,10 @@ World::World(const core::Scenario& scenario, IntegratorKind integrator)
                            {"", "/scenario/session/time_step", ""});
   bool any_teschner = false;
   for (const auto& object : scenario.objects) {
+    if (object.body_kind == core::BodyKind::CellAgent) {  // seed 003 §V: cells as nodes
+      models_.push_back(add_cell_agent_body(scenario, object, state_));
+      continue;
+    }
     if (object.body_kind != core::BodyKind::TetMesh &&
         object.body_kind != core::BodyKind::MassSpring)
       continue;
@@ -126,7 +131,7 @@ void World::step() {
     contacts_ = contact_->statistics();
     max_penetration_ = std::max(max_penetration_, contacts_.max_penetration);
   }
-  if (sleep_threshold_ > 0.0) update_sleep();
+  if (sleep_threshold_ > 0.0 && !drives_bodies(terms_)) update_sleep();
 }
 
 void World::check_state() const {

@@ -3,6 +3,7 @@
 
 #include "core/error.h"
 #include "simulator/dynamics/attachment_term.h"
+#include "simulator/dynamics/authored_terms.h"
 #include "simulator/dynamics/connection_spring_term.h"
 #include "simulator/dynamics/gravity_term.h"
 #include "simulator/dynamics/kismo_spring_term.h"
@@ -39,6 +40,7 @@ bool is_pathology(const core::Scenario& scenario, const std::string& id) {
 void World::build_terms(const core::Scenario& scenario) {
   // Internal forces of every body, each element with its own tet's material.
   for (const auto& model : models_) {
+    if (model->kind == BodyModelKind::CellAgent) continue;  // an AgentTissueTerm, below
     if (model->kind == BodyModelKind::KismoMassSpring) {
       terms_.push_back(std::make_unique<KismoSpringTerm>(model, state_));
       continue;
@@ -101,6 +103,9 @@ void World::build_terms(const core::Scenario& scenario) {
     terms_.push_back(std::move(contact));
   }
   terms_.push_back(std::make_unique<GravityTerm>(gravity_, state_));
+  // What else was authored: plasticity, tearing, cell agents, motility, pulse (issue 16).
+  for (auto& term : authored_terms(scenario, state_, models_, terms_, time_step_))
+    terms_.push_back(std::move(term));
 }
 
 void World::topology_changed(int body, const BodyTopology& topology) {

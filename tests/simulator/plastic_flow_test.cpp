@@ -5,6 +5,7 @@
 #include <set>
 
 #include "simulator/dynamics/backward_euler.h"
+#include "simulator/dynamics/kismo_spring_term.h"
 #include "simulator/dynamics/tissue_tearing.h"
 #include "tests/simulator/authored_term_fixtures.h"
 
@@ -36,7 +37,8 @@ struct Stretch {
   long long flow_events = 0;
   std::vector<TearEvent> tears;
 };
-Stretch stretch_and_release(double plastic_yield, double stretch, double tear_strain = 10.0) {
+Stretch stretch_and_release(double plastic_yield, double stretch, double tear_strain = 10.0,
+                            bool mass_spring = false) {
   SimulationState state;
   core::Material material = testing::soft_test_material(200.0);
   material.plastic_yield = plastic_yield;
@@ -45,15 +47,31 @@ Stretch stretch_and_release(double plastic_yield, double stretch, double tear_st
   const auto model = testing::add_tet_body(
       state, "bar", testing::tet_block(8, 1, 1, 0.005), material,
       [&](const core::Vec3& p) { return p.x() < 1e-9 || p.x() > length - 1e-9; });
-  auto distance = std::make_unique<TeschnerDistanceTerm>(model, state);
-  auto volume = std::make_unique<TeschnerVolumeTerm>(model, state);
-  auto plastic = std::make_unique<PlasticFlow>(BodyEdges(*distance), state);
-  auto tearing = std::make_unique<TissueTearing>(BodyEdges(*distance), state);
+  // Teschner distance and volume terms, or a KisMo net of cubic springs on the tet edges.
+  model->kind = mass_spring ? BodyModelKind::KismoMassSpring : BodyModelKind::Teschner;
+  std::vector<std::unique_ptr<ForceTerm>> owned;
+  std::unique_ptr<PlasticFlow> plastic;
+  std::unique_ptr<TissueTearing> tearing;
+  if (mass_spring) {
+    auto springs = std::make_unique<KismoSpringTerm>(model, state);
+    plastic = std::make_unique<PlasticFlow>(BodyEdges(*springs), state);
+    tearing = std::make_unique<TissueTearing>(BodyEdges(*springs), state);
+    owned.push_back(std::move(springs));
+  } else {
+    auto distance = std::make_unique<TeschnerDistanceTerm>(model, state);
+    plastic = std::make_unique<PlasticFlow>(BodyEdges(*distance), state);
+    tearing = std::make_unique<TissueTearing>(BodyEdges(*distance), state);
+    owned.push_back(std::move(distance));
+    owned.push_back(std::make_unique<TeschnerVolumeTerm>(model, state));
+  }
   std::vector<std::size_t> end;
   for (std::size_t i = 0; i < state.node_count(); ++i)
     if (state.rest_positions[i].x() > length - 1e-9) end.push_back(i);
-  const std::vector<ForceTerm*> terms = {distance.get(), volume.get(), plastic.get(),
-                                         tearing.get()};
+  std::vector<ForceTerm*> terms;
+  for (const auto& t : owned)
+    terms.push_back(t.get());
+  terms.push_back(plastic.get());
+  terms.push_back(tearing.get());
   BackwardEuler integrator;
   integrator.topology_changed(state, terms);
   const auto elongation = [&] {
@@ -92,6 +110,16 @@ TEST(PlasticFlow, a_bar_stretched_past_the_yield_keeps_a_permanent_set) {
   EXPECT_GT(past.released, 0.05);
   EXPECT_LT(past.released, 0.2);
   EXPECT_TRUE(below.tears.empty());
+}
+
+TEST(PlasticFlow, a_kismo_net_stretched_past_the_yield_keeps_a_permanent_set_too) {
+  const Stretch below = stretch_and_release(0.5, 0.2, 10.0, true);
+  const Stretch past = stretch_and_release(0.05, 0.2, 10.0, true);
+  EXPECT_EQ(below.flow_events, 0);
+  EXPECT_LT(std::abs(below.released), 1e-3);
+  EXPECT_GT(past.flow_events, 0);
+  EXPECT_GT(past.released, 0.05);
+  EXPECT_LT(past.released, 0.2);
 }
 
 TEST(TissueTearing, edges_stretched_past_the_threshold_are_reported_once_with_their_strain) {

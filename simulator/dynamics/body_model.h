@@ -15,7 +15,7 @@ namespace viscera::sim {
 
 /// How a body's internal forces are modelled.
 enum class BodyModelKind {
-  Teschner,        ///< distance, area and volume energies (seed 000 §3)
+  Teschner,         ///< distance, area and volume energies (seed 000 §3)
   KismoMassSpring,  ///< cubic springs on the mesh edges with damping elements (seed 001 §3.2)
   CellAgent         ///< cell agents of seed 003 §V (mesh.nodes the cells' homes, no tets)
 };

@@ -1,6 +1,8 @@
 #include "simulator/dynamics/block_sparse_matrix.h"
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 
 namespace viscera::sim {
 
@@ -56,8 +58,12 @@ void BlockSparseMatrix::add_symmetric(int i, int j, const Mat3& value) {
     blocks_[static_cast<std::size_t>(diagonal_[static_cast<std::size_t>(i)])] += value;
     return;
   }
-  blocks_[static_cast<std::size_t>(slot(i, j))] += value;
-  blocks_[static_cast<std::size_t>(slot(j, i))] += value.transpose();
+  const int ij = slot(i, j), ji = slot(j, i);
+  if (ij < 0 || ji < 0)
+    throw std::logic_error("block (" + std::to_string(i) + ", " + std::to_string(j) +
+                           ") was not declared in the matrix pattern");
+  blocks_[static_cast<std::size_t>(ij)] += value;
+  blocks_[static_cast<std::size_t>(ji)] += value.transpose();
 }
 
 void BlockSparseMatrix::set_zero() {

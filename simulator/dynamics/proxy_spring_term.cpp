@@ -75,9 +75,10 @@ double ProxySpringTerm::add_forces(std::span<const Vec3> x, std::span<const Vec3
   return 0.5 * proxy_.stiffness() * (p - tip_).squaredNorm();
 }
 
-void ProxySpringTerm::declare_blocks(BlockPattern&) const {
-  // The three nodes of a surface triangle are joined by tet edges, whose blocks every body's
-  // internal terms declare: the proxy never needs blocks of its own.
+void ProxySpringTerm::declare_blocks(BlockPattern& pattern) const {
+  // The active triangle's nodes are joined by tet edges, whose blocks every body's internal
+  // terms declare: the proxy never changes the structure (structure_changed() stays false).
+  if (active_[0] >= 0) pattern.add_clique(active_);
 }
 
 void ProxySpringTerm::add_stiffness(std::span<const Vec3>, double scale, bool,

@@ -76,8 +76,10 @@ class TeschnerVolumeTerm : public BodyTerm {
   void add_stiffness(std::span<const Vec3> x, double scale, bool project,
                      BlockSparseMatrix&) const override;
   const VolumeTerms& terms() const { return terms_; }
-  /// First tet whose signed volume at x is ≤ 0 (inverted), as a body-local tet index, or −1.
-  int first_inverted(std::span<const Vec3> x) const;
+  /// First tet turned inside out at x — signed volume below −`fraction` × V0 — as a body-local
+  /// tet index, or −1. A tet pressed flat and slightly past zero is pushed back by its signed
+  /// volume term; one inverted by half its rest volume is beyond what the energy recovers.
+  int first_inverted(std::span<const Vec3> x, double fraction = 0.5) const;
 
  protected:
   void build(const SimulationState& state, int first) override;

@@ -91,10 +91,11 @@ void TeschnerVolumeTerm::add_stiffness(std::span<const Vec3> x, double scale, bo
   }
 }
 
-int TeschnerVolumeTerm::first_inverted(std::span<const Vec3> x) const {
+int TeschnerVolumeTerm::first_inverted(std::span<const Vec3> x, double fraction) const {
   for (std::size_t t = 0; t < terms_.tets.size(); ++t) {
     const auto& n = terms_.tets[t];
-    if (core::signed_volume(x[n[0]], x[n[1]], x[n[2]], x[n[3]]) <= 0.0) return static_cast<int>(t);
+    if (core::signed_volume(x[n[0]], x[n[1]], x[n[2]], x[n[3]]) < -fraction * terms_.rest_volume[t])
+      return static_cast<int>(t);
   }
   return -1;
 }

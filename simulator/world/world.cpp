@@ -151,8 +151,8 @@ void World::check_state() const {
     const int tet = volume->first_inverted(state_.positions);
     if (tet >= 0) {
       const auto& nodes = volume->model().mesh.tets[static_cast<std::size_t>(tet)];
-      throw simulation_error("tet " + std::to_string(tet) + " inverted (the tool or a contact " +
-                                 "pressed harder than the material can hold)",
+      throw simulation_error("tet " + std::to_string(tet) + " turned inside out (the tool or a " +
+                                 "contact pressed harder than the material can hold)",
                              volume->model().name, "node " + std::to_string(nodes[0]), steps_, t);
     }
   }

@@ -5,13 +5,14 @@
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+
 #include "core/random.h"
 #include "simulator/collision/penetration_depth.h"
 #include "simulator/collision/spatial_hash.h"
 #include "simulator/haptics/haptic_proxy.h"
 #include "simulator/haptics/simulated_device.h"
 #include "simulator/haptics/udp_device_bridge.h"
-#include "simulator/physics/deformable_body.h"
 #include "tests/support/tet_block.h"
 
 namespace {
@@ -53,9 +54,13 @@ void BM_PenetrationDepthPerPoint(benchmark::State& state) {
   for (const auto& c : hash.detect(bodies, false)) {
     if (c.vertex_body == 0 && (colliding.empty() || colliding.back() != c.vertex)) colliding.push_back(c.vertex);
   }
-  viscera::core::Material material;
-  const DeformableBody body("block", block, material);
-  const auto adjacency = VertexAdjacency::from_edges(block.nodes.size(), body.distance_terms().edges);
+  std::vector<std::array<int, 2>> edges;
+  for (const auto& t : block.tets)
+    for (int a = 0; a < 4; ++a)
+      for (int b = a + 1; b < 4; ++b) edges.push_back({std::min(t[a], t[b]), std::max(t[a], t[b])});
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  const auto adjacency = VertexAdjacency::from_edges(block.nodes.size(), edges);
   const PenetratedSurface surface{slab.nodes, slab.surface_faces};
   for (auto _ : state) {
     benchmark::DoNotOptimize(penetration_depths(block.nodes, adjacency, colliding, surface));

@@ -6,7 +6,6 @@
 
 #include "core/meshing/tet_mesher.h"
 #include "core/primitives/icosphere.h"
-#include "simulator/collision/contact_response.h"
 #include "simulator/collision/spatial_hash.h"
 #include "tests/simulator/sim_fixtures.h"
 
@@ -82,29 +81,6 @@ TEST(PenetrationDepth, segment_triangle_intersection_finds_the_crossing_paramete
   EXPECT_NEAR(segment_triangle_intersection({0.2, 0.2, -1}, {0.2, 0.2, 3}, a, b, c), 0.25, 1e-15);
   EXPECT_LT(segment_triangle_intersection({0.8, 0.8, -1}, {0.8, 0.8, 1}, a, b, c), 0.0);  // outside
   EXPECT_LT(segment_triangle_intersection({0.2, 0.2, 1}, {0.2, 0.2, 2}, a, b, c), 0.0);   // short
-}
-
-TEST(ContactResponse, penalty_forces_push_apart_and_conserve_momentum) {
-  core::Material material;
-  core::TetMesh b = viscera::testing::tet_block(6, 6, 3, 0.01);
-  for (auto& n : b.nodes) n += core::Vec3(-0.03, -0.03, -0.03);
-  // a's 8 mm footprint falls between b's 1 cm grid nodes, so only a's bottom layer collides.
-  core::TetMesh a = viscera::testing::tet_block(2, 2, 2, 0.004);
-  for (auto& n : a.nodes) n += core::Vec3(0.001, 0.001, -0.003);
-  std::vector<DeformableBody> bodies;
-  bodies.emplace_back("a", a, material);
-  bodies.emplace_back("b", b, material);
-  for (auto& body : bodies) body.compute_forces(core::Vec3::Zero(), 1e-3);  // rest: zero forces
-  ContactResponse contact(bodies, 500.0);
-  const ContactStatistics stats = contact.apply(bodies);
-  EXPECT_EQ(stats.colliding_points, 9);
-  EXPECT_NEAR(stats.max_penetration, 0.003, 1e-12);
-  core::Vec3 net = core::Vec3::Zero(), on_a = core::Vec3::Zero();
-  for (const auto& f : bodies[0].forces()) on_a += f;
-  for (const auto& body : bodies)
-    for (const auto& f : body.forces()) net += f;
-  EXPECT_NEAR(on_a.z(), 9 * 500.0 * 0.003, 1e-9);  // every point pushed up by k·d
-  EXPECT_LT(net.norm(), 1e-12);
 }
 
 }  // namespace

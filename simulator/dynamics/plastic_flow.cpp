@@ -6,7 +6,7 @@ namespace viscera::sim {
 
 int apply_plastic_flow(std::span<const Vec3> x, std::span<const std::array<int, 2>> edges,
                        std::span<double> rest_length, std::span<const double> yield_strain,
-                       std::span<const double> lower, std::span<const double> upper) {
+                       std::span<const double> longest) {
   int moved = 0;
   for (std::size_t e = 0; e < edges.size(); ++e) {
     const double yield = yield_strain[e];
@@ -15,13 +15,9 @@ int apply_plastic_flow(std::span<const Vec3> x, std::span<const std::array<int, 
         (x[static_cast<std::size_t>(edges[e][1])] - x[static_cast<std::size_t>(edges[e][0])])
             .norm();
     double& rest = rest_length[e];
-    double flowed = rest;
-    if (length > (1.0 + yield) * rest)
-      flowed = length / (1.0 + yield);
-    else if (yield < 1.0 && length > 0.0 && length < (1.0 - yield) * rest)
-      flowed = length / (1.0 - yield);
-    flowed = std::clamp(flowed, lower[e], upper[e]);
-    if (flowed != rest) {
+    if (!(length > (1.0 + yield) * rest)) continue;
+    const double flowed = std::min(length / (1.0 + yield), longest[e]);
+    if (flowed > rest) {
       rest = flowed;
       ++moved;
     }
@@ -39,18 +35,14 @@ void PlasticFlow::capture(const SimulationState& state) {
   const std::vector<double> tearing =
       edges_.material_limit(&core::Material::tearing_threshold, first);
   const auto rest = edges_.rest_lengths();
-  lower_.resize(rest.size());
-  upper_.resize(rest.size());
-  for (std::size_t e = 0; e < rest.size(); ++e) {
-    const double reach = 1.0 + std::max(0.0, tearing[e]);
-    lower_[e] = rest[e] / reach;
-    upper_[e] = rest[e] * reach;
-  }
+  longest_.resize(rest.size());
+  for (std::size_t e = 0; e < rest.size(); ++e)
+    longest_[e] = rest[e] * (1.0 + std::max(0.0, tearing[e]));
 }
 
 void PlasticFlow::after_step(const SimulationState& state) {
-  flow_events_ += apply_plastic_flow(state.positions, edges_.edges(), edges_.rest_lengths(), yield_,
-                                     lower_, upper_);
+  flow_events_ +=
+      apply_plastic_flow(state.positions, edges_.edges(), edges_.rest_lengths(), yield_, longest_);
 }
 
 void PlasticFlow::topology_changed(const SimulationState& state, int body) {

@@ -2,12 +2,13 @@
 /// Plasticity of tet and mass-spring bodies (seed 003 §V: "permanently changing default …
 /// connection length if a certain stretch threshold is exceeded"; the material's plastic_yield):
 /// after every accepted step, the rest length l0 of each distance term or KisMo spring whose
-/// strain ε = (l − l0) / l0 lies beyond the yield ε_y follows it, so at most the yield strain
-/// stays elastic and the rest becomes permanent set:
-///   ε >  ε_y:  l0 ← l / (1 + ε_y)        (stretched past the yield)
-///   ε < −ε_y:  l0 ← l / (1 − ε_y)        (compressed past it; only for ε_y < 1)
-/// The flow stops where the tissue tears: a rest length never leaves [L / (1 + ε_t), L (1 + ε_t)]
-/// around its original length L (ε_t the tearing_threshold; TissueTearing reports the tear, the
+/// strain ε = (l − l0) / l0 exceeds the yield ε_y follows it, l0 ← l / (1 + ε_y), so at most
+/// the yield strain stays elastic and the rest becomes permanent set. Only stretch flows, as the
+/// seed has it ("stretch threshold"): compressed edges keep their rest length — shortening them
+/// under a pressing tool, while the volume terms keep the rest volume, would flatten the tets
+/// at rest and turn them inside out.
+/// The flow stops where the tissue tears: a rest length never grows past L (1 + ε_t), L its
+/// original length (ε_t the tearing_threshold; TissueTearing reports the tear, the
 /// cutting module splits it), so a sustained load past the yield — ideal plasticity, no
 /// hardening — cannot stretch a body without bound. Volume terms keep their rest volume
 /// (plastic flow of tissue is taken as isochoric) and area terms their rest area. A material
@@ -20,11 +21,11 @@
 
 namespace viscera::sim {
 
-/// Applies the rule above to every edge (global node pairs) with its own yield strain, keeping
-/// each rest length within [lower, upper] (m); returns how many rest lengths moved.
+/// Applies the rule above to every edge (global node pairs) with its own yield strain, a rest
+/// length never growing past `longest` (m); returns how many rest lengths moved.
 int apply_plastic_flow(std::span<const Vec3> x, std::span<const std::array<int, 2>> edges,
                        std::span<double> rest_length, std::span<const double> yield_strain,
-                       std::span<const double> lower, std::span<const double> upper);
+                       std::span<const double> longest);
 
 class PlasticFlow : public ForceTerm {
  public:
@@ -53,7 +54,7 @@ class PlasticFlow : public ForceTerm {
   void capture(const SimulationState& state);
 
   BodyEdges edges_;
-  std::vector<double> yield_, lower_, upper_;
+  std::vector<double> yield_, longest_;  ///< longest: L (1 + ε_t), m
   long long flow_events_ = 0;
 };
 

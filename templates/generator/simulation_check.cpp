@@ -1,17 +1,17 @@
 #include "templates/generator/simulation_check.h"
 
 #include <cmath>
+#include <span>
 #include <sstream>
 
 #include "core/error.h"
 #include "core/random.h"
-#include "simulator/physics/cell_agent_tissue.h"
 #include "simulator/world/world.h"
 
 namespace viscera::templates {
 namespace {
 
-double diagonal(const std::vector<core::Vec3>& points) {
+double diagonal(std::span<const core::Vec3> points) {
   core::BoundingBox box;
   for (const auto& p : points)
     box.add(p);
@@ -37,23 +37,6 @@ Motion motion_of(std::span<const core::Vec3> x, std::span<const core::Vec3> velo
     m.speed = std::max(m.speed, velocity[n].norm());
   }
   return m;
-}
-
-std::vector<sim::CellType> cell_types_of(const core::CellTissueSpec& spec) {
-  std::vector<sim::CellType> types;
-  for (const auto& t : spec.types) {
-    sim::CellType c;
-    c.mass = t.mass;
-    c.radius = t.radius;
-    c.home_stiffness = t.home_stiffness;
-    c.connection_stiffness = t.connection_stiffness;
-    c.damping = t.damping;
-    c.collision_efficiency = t.collision_efficiency;
-    c.tear_strain = t.tear_strain;
-    c.yield_strain = t.yield_strain;
-    types.push_back(c);
-  }
-  return types;
 }
 
 }  // namespace
@@ -102,8 +85,7 @@ ValidationCheck simulate_one_second(const core::Scenario& scenario,
       if (s % 10 != 0 && s != steps) continue;
       for (std::size_t b = 0; b < world.bodies().size() && check.passed; ++b) {
         const auto& body = world.bodies()[b];
-        judge(body.name(),
-              motion_of(body.positions(), body.velocities(), body.rest_positions()),
+        judge(body.name(), motion_of(body.positions(), body.velocities(), body.rest_positions()),
               limits[b]);
       }
     }
@@ -117,37 +99,7 @@ ValidationCheck simulate_one_second(const core::Scenario& scenario,
         check.detail = "kinetic energy is not finite";
       }
     }
-    for (const auto& spec : scenario.cell_tissues) {
-      if (!check.passed) break;
-      const core::SceneObject* object = scenario.find_object(spec.object);
-      if (object == nullptr) {
-        check.passed = false;
-        check.detail = "cell tissue names a missing object " + spec.object;
-        break;
-      }
-      sim::CellAgentTissue tissue(object->body.nodes, cell_types_of(spec), spec.cell_types,
-                                  spec.neighbour_radius, spec.max_neighbours, spec.planar);
-      const double limit = bounds.max_displacement_fraction * diagonal(object->body.nodes);
-      // The same perturbation as the bodies': a first-step push that moves each cell by up to
-      // bounds.perturbation per axis (Δx = h² F / m).
-      for (std::size_t c = 0; c < tissue.positions().size(); ++c) {
-        const double mass = spec.types.at(static_cast<std::size_t>(spec.cell_types.at(c))).mass;
-        core::Vec3 offset(rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0));
-        if (spec.planar) offset.z() = 0.0;
-        tissue.push(static_cast<int>(c), mass * bounds.perturbation / (h * h) * offset);
-      }
-      for (long long s = 1; s <= steps && check.passed; ++s) {
-        tissue.step(h);
-        if (s % 10 != 0 && s != steps) continue;
-        judge(spec.object, motion_of(tissue.positions(), {}, object->body.nodes, h), limit);
-        for (const auto& v : tissue.velocities())
-          worst_speed = std::max(worst_speed, v.norm());
-        if (worst_speed > bounds.max_speed) {
-          check.passed = false;
-          check.detail = "cells of " + spec.object + " move faster than the bound";
-        }
-      }
-    }
+    // Cell-agent tissues are bodies of the world (seed 003 §V), judged with the others above.
   } catch (const core::CancelledError&) {
     throw;
   } catch (const core::Error& e) {

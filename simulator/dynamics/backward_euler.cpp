@@ -110,7 +110,15 @@ StepStatistics BackwardEuler::step(SimulationState& state, std::span<ForceTerm* 
     return 0.5 * inertia / (h * h) + energy + 0.5 * damping / h;
   };
 
+  // Newton starts at the inertial prediction x̂ unless Φ is infinite there (x + h v would
+  // collapse a tet through the volume terms' barrier): then at x, where it is finite.
   std::vector<Vec3> x = predicted_;
+  {
+    double e = 0.0;
+    for (ForceTerm* t : terms)
+      e += t->energy(x);
+    if (!std::isfinite(e)) x = start;
+  }
   StepStatistics stats;
   double first_residual = 0.0;
   for (int newton = 0; newton < settings_.max_newton_iterations; ++newton) {
@@ -161,16 +169,21 @@ StepStatistics BackwardEuler::step(SimulationState& state, std::span<ForceTerm* 
       for (std::size_t i = 0; i < n; ++i)
         slope -= gradient_[i].dot(direction_[i]);
     }
+    // Only a step that lowers Φ is taken: an infinite Φ (a tet collapsed through the volume
+    // barrier) or no decrease after 12 halvings keeps x and ends the iterations there.
     double alpha = 1.0;
+    bool accepted = false;
     std::vector<Vec3> candidate(n);
-    for (int halving = 0; halving < 12; ++halving, alpha *= 0.5) {
+    for (int halving = 0; halving < 12 && !accepted; ++halving, alpha *= 0.5) {
       for (std::size_t i = 0; i < n; ++i)
         candidate[i] = x[i] + alpha * direction_[i];
       double e = 0.0;
       for (ForceTerm* t : terms)
         e += t->energy(candidate);
-      if (phi(candidate, e) <= phi_x + 1e-4 * alpha * slope) break;
+      const double phi_candidate = phi(candidate, e);
+      accepted = std::isfinite(phi_candidate) && phi_candidate <= phi_x + 1e-4 * alpha * slope;
     }
+    if (!accepted) break;
     x.swap(candidate);
   }
   for (std::size_t i = 0; i < n; ++i) {

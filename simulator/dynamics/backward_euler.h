@@ -6,8 +6,11 @@
 ///   (M/h² + D/h + K̃) Δ = −∇Φ
 /// with K̃ the per-element PSD-projected Hessian, by conjugate gradients preconditioned with the
 /// inverse 3×3 diagonal blocks (block Jacobi), warm-started from the last step's correction,
-/// followed by a backtracking line search on Φ. Φ decreases every iteration, so without input
-/// the total energy E + ½ vᵀMv cannot grow (backward Euler only dissipates). Fixed nodes
+/// followed by a backtracking line search on Φ that takes only finite, decreasing values (none
+/// in 12 halvings ends the step's iterations where they are; an infinite Φ at x̂ — a tet
+/// collapsed through the volume barrier — starts Newton at x instead). Φ decreases every
+/// iteration, so without input the total energy E + ½ vᵀMv cannot grow (backward Euler only
+/// dissipates). Fixed nodes
 /// (inverse mass 0) stay where they are. No sub-steps: stable at any h.
 
 #include <vector>

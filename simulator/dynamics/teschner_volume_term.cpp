@@ -64,10 +64,13 @@ void TeschnerVolumeTerm::add_stiffness(std::span<const Vec3> x, double scale, bo
     const double inverse6 = 1.0 / (6.0 * terms_.rest_volume[t]);
     const double k = terms_.stiffness[t];
     const double c = e1.dot(g[1]) * inverse6 - 1.0;
-    // Gauss–Newton part k ∇C ∇Cᵀ.
+    // With the collapse barrier E = k (½ C² + b(J)), J = C + 1: Gauss–Newton part
+    // k (1 + b″) ∇C ∇Cᵀ (b″ ≥ 0), curvature part k (C + b′) ∇²C.
+    const CollapseBarrier barrier = collapse_barrier(c + 1.0);
+    const double normal = scale * k * (1.0 + barrier.second) * inverse6 * inverse6;
     for (int a = 0; a < 4; ++a)
       for (int b = a; b < 4; ++b)
-        m.add_symmetric(n[a], n[b], (scale * k * inverse6 * inverse6) * (g[a] * g[b].transpose()));
+        m.add_symmetric(n[a], n[b], normal * (g[a] * g[b].transpose()));
     if (project) continue;
     // Curvature part k C ∇²C: ∂g_a/∂p_b among nodes 1..3 are skew matrices of the edges
     // (∂(a×b)/∂a = −[b]×), rows and columns of node 0 by translation invariance.
@@ -84,7 +87,7 @@ void TeschnerVolumeTerm::add_stiffness(std::span<const Vec3> x, double scale, bo
     for (int b = 1; b < 4; ++b)
       h[0][b] = h[b][0].transpose();
     h[0][0] = -(h[0][1] + h[0][2] + h[0][3]);
-    const double curvature = scale * k * c * inverse6;
+    const double curvature = scale * k * (c + barrier.first) * inverse6;
     for (int a = 0; a < 4; ++a)
       for (int b = a; b < 4; ++b)
         m.add_symmetric(n[a], n[b], curvature * h[a][b]);

@@ -65,6 +65,26 @@ class UsageError : public Error {
   using Error::Error;
 };
 
+/// The simulation reached a state it cannot go on from (exit code 5): the error names the body,
+/// the node, the physics step and the likely cause, e.g. "non-finite state" or "inverted tets".
+class SimulationError : public Error {
+ public:
+  /// `node` < 0 and `step` < 0 when unknown; `cause` is one clause ("the time step is too large
+  /// for the material"), `message` says what was found.
+  SimulationError(const std::string& message, std::string body, long long node, long long step,
+                  std::string cause);
+
+  const std::string& body() const noexcept { return body_; }
+  long long node() const noexcept { return node_; }
+  long long step() const noexcept { return step_; }
+  const std::string& cause() const noexcept { return cause_; }
+
+ private:
+  std::string body_;
+  long long node_ = -1, step_ = -1;
+  std::string cause_;
+};
+
 /// Exit codes of the command-line contract (DESIGN.md §9).
 enum class ExitCode : int {
   Success = 0,
@@ -72,6 +92,7 @@ enum class ExitCode : int {
   Usage = 2,
   InvalidInput = 3,
   ValidationFailed = 4,
+  SimulationFailed = 5,  ///< a SimulationError: the session's physics cannot go on
 };
 
 /// The exit code a command-line tool returns for an exception that reached its main().

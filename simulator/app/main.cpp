@@ -1,7 +1,8 @@
 /// `viscera-sim`: the simulator runtime. Opens a scenario package and runs a session on it, or
 /// replays a recorded session and checks it bit for bit.
 /// Exit codes (DESIGN.md §9): 0 success, 1 internal error, 2 usage, 3 unreadable or invalid
-/// input, 4 validation failed (a replay that departs from its recording).
+/// input, 4 validation failed (a replay that departs from its recording), 5 the simulation
+/// failed (core::SimulationError: the body, node, step and likely cause in one sentence).
 
 #include <CLI/CLI.hpp>
 #include <filesystem>
@@ -86,6 +87,8 @@ std::unique_ptr<viscera::view::EndoscopicView> make_view(const viscera::core::Sc
   view.lens_effects = !options.plain_optics;
   // A live window needs its frame rate; snapshots and videos take their time for full detail.
   view.render_scale = options.render_scale > 0.0 ? options.render_scale : (offscreen ? 1.0 : 0.5);
+  // Without --render-scale the window trades resolution for its frame rate (≥ 30 fps).
+  view.adaptive_resolution = !offscreen && options.render_scale <= 0.0;
   if (!offscreen) view.bindings = bindings;
   return std::make_unique<viscera::view::EndoscopicView>(scenario, package, view);
 }
@@ -318,9 +321,11 @@ int main(int argc, char** argv) {
   run_command->add_flag("--plain-optics", options.plain_optics,
                         "No barrel distortion, depth of field or round field stop");
   run_command
-      ->add_option("--render-scale", options.render_scale,
-                   "Resolution of the scene under the lens pass as a fraction of the view "
-                   "(default 0.5 in the window, 1 for snapshots)")
+      ->add_option(
+          "--render-scale", options.render_scale,
+          "Resolution of the scene under the lens pass as a fraction of the view; fixes it "
+          "(default: 0.5 in the window, lowered to 0.25 while it draws under 30 fps; 1 for "
+          "snapshots)")
       ->check(CLI::Range(0.25, 1.0));
   run_command->callback([&] { exit_code = run(options); });
 

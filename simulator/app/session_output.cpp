@@ -73,9 +73,12 @@ void publish(const SessionReport& report, const std::string& report_dir, bool as
   if (report.has_instrument) {
     std::cout << "instrument path " << report.metrics.path_length() << " m, "
               << report.metrics.contacts() << " contacts, max force " << report.metrics.max_force()
-              << " N, surface seen " << 100.0 * report.metrics.surface_seen() << " %, score "
-              << report.score << "\n";
+              << " N, surface seen " << 100.0 * report.metrics.surface_seen() << " %\n";
   }
+  if (report.score)
+    std::cout << "score " << *report.score << "\n";
+  else
+    std::cout << "score: not assessed (" << report.score_reason << ")\n";
   for (const auto& task : report.tasks) {
     std::cout << "task " << task.id << ": " << task.status
               << (task.note.empty() ? "" : " (" + task.note + ")") << "\n";

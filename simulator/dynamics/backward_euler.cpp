@@ -181,7 +181,10 @@ StepStatistics BackwardEuler::step(SimulationState& state, std::span<ForceTerm* 
       for (ForceTerm* t : terms)
         e += t->energy(candidate);
       const double phi_candidate = phi(candidate, e);
-      accepted = std::isfinite(phi_candidate) && phi_candidate <= phi_x + 1e-4 * alpha * slope;
+      // Φ(x) itself not finite: the input is (a non-finite tool tip); the full step carries it
+      // into the state, where the world's check names the body and node.
+      accepted = !std::isfinite(phi_x) ||
+                 (std::isfinite(phi_candidate) && phi_candidate <= phi_x + 1e-4 * alpha * slope);
     }
     if (!accepted) break;
     x.swap(candidate);

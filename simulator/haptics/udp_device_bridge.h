@@ -16,8 +16,9 @@ namespace viscera::sim {
 
 /// Where the bridge listens.
 struct BridgeOptions {
-  std::string bind_address = "127.0.0.1";  ///< loopback by default: no device on the network by accident
-  std::uint16_t port = 0;                  ///< 0 = any free port
+  std::string bind_address =
+      "127.0.0.1";         ///< loopback by default: no device on the network by accident
+  std::uint16_t port = 0;  ///< 0 = any free port
 };
 
 /// Counts of what arrived.
@@ -37,6 +38,9 @@ class UdpDeviceBridge {
   /// Reads every pending datagram; returns the newest valid pose among them, if any arrived.
   /// Waits up to `timeout_ms` for the first datagram when positive.
   std::optional<DevicePose> poll(int timeout_ms = 0);
+  /// Waits up to `timeout` for a datagram without reading it (the device loop's sub-millisecond
+  /// wait between feedback packets); returns whether one is pending.
+  bool wait(std::chrono::microseconds timeout) const { return socket_.wait_readable(timeout); }
 
   /// Sends feedback to the sender of the last accepted pose; false when none is known yet.
   bool send_feedback(const DeviceFeedback& feedback);

@@ -1,6 +1,7 @@
 #pragma once
 /// A non-blocking IPv4 UDP socket (POSIX), owned RAII-style.
 
+#include <chrono>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -31,7 +32,11 @@ class UdpSocket {
   bool send_to(const UdpEndpoint& to, std::span<const std::uint8_t> bytes);
   /// Receives one pending datagram into `buffer` without blocking; nullopt when none is
   /// pending. Waits up to `timeout_ms` first when it is positive.
-  std::optional<std::size_t> receive(std::vector<std::uint8_t>& buffer, UdpEndpoint& from, int timeout_ms = 0);
+  std::optional<std::size_t> receive(std::vector<std::uint8_t>& buffer, UdpEndpoint& from,
+                                     int timeout_ms = 0);
+  /// Waits up to `timeout` (microsecond resolution, for loops at ≥ 1 kHz) until a datagram is
+  /// pending; returns whether one is.
+  bool wait_readable(std::chrono::microseconds timeout) const;
 
  private:
   int fd_ = -1;

@@ -6,12 +6,14 @@
 /// rest frame (shaft along +z, optics' up along +y) into the scene.
 
 #include <cstdint>
+#include <memory>
 #include <string>
 
 #include "simulator/haptics/device_limits.h"
 #include "simulator/haptics/device_packets.h"
 #include "simulator/haptics/udp_device_bridge.h"
 #include "simulator/input/live_input.h"
+#include "simulator/runtime/haptic_device_loop.h"
 
 namespace viscera::sim {
 
@@ -23,32 +25,51 @@ inline constexpr std::uint32_t kDeviceAbortButton = 1U;
 /// kDeviceAbortButton.
 InstrumentState instrument_from_pose(const DevicePose& pose);
 
-/// The instrument driven by a device on the loopback interface.
+/// The instrument driven by a device on the loopback interface. Alone (a headless live run)
+/// it reads poses before and sends the step's force after every physics step, on the caller's
+/// thread. In a threaded session (start_realtime) its I/O moves to a HapticDeviceLoop that
+/// answers the device at ≥ 1 kHz from the local contact model; next() then takes the newest
+/// pose that loop received and after_step() publishes the tissue's surface to it.
 class DeviceInput final : public LiveInput {
  public:
   /// Listens on `options` (port 0: any free port, see port()); until the first pose arrives
   /// the instrument rests at `start`. Throws core::Error when the port cannot be bound.
   DeviceInput(const BridgeOptions& options, const InstrumentState& start,
-              const DeviceLimits& limits = {});
+              const DeviceLimits& limits = {}, const DeviceLoopOptions& loop = {});
+  ~DeviceInput() override;
 
   std::uint16_t port() const { return bridge_.port(); }
-  /// Reads every pending pose (non-blocking) and returns the newest one's state.
+  /// The newest pose's state (every pending pose is read; non-blocking).
   InstrumentState next(double dt) override;
   const InstrumentState& current() const override { return state_; }
-  /// Sends the tissue's force on the instrument, clamped to the device's limits.
+  /// Alone: sends the tissue's force on the instrument, clamped to the device's limits.
+  /// Threaded: publishes the tissue under the instrument to the device loop.
   void after_step(const SessionRunner& runner) override;
   std::string describe() const override;
+  /// Starts the device loop with the surface and proxy stiffness of the runner's tissue.
+  void start_realtime(const SessionRunner& runner) override;
+  void stop_realtime() override;
+  void add_stats(RealtimeStats& stats) const override;
 
+  /// The bridge's counters (alone; while threaded they belong to the loop's thread).
   const BridgeCounters& counters() const { return bridge_.counters(); }
-  std::uint64_t feedback_sent() const { return sent_; }
+  /// Feedback packets sent, alone and threaded.
+  std::uint64_t feedback_sent() const;
+  /// The device loop while threaded, else null.
+  const HapticDeviceLoop* loop() const { return loop_.get(); }
 
  private:
   UdpDeviceBridge bridge_;
   std::string address_;
   DeviceLimits limits_;
+  DeviceLoopOptions loop_options_;
   InstrumentState state_;
   std::uint32_t sequence_ = 0;
   std::uint64_t sent_ = 0;
+  ContactSurface surface_;  ///< of the tissue's body, while threaded
+  std::unique_ptr<HapticDeviceLoop> loop_;
+  std::uint64_t loop_sent_ = 0;  ///< feedback sent by loops that have stopped
+  bool real_time_ = false;       ///< a loop ran at a real-time priority
 };
 
 }  // namespace viscera::sim

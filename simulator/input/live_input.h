@@ -12,6 +12,7 @@
 namespace viscera::sim {
 
 class SessionRunner;
+struct RealtimeStats;
 
 /// A source of instrument states polled in real time.
 class LiveInput {
@@ -25,6 +26,13 @@ class LiveInput {
   virtual void after_step(const SessionRunner&) {}
   /// One line naming the source and its state, for the window and the console.
   virtual std::string describe() const = 0;
+  /// A threaded session (RealtimeLoop) calls this before its physics thread starts and
+  /// stop_realtime() after it stopped: a source with its own I/O (a haptic device) moves it to
+  /// its own thread here; next() and after_step() are then called on the physics thread.
+  virtual void start_realtime(const SessionRunner&) {}
+  virtual void stop_realtime() {}
+  /// Adds the source's own counters (device poses, feedback) to a threaded session's stats.
+  virtual void add_stats(RealtimeStats&) const {}
 };
 
 /// The keyboard and mouse: the window feeds `control`, this reads it.

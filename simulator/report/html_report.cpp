@@ -26,6 +26,14 @@ std::string text_of(const json& object, const std::string& key) {
   return object.contains(key) && object[key].is_string() ? object[key].get<std::string>() : "";
 }
 
+/// "72.5 / 100", or "not assessed: <reason>" when the period has no score.
+std::string score_text(const json& period) {
+  const json score = period.value("score", json());
+  if (score.is_number()) return number(score) + " / 100";
+  const std::string reason = text_of(period, "score_reason");
+  return "not assessed" + (reason.empty() ? std::string() : ": " + core::xml_escaped(reason));
+}
+
 const char* kStyle = R"(<style>
 body { font-family: sans-serif; margin: 2em; color: #222; max-width: 70em; }
 table { border-collapse: collapse; margin: 1em 0; }
@@ -93,10 +101,9 @@ std::vector<std::filesystem::path> write_html_report(const json& report, const j
        << number(report.value("simulated_time", json()), 1.0, 4) << " s</td></tr>\n"
        << "<tr><td>Ended by</td><td>" << core::xml_escaped(text_of(report, "end_reason"))
        << "</td></tr>\n"
-       << "<tr><td>Score</td><td>" << number(report.value("score", json())) << " / 100</td></tr>\n";
+       << "<tr><td>Score</td><td>" << score_text(report) << "</td></tr>\n";
   if (reference != nullptr)
-    html << "<tr><td>Reference score</td><td>" << number(reference->value("score", json()))
-         << " / 100</td></tr>\n";
+    html << "<tr><td>Reference score</td><td>" << score_text(*reference) << "</td></tr>\n";
   html << "</table>\n";
 
   html << "<h2>Metrics</h2>\n<table>\n<tr><th>Metric</th><th>Trainee</th>";
@@ -147,8 +154,8 @@ std::vector<std::filesystem::path> write_html_report(const json& report, const j
          << number(m.value("path_length", json()), 1000.0) << "</td><td>"
          << number(m.value("contacts", json())) << "</td><td>"
          << number(m.value("max_force", json())) << "</td><td>"
-         << number(m.value("surface_seen", json()), 100.0) << "</td><td>"
-         << number(step.value("score", json())) << "</td></tr>\n";
+         << number(m.value("surface_seen", json()), 100.0) << "</td><td>" << score_text(step)
+         << "</td></tr>\n";
   }
   html << "</table>\n<h2>Tasks</h2>\n<table>\n<tr><th>Task</th><th>Status</th><th>Completed at (s)"
           "</th><th>Note</th></tr>\n";

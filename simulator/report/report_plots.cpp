@@ -168,18 +168,30 @@ void plot_force(const json& report, const json* reference, const std::filesystem
   chart.render(png);
 }
 
+namespace {
+
+/// A score to draw: its value, or 0 when absent (the label then says "not assessed").
+double drawn_score(const json& score) {
+  return score.is_number() ? score.get<double>() : 0.0;
+}
+
+}  // namespace
+
 void plot_step_scores(const json& report, const json* reference, const std::filesystem::path& png,
                       PlotSize size) {
   Chart chart("Score per procedure step (0-100)", "", "score", size);
   std::vector<std::string> labels;
   std::vector<double> scores;
   for (const auto& step : member(report, "procedure_steps", "/procedure_steps")) {
-    labels.push_back(step.value("name", std::string()).empty() ? step.value("id", std::string("?"))
-                                                               : step["name"].get<std::string>());
-    scores.push_back(step.value("score", 0.0));
+    const json score = step.value("score", json());
+    labels.push_back((step.value("name", std::string()).empty() ? step.value("id", std::string("?"))
+                                                                : step["name"].get<std::string>()) +
+                     (score.is_number() ? "" : " (not assessed)"));
+    scores.push_back(drawn_score(score));
   }
-  labels.push_back("whole session");
-  scores.push_back(member(report, "score", "/score").get<double>());
+  const json whole = member(report, "score", "/score");
+  labels.push_back(whole.is_number() ? "whole session" : "whole session (not assessed)");
+  scores.push_back(drawn_score(whole));
   std::vector<double> x(scores.size());
   for (std::size_t i = 0; i < x.size(); ++i)
     x[i] = static_cast<double>(i + 1);
@@ -188,9 +200,9 @@ void plot_step_scores(const json& report, const json* reference, const std::file
   if (reference != nullptr) {
     std::vector<double> expert;
     for (const auto& step : member(*reference, "procedure_steps", "/procedure_steps"))
-      expert.push_back(step.value("score", 0.0));
+      expert.push_back(drawn_score(step.value("score", json())));
     expert.resize(scores.size() - 1, 0.0);
-    expert.push_back(member(*reference, "score", "/score").get<double>());
+    expert.push_back(drawn_score(member(*reference, "score", "/score")));
     columns.emplace_back("reference", expert);
   }
   auto data = table(columns);

@@ -18,7 +18,8 @@ class TripleBuffer {
 
   /// Hands the writer's slot to the reader side and takes the old middle slot to write next.
   void publish() {
-    const std::uint8_t previous = middle_.exchange(static_cast<std::uint8_t>(writer_ | kFresh), std::memory_order_acq_rel);
+    const std::uint8_t previous =
+        middle_.exchange(static_cast<std::uint8_t>(writer_ | kFresh), std::memory_order_acq_rel);
     writer_ = previous & kIndex;
   }
 

@@ -54,6 +54,8 @@ class SessionMetrics {
   double max_force() const { return max_force_; }
   /// Mean force magnitude while in contact.
   double mean_force() const { return contact_time_ > 0.0 ? force_time_ / contact_time_ : 0.0; }
+  /// Seconds of looking through the optics recorded (record_view).
+  double view_time() const { return view_time_; }
   /// Share of the viewing time with a good view, in [0, 1].
   double view_quality() const { return view_time_ > 0.0 ? good_view_time_ / view_time_ : 0.0; }
   double surface_seen() const { return coverage_end_ - coverage_start_; }  ///< fraction gained

@@ -6,23 +6,36 @@
 
 namespace viscera::sim {
 
-double period_score(const SessionMetrics& m, double force_warning) {
+PeriodScore period_score(const SessionMetrics& m, double force_warning) {
+  if (!(m.path_length() > 0.0) || !(m.duration() > 0.0)) {
+    return {std::nullopt,
+            "the instrument never moved, so nothing of the trainee's work can be assessed"};
+  }
   std::vector<double> terms;
   if (m.tasks_available() > 0)
     terms.push_back(static_cast<double>(m.tasks_completed()) / m.tasks_available());
-  if (m.path_length() > 0.0) terms.push_back(m.economy());
-  terms.push_back(m.view_quality());
-  if (m.duration() > 0.0)
-    terms.push_back(1.0 - std::clamp(m.contact_time() / m.duration(), 0.0, 1.0));
+  terms.push_back(m.economy());
+  if (m.view_time() > 0.0) terms.push_back(m.view_quality());
+  terms.push_back(1.0 - std::clamp(m.contact_time() / m.duration(), 0.0, 1.0));
   if (force_warning > 0.0)
     terms.push_back(1.0 - std::clamp(m.max_force() / force_warning, 0.0, 1.0));
   double sum = 0.0;
   for (const double t : terms)
     sum += t;
-  return terms.empty() ? 0.0 : 100.0 * sum / static_cast<double>(terms.size());
+  return {100.0 * sum / static_cast<double>(terms.size()), ""};
 }
 
 namespace {
+
+/// A score or null.
+nlohmann::json score_json(const std::optional<double>& score) {
+  return score ? nlohmann::json(*score) : nlohmann::json(nullptr);
+}
+
+/// The reason of an absent score, or null beside a score.
+nlohmann::json reason_json(const std::optional<double>& score, const std::string& reason) {
+  return score ? nlohmann::json(nullptr) : nlohmann::json(reason);
+}
 
 nlohmann::json energy_json(const SessionReport& r) {
   nlohmann::json series = {
@@ -69,6 +82,28 @@ nlohmann::json fluid_json(const SessionReport& r) {
           {"time_above_absorption_threshold", f.time_above_threshold}};
 }
 
+/// How a threaded session kept time, or null for a headless one.
+nlohmann::json realtime_json(const SessionReport& r) {
+  if (!r.realtime) return nullptr;
+  const RealtimeStats& s = *r.realtime;
+  nlohmann::json out = {{"wall_time", s.wall_time},
+                        {"physics_steps", s.physics_steps},
+                        {"late_steps", s.late_steps},
+                        {"max_lag", s.max_lag},
+                        {"frames", s.frames},
+                        {"view_fps", s.view_fps},
+                        {"render_scale", s.render_scale},
+                        {"lowest_render_scale", s.lowest_render_scale},
+                        {"device", nullptr}};
+  if (s.device) {
+    out["device"] = {{"poses", s.device_poses},
+                     {"feedback", s.device_feedback},
+                     {"feedback_rate", s.feedback_rate},
+                     {"real_time_priority", s.device_real_time}};
+  }
+  return out;
+}
+
 }  // namespace
 
 nlohmann::json report_to_json(const SessionReport& r) {
@@ -101,8 +136,11 @@ nlohmann::json report_to_json(const SessionReport& r) {
   }
   nlohmann::json steps = nlohmann::json::array();
   for (const auto& s : r.procedure_steps) {
-    nlohmann::json step = {
-        {"id", s.id}, {"name", s.name}, {"metrics", s.metrics.to_json()}, {"score", s.score}};
+    nlohmann::json step = {{"id", s.id},
+                           {"name", s.name},
+                           {"metrics", s.metrics.to_json()},
+                           {"score", score_json(s.score)},
+                           {"score_reason", reason_json(s.score, s.score_reason)}};
     step["started_at"] =
         s.started_at >= 0.0 ? nlohmann::json(s.started_at) : nlohmann::json(nullptr);
     step["ended_at"] = s.ended_at >= 0.0 ? nlohmann::json(s.ended_at) : nlohmann::json(nullptr);
@@ -112,7 +150,7 @@ nlohmann::json report_to_json(const SessionReport& r) {
   for (const auto& e : r.events)
     events.push_back({{"time", e.time}, {"kind", e.kind}, {"message", e.message}});
   return {{"format", "viscera-session-report"},
-          {"version", 2},
+          {"version", 3},
           {"package", r.package},
           {"procedure", r.procedure},
           {"instrument_kind", r.instrument},
@@ -134,9 +172,11 @@ nlohmann::json report_to_json(const SessionReport& r) {
           {"procedure_steps", steps},
           {"instrument", r.has_instrument ? r.metrics.to_json() : nlohmann::json(nullptr)},
           {"metrics", r.metrics.to_json()},
-          {"score", r.score},
+          {"score", score_json(r.score)},
+          {"score_reason", reason_json(r.score, r.score_reason)},
           {"path", path_json(r)},
           {"fluid", fluid_json(r)},
+          {"realtime", realtime_json(r)},
           {"end_reason", r.end_reason},
           {"events", events},
           {"checkpoints", r.checkpoints.size()},

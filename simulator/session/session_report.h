@@ -2,7 +2,8 @@
 /// The result of a session (seed 000 §11: "a comprehensive report summarizing the quantitative
 /// metrics"): per step and in total, the tasks, the events, the tool path with its distance to
 /// the wall (seed 000 Fig. 16), the body energies and the state hashes that prove a replay.
-/// As JSON: format "viscera-session-report", version 2, schema docs/session-report.schema.json.
+/// As JSON: format "viscera-session-report", version 3, schema docs/session-report.schema.json.
+/// A score is absent (null) with its reason when nothing of the period could be assessed.
 
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -54,7 +55,8 @@ struct StepResult {
   double started_at = -1.0;  ///< s, −1 when the session ended before it
   double ended_at = -1.0;    ///< s
   SessionMetrics metrics;
-  double score = 0.0;  ///< 0…100, see step_score()
+  std::optional<double> score;  ///< 0…100 (period_score), absent when not assessable
+  std::string score_reason;     ///< why there is no score, "" with one
 };
 
 /// Per-body summary at the end of the run.
@@ -63,6 +65,24 @@ struct BodySummary {
   std::size_t nodes = 0, edges = 0, tets = 0, surface_triangles = 0;
   double max_displacement = 0.0;     ///< m
   double centre_of_mass_drop = 0.0;  ///< m, along gravity
+};
+
+/// How a threaded window session kept time (RealtimeLoop), absent headless. Wall-clock
+/// figures: they describe the run, not the simulation, and never enter the state hash.
+struct RealtimeStats {
+  double wall_time = 0.0;  ///< s the physics thread ran
+  long long physics_steps = 0;
+  long long late_steps = 0;          ///< steps that began more than one step late
+  double max_lag = 0.0;              ///< s, largest delay of a step behind the wall clock
+  long long frames = 0;              ///< frames the view rendered
+  double view_fps = 0.0;             ///< frames per wall-clock second
+  double render_scale = 1.0;         ///< scene resolution under the lens pass at the end (fraction)
+  double lowest_render_scale = 1.0;  ///< the smallest the adaptive resolution went
+  bool device = false;               ///< a haptic device drove the instrument
+  long long device_poses = 0;        ///< poses received from it
+  long long device_feedback = 0;     ///< feedback packets sent to it
+  double feedback_rate = 0.0;        ///< feedback packets per wall-clock second
+  bool device_real_time = false;     ///< the device thread ran at a real-time priority
 };
 
 /// The result of a session.
@@ -86,8 +106,9 @@ struct SessionReport {
   std::vector<StepResult> procedure_steps;
   std::string final_state_hash;
   bool has_instrument = false;
-  SessionMetrics metrics;  ///< of the whole session
-  double score = 0.0;      ///< 0…100
+  SessionMetrics metrics;       ///< of the whole session
+  std::optional<double> score;  ///< 0…100 (period_score), absent when not assessable
+  std::string score_reason;     ///< why there is no score, "" with one
   std::vector<PathSample> path;
   std::vector<std::pair<long long, std::string>> checkpoints;  ///< (step, state hash)
   /// The instrument states, as (step, state) at every step where the state changed (when
@@ -96,18 +117,28 @@ struct SessionReport {
   std::vector<SessionEvent> events;
   /// The distension fluid's balance (m³, Pa), when the scenario simulates it.
   std::optional<FluidTotals> fluid;
-  double final_cavity_pressure = 0.0;   ///< Pa
-  std::string end_reason = "duration";  ///< "duration", "time-limit", "completed", "perforation",
-                                        ///< "fluid-overload", "tissue-tear", "abort"
+  double final_cavity_pressure = 0.0;     ///< Pa
+  std::optional<RealtimeStats> realtime;  ///< of a threaded window session
+  std::string end_reason = "duration";    ///< "duration", "time-limit", "completed", "perforation",
+                                          ///< "fluid-overload", "tissue-tear", "abort"
 };
 
-/// Score of a period in [0, 100]: the mean of task completion (completed over available),
-/// economy of movement, view quality, time free of wall contact and force safety (1 − max force
-/// over the warning level, clamped) — equal weights, each in [0, 1]; terms without data (no
-/// tasks, no warning level, no view) are left out.
-double period_score(const SessionMetrics& metrics, double force_warning);
+/// A period's score, or why it has none.
+struct PeriodScore {
+  std::optional<double> value;  ///< 0…100
+  std::string reason;           ///< set when value is absent
+};
 
-/// The report as JSON (format "viscera-session-report", version 2).
+/// Score of a period in [0, 100]: the mean of task completion (completed over assessable
+/// tasks), economy of movement, view quality, time free of wall contact and force safety (1 −
+/// max force over the warning level, clamped) — equal weights, each in [0, 1]. Terms without
+/// data (no assessable task, no warning level, no look through the optics) are left out. The
+/// trainee's work is assessable only once the instrument has moved: a period in which the tool
+/// never moved has no score (its reason says so), so doing nothing never earns the safety terms.
+PeriodScore period_score(const SessionMetrics& metrics, double force_warning);
+
+/// The report as JSON (format "viscera-session-report", version 3): "score" is null with
+/// "score_reason" when absent, in total and per procedure step.
 nlohmann::json report_to_json(const SessionReport& report);
 
 }  // namespace viscera::sim

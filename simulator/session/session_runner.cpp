@@ -10,6 +10,7 @@
 #include "core/scenario/procedure.h"
 #include "core/scenario/scenario_json.h"
 #include "core/sha256.h"
+#include "simulator/session/simulation_check.h"
 #include "simulator/session/urethra_tissue.h"
 #include "simulator/session/world_tissue.h"
 
@@ -181,7 +182,7 @@ SessionRunner::SessionRunner(const core::Scenario& scenario, const HeadlessRunOp
     make_monitor(task, -1, "", "");
   for (std::size_t s = 0; s < scenario.session.steps.size(); ++s) {
     const auto& step = scenario.session.steps[s];
-    report_.procedure_steps.push_back({step.id, step.name, -1.0, -1.0, {}, 0.0});
+    report_.procedure_steps.push_back({step.id, step.name, -1.0, -1.0, {}, std::nullopt, ""});
     for (const auto& substep : step.substeps) {
       for (const auto& task : substep.tasks)
         make_monitor(task, static_cast<int>(s), step.id, substep.id);
@@ -216,25 +217,47 @@ void SessionRunner::close_step(int index) {
     if (m.task.result().status == "completed") ++completed;
   }
   step.metrics.set_tasks(completed, available);
-  step.score = period_score(step.metrics, force_warning_);
+  const PeriodScore score = period_score(step.metrics, force_warning_);
+  step.score = score.value;
+  step.score_reason = score.reason;
 }
 
 void SessionRunner::advance_steps() {
   const int count = static_cast<int>(report_.procedure_steps.size());
   while (current_ >= 0 && current_ < count) {
+    // A step is done when every task of it that can be assessed is completed; a task that
+    // cannot be assessed never counts as done, so a step with none never completes by itself
+    // (a later step's completed task still moves the session on).
     bool all_done = true, later_completed = false;
+    int assessable = 0;
     for (const auto& m : monitors_) {
-      if (m.step == current_ && !m.task.done()) all_done = false;
-      if (m.step > current_ && m.task.result().status == "completed") later_completed = true;
+      const std::string& status = m.task.result().status;
+      if (m.step == current_ && status != "unavailable") {
+        ++assessable;
+        if (status != "completed") all_done = false;
+      }
+      if (m.step > current_ && status == "completed") later_completed = true;
     }
-    if (!all_done && !later_completed) return;
+    if ((!all_done || assessable == 0) && !later_completed) return;
     const double seen = coverage_ ? coverage_->fraction_seen() : 0.0;
     auto& metrics = report_.procedure_steps[static_cast<std::size_t>(current_)].metrics;
     metrics.set_coverage(metrics.coverage_start(), seen);
     close_step(current_);
     if (current_ + 1 >= count) {
-      current_ = count;  // the procedure is complete
-      if (options_.end_when_complete) end("completed", "every step of the procedure is done");
+      current_ = count;  // past the last step
+      // Complete only when every task was assessable: a procedure with a task this runtime
+      // cannot judge is never reported as completed; the session runs on to its end.
+      int unassessable = 0;
+      for (const auto& m : monitors_)
+        if (m.step >= 0 && m.task.result().status == "unavailable") ++unassessable;
+      if (unassessable > 0) {
+        report_.events.push_back(
+            {world_.time(), "procedure-unassessable",
+             "every task that can be assessed is done, but " + std::to_string(unassessable) +
+                 " cannot be assessed by this runtime, so the procedure is not complete"});
+      } else if (options_.end_when_complete) {
+        end("completed", "every step of the procedure is done");
+      }
       return;
     }
     open_step(current_ + 1);
@@ -252,10 +275,11 @@ void SessionRunner::step(const InstrumentState& input) {
   if (has_instrument) {
     if (options_.record_inputs && !(input == state_))
       report_.inputs.emplace_back(world_.steps() + 1, input);
+    if (!(input == state_)) instrument_moved_ = true;
     state_ = input;
     tissue_->move(state_, world_.time_step());
   }
-  world_.step();
+  step_world();
   const double now = world_.time();
   if (has_instrument) {
     const core::Vec3 force = tissue_->force();
@@ -294,6 +318,22 @@ void SessionRunner::step(const InstrumentState& input) {
   }
 }
 
+void SessionRunner::step_world() {
+  try {
+    world_.step();
+  } catch (const core::SimulationError&) {
+    throw;
+  } catch (const core::Error& e) {
+    // Whatever the physics reported, the state says where it went wrong.
+    const long long step = world_.steps() + 1;
+    const double time = static_cast<double>(step) * world_.time_step();
+    if (const auto fault = find_state_fault(world_))
+      throw simulation_error(*fault, step, time);
+    throw simulation_error(e.reason(), tissue_ != nullptr ? tissue_->name() : std::string(), step,
+                           time);
+  }
+}
+
 void SessionRunner::look() {
   const BodyView& body = *tissue_->body();
   const core::SceneObject* object = scenario_.find_object(body.name());
@@ -321,6 +361,14 @@ void SessionRunner::look() {
 
 void SessionRunner::sample() {
   const BodyEnergies e = world_.energies();
+  if (!std::isfinite(e.kinetic + e.elastic + e.gravitational)) {
+    // A state gone non-finite without an error from the world: name it here.
+    if (const auto fault = find_state_fault(world_))
+      throw simulation_error(*fault, world_.steps(), world_.time());
+    throw simulation_error("the bodies' energy is not finite",
+                           tissue_ != nullptr ? tissue_->name() : std::string(), world_.steps(),
+                           world_.time());
+  }
   double displacement = 0.0;
   for (const auto& body : world_.bodies())
     displacement = std::max(displacement, body.max_displacement());
@@ -349,6 +397,7 @@ void SessionRunner::sample() {
   context.kinetic_energy = e.kinetic;
   context.camera = coverage_.get();
   context.fraction_seen = coverage_ ? coverage_->fraction_seen() : 0.0;
+  context.instrument_moved = instrument_moved_;
   for (auto& m : monitors_) {
     const bool watched = m.step < 0 || m.step == current_ || m.step == current_ + 1;
     if (!watched || m.task.done()) continue;
@@ -404,7 +453,20 @@ SessionReport SessionRunner::finish() {
   }
   report_.metrics.set_coverage(0.0, coverage_ ? coverage_->fraction_seen() : 0.0);
   report_.metrics.set_tasks(completed, available);
-  report_.score = period_score(report_.metrics, force_warning_);
+  if (options_.instrument == nullptr) {
+    report_.score.reset();
+    report_.score_reason =
+        "the session has no instrument, so nothing of a trainee's work can be assessed";
+  } else {
+    const PeriodScore score = period_score(report_.metrics, force_warning_);
+    report_.score = score.value;
+    report_.score_reason = score.reason;
+  }
+  for (StepResult& step : report_.procedure_steps) {
+    if (step.started_at >= 0.0) continue;
+    step.score.reset();
+    step.score_reason = "the session ended before this step began";
+  }
   report_.steps = world_.steps();
   report_.substeps = world_.substeps();  // after attach_instrument, whose spring may add some
   report_.simulated_time = world_.time();

@@ -54,6 +54,7 @@ class SessionRunner {
   ~SessionRunner();
 
   /// Advances one physics step with the instrument in `state` (ignored without instrument).
+  /// Throws core::SimulationError when the physics cannot go on (a non-finite state, …).
   void step(const InstrumentState& state);
   /// True once an end condition holds; the report's end_reason says which.
   bool finished() const { return finished_; }
@@ -71,6 +72,8 @@ class SessionRunner {
   /// The tissue the instrument acts on, or null without instrument.
   const InstrumentTissue* tissue() const { return tissue_.get(); }
   const core::InstrumentSpec& instrument() const { return instrument_; }
+  /// Stiffness of the instrument's proxy spring, N/m (HeadlessRunOptions).
+  double instrument_stiffness() const { return options_.instrument_stiffness; }
   /// Index of the procedure step under way, −1 without steps.
   int current_step() const { return current_; }
   /// The camera's coverage of the instrument body's surface, or null without a surface.
@@ -81,6 +84,9 @@ class SessionRunner {
   struct Monitor;
   void sample();
   void look();
+  /// world_.step(), with any failure turned into a core::SimulationError naming body, node,
+  /// step and likely cause (simulation_check.h).
+  void step_world();
   void advance_steps();
   void open_step(int index);
   void close_step(int index);
@@ -100,6 +106,7 @@ class SessionRunner {
   double time_limit_ = 0.0, force_warning_ = 0.0, perforation_depth_ = 0.0;
   long long total_steps_ = 0, sample_every_ = 1, look_every_ = 1;
   bool finished_ = false, over_force_ = false;
+  bool instrument_moved_ = false;  ///< the input has changed the instrument's state
   double last_view_distance_ = -1.0;
   double started_wall_clock_ = 0.0;
   /// The cavity's distension fluid, when the scenario enables it and an instrument drives the

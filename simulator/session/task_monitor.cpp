@@ -118,6 +118,10 @@ bool TaskMonitor::holds(const TaskContext& c) {
 
 void TaskMonitor::update(const TaskContext& c) {
   if (done()) return;
+  if (!c.instrument_moved && spec_.kind != "settle") {
+    holding_since_ = -1.0;
+    return;
+  }
   if (!holds(c)) {
     holding_since_ = -1.0;
     return;

@@ -31,6 +31,10 @@ struct TaskContext {
   const SurfaceCoverage* camera = nullptr;  ///< for lines of sight, or null
   /// Fraction of the surface region seen, for inspect-surface tasks (set per task by the session).
   double fraction_seen = 0.0;
+  /// The trainee has moved the instrument since the session began. Tasks of the instrument
+  /// (reach, centre-target, inspect-surface, withdraw, touch) complete only then: a condition
+  /// that holds at the starting pose alone is not the trainee's work.
+  bool instrument_moved = true;
 };
 
 /// What became of a task. Status "completed", "not-completed" or "unavailable".

@@ -9,6 +9,7 @@
 #include <vtkRenderer.h>
 #include <vtkWindowToImageFilter.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "simulator/view/endoscope_lens_pass.h"
@@ -100,27 +101,35 @@ void EndoscopicView::set_instrument(const sim::InstrumentState& state, double op
 }
 
 void EndoscopicView::update(const sim::SessionRunner& runner) {
-  surfaces_->update(runner.world());
-  const double angle = runner.instrument().optics_angle;
-  set_instrument(runner.instrument_state(), angle);
-  const sim::SessionReport& report = runner.report();
+  sim::capture_snapshot(runner, captured_);
+  update(captured_);
+}
+
+void EndoscopicView::update(const sim::SessionSnapshot& snapshot) {
+  surfaces_->update(snapshot.bodies);
+  set_instrument(snapshot.instrument, snapshot.optics_angle);
   OverlayState state;
-  state.elapsed = runner.world().time();
-  state.time_limit = runner.time_limit();
-  state.force = runner.instrument_force();
-  state.force_warning = report.force_warning;
-  state.tip = runner.instrument_state().tip;
-  state.optics_angle = angle;
-  state.inflow = runner.instrument_state().inflow;
-  state.outflow = runner.instrument_state().outflow;
-  if (runner.coverage() != nullptr) state.surface_seen = runner.coverage()->fraction_seen();
-  const int step = runner.current_step();
-  if (step >= 0 && static_cast<std::size_t>(step) < report.procedure_steps.size()) {
-    const sim::StepResult& result = report.procedure_steps[static_cast<std::size_t>(step)];
-    state.step = result.name.empty() ? result.id : result.name;
-  }
-  if (runner.finished()) state.ended = report.end_reason;
+  state.elapsed = snapshot.time;
+  state.time_limit = snapshot.time_limit;
+  state.force = snapshot.instrument_force;
+  state.force_warning = snapshot.force_warning;
+  state.tip = snapshot.instrument.tip;
+  state.optics_angle = snapshot.optics_angle;
+  state.inflow = snapshot.instrument.inflow;
+  state.outflow = snapshot.instrument.outflow;
+  state.surface_seen = snapshot.surface_seen;
+  state.step = snapshot.step;
+  state.ended = snapshot.ended;
   overlay_->update(state);
+}
+
+void EndoscopicView::set_render_scale(double scale) {
+  options_.render_scale = std::clamp(scale, 0.25, 1.0);
+  if (lens_) lens_->render_scale = options_.render_scale;
+}
+
+double EndoscopicView::render_scale() const {
+  return options_.render_scale;
 }
 
 void EndoscopicView::render() {

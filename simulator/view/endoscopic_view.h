@@ -14,6 +14,7 @@
 #include <string>
 
 #include "core/scenario/scenario.h"
+#include "simulator/runtime/session_snapshot.h"
 #include "simulator/session/instrument_state.h"
 #include "simulator/session/session_runner.h"
 #include "simulator/view/session_overlay.h"
@@ -36,6 +37,11 @@ struct ViewOptions {
   /// the lens pass (EndoscopeLensPass::render_scale; 0.5 keeps a window at ≥ 30 fps on a
   /// software renderer, 1 for snapshots and videos).
   double render_scale = 1.0;
+  /// In a window: lower render_scale (down to 0.25) while the view draws fewer than
+  /// `target_fps` frames a second, and raise it back (up to the render_scale given) when there
+  /// is room — dynamic resolution, so a loaded machine keeps the frame rate, not the detail.
+  bool adaptive_resolution = false;
+  double target_fps = 30.0;
   std::string bindings;          ///< key bindings shown in the window ("" : none)
   double light_intensity = 1.4;  ///< head light
   double light_falloff = 0.03;   ///< m at which the head light has dimmed to half
@@ -55,8 +61,10 @@ class EndoscopicView {
   /// Puts the camera at the tip looking along the optics (view_direction(state, angle)), with
   /// `state.up` as the image's up; focus and field of view from the scenario's instrument.
   void set_instrument(const sim::InstrumentState& state, double optics_angle);
-  /// Surfaces, camera and overlay from a running session.
+  /// Surfaces, camera and overlay from a running session (captures a snapshot of it).
   void update(const sim::SessionRunner& runner);
+  /// The same from a snapshot, as the render thread of a threaded session sees it.
+  void update(const sim::SessionSnapshot& snapshot);
   void render();
 
   /// RGB pixels of the current frame (renders first).
@@ -65,6 +73,11 @@ class EndoscopicView {
   void write_png(const std::filesystem::path& path);
 
   vtkRenderWindow* window() const { return window_; }
+  const ViewOptions& options() const { return options_; }
+  /// The lens pass's scene resolution as a fraction of the view (0.25–1); no effect without
+  /// lens effects.
+  void set_render_scale(double scale);
+  double render_scale() const;
   vtkRenderer* scene_renderer() const { return scene_; }
   SessionOverlay& overlay() { return *overlay_; }
   const SceneSurfaces& surfaces() const { return *surfaces_; }
@@ -78,6 +91,7 @@ class EndoscopicView {
   vtkSmartPointer<EndoscopeLensPass> lens_;
   std::unique_ptr<SceneSurfaces> surfaces_;
   std::unique_ptr<SessionOverlay> overlay_;
+  sim::SessionSnapshot captured_;  ///< reused by update(runner)
 };
 
 }  // namespace viscera::view

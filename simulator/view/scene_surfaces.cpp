@@ -229,6 +229,18 @@ void SceneSurfaces::update(const sim::World& world) {
   }
 }
 
+void SceneSurfaces::update(const std::vector<sim::BodyPositions>& bodies) {
+  for (Surface& surface : surfaces_) {
+    if (surface.body.empty()) continue;
+    for (const sim::BodyPositions& body : bodies) {
+      if (body.name != surface.body) continue;
+      set_geometry(surface.mesh,
+                   core::embedded_positions(*surface.embedding, surface.tets, body.positions),
+                   surface.triangles, surface.weld);
+    }
+  }
+}
+
 vtkImageData* SceneSurfaces::texture_of(const std::string& id) const {
   for (const Surface& surface : surfaces_)
     if (surface.id == id) return surface.texture;

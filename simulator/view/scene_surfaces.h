@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/scenario/scenario.h"
+#include "simulator/runtime/session_snapshot.h"
 #include "simulator/world/world.h"
 
 class vtkActor;
@@ -41,6 +42,8 @@ class SceneSurfaces {
   void add_to(vtkRenderer* renderer) const;
   /// Moves the surfaces to the bodies' current positions (objects without a body stay put).
   void update(const sim::World& world);
+  /// The same from a session snapshot's bodies (the render thread of a threaded session).
+  void update(const std::vector<sim::BodyPositions>& bodies);
 
   /// The albedo texture of object `id`, or null.
   vtkImageData* texture_of(const std::string& id) const;

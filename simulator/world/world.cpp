@@ -10,7 +10,6 @@
 #include "simulator/dynamics/backward_euler.h"
 #include "simulator/dynamics/explicit_verlet.h"
 #include "simulator/dynamics/gravity_term.h"
-#include "simulator/dynamics/simulation_error.h"
 #include "simulator/dynamics/teschner_terms.h"
 
 namespace viscera::sim {
@@ -141,8 +140,13 @@ void World::check_state() const {
     for (int i = 0; i < range.count; ++i) {
       const auto g = static_cast<std::size_t>(range.first + i);
       if (!state_.positions[g].allFinite() || !state_.velocities[g].allFinite())
-        throw simulation_error("non-finite position or velocity", m->name,
-                               "node " + std::to_string(i), steps_, t);
+        throw core::SimulationError(
+            "the simulation became unstable at step " + std::to_string(steps_) +
+                " (t = " + std::to_string(t) + " s): node " + std::to_string(i) + " of body \"" +
+                m->name + "\" has a non-finite position or velocity",
+            m->name, i, steps_,
+            "non-finite state (a non-finite input, or a time step too large for the material's "
+            "stiffness and damping)");
     }
   }
   for (const auto& term : terms_) {
@@ -151,9 +155,12 @@ void World::check_state() const {
     const int tet = volume->first_inverted(state_.positions);
     if (tet >= 0) {
       const auto& nodes = volume->model().mesh.tets[static_cast<std::size_t>(tet)];
-      throw simulation_error("tet " + std::to_string(tet) + " turned inside out (the tool or a " +
-                                 "contact pressed harder than the material can hold)",
-                             volume->model().name, "node " + std::to_string(nodes[0]), steps_, t);
+      throw core::SimulationError(
+          "the simulation became unstable at step " + std::to_string(steps_) +
+              " (t = " + std::to_string(t) + " s): tet " + std::to_string(tet) + " of body \"" +
+              volume->model().name + "\" turned inside out",
+          volume->model().name, nodes[0], steps_,
+          "inverted tets (the tool or a contact pressed harder than the material can hold)");
     }
   }
 }

@@ -51,8 +51,8 @@ class World {
   World(const World&) = delete;
   World& operator=(const World&) = delete;
 
-  /// Advances by one physics step (time_step() seconds). Throws the error of
-  /// simulation_error() (body, node, step) for a non-finite state or an inverted tet.
+  /// Advances by one physics step (time_step() seconds). Throws core::SimulationError (body,
+  /// node, step, likely cause) for a non-finite state or an inverted tet.
   void step();
 
   double time() const { return static_cast<double>(steps_) * time_step_; }

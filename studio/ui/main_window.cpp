@@ -46,17 +46,7 @@ MainWindow::MainWindow(MainWindowOptions options, QWidget* parent)
   connect(tree_, &SceneTree::object_selected, this, &MainWindow::select_object);
   connect(tree_, &SceneTree::visibility_changed, view_, &SceneView::set_object_visible);
   connect(materials_, &MaterialPanel::edit_failed, this, &MainWindow::show_error);
-  connect(&launcher_, &TrainingLauncher::finished, this, [this](const TrainingResult& result) {
-    QString text = summarize_report(result.report);
-    if (result.report.is_null()) {
-      text += tr("\nThe simulator ended with code %1.\n%2")
-                  .arg(result.exit_code)
-                  .arg(result.output.trimmed());
-    }
-    report_->setPlainText(text);
-    statusBar()->showMessage(tr("Training session ended"), 5'000);
-    emit training_finished(result);
-  });
+  connect(&launcher_, &TrainingLauncher::finished, this, &MainWindow::show_training_result);
 
   resize(1280, 800);
   on_document_changed(ChangeKind::Everything, {});
@@ -270,16 +260,23 @@ bool MainWindow::create_primitive(const PrimitiveRequest& request) {
   return true;
 }
 
-bool MainWindow::launch_training(double duration_s) {
+bool MainWindow::export_session_package() {
   try {
     const std::filesystem::path package = launcher_.prepare().toStdString();
     const DocumentContent snapshot = document_.content();
-    if (!run(tr("Exporting the session package"), [&](core::Progress& progress) {
-          write_document_content(snapshot, package, progress);
-        })) {
-      return false;
-    }
-    launcher_.start(duration_s);
+    return run(tr("Exporting the session package"), [&](core::Progress& progress) {
+      write_document_content(snapshot, package, progress);
+    });
+  } catch (const std::exception& e) {
+    show_error(QString::fromUtf8(e.what()));
+    return false;
+  }
+}
+
+bool MainWindow::launch_training(double duration_s, const QString& script) {
+  if (!export_session_package()) return false;
+  try {
+    launcher_.start(duration_s, script);
   } catch (const std::exception& e) {
     show_error(QString::fromUtf8(e.what()));
     return false;
@@ -287,6 +284,33 @@ bool MainWindow::launch_training(double duration_s) {
   report_->setPlainText(tr("Training session running…"));
   statusBar()->showMessage(tr("Training session running"));
   return true;
+}
+
+bool MainWindow::launch_interactive_training(const TrainingInput& input, double duration_s) {
+  if (!export_session_package()) return false;
+  try {
+    launcher_.start_interactive(input, duration_s);
+  } catch (const std::exception& e) {
+    show_error(QString::fromUtf8(e.what()));
+    return false;
+  }
+  report_->setPlainText(tr("Training session running in the endoscopic view…"));
+  statusBar()->showMessage(tr("Training session running in the endoscopic view"));
+  return true;
+}
+
+void MainWindow::show_training_result(const TrainingResult& result) {
+  QString text = summarize_report(result.report);
+  const QString failure = failure_sentence(result);
+  if (result.report.is_null() && !failure.isEmpty()) text = failure;
+  report_->setPlainText(text);
+  if (auto* dock = findChild<QDockWidget*>(QStringLiteral("report-dock"))) {
+    dock->show();
+    dock->raise();
+  }
+  statusBar()->showMessage(tr("Training session ended"), 5'000);
+  if (!failure.isEmpty()) show_error(failure);
+  emit training_finished(result);
 }
 
 QString MainWindow::report_text() const {

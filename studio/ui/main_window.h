@@ -92,9 +92,14 @@ class MainWindow : public QMainWindow {
   bool create_primitive(const PrimitiveRequest& request);
   /// Selects an object in the tree, the 3D view and the material panel.
   void select_object(const QString& id);
-  /// Exports to a temporary package and starts the headless simulator; its report appears in
-  /// the report dock when it ends (training_finished()).
-  bool launch_training(double duration_s = 0.0);
+  /// Exports to a temporary package and starts the headless simulator, its instrument driven by
+  /// `script` (empty: none); its report appears in the report dock when it ends
+  /// (training_finished()).
+  bool launch_training(double duration_s = 0.0, const QString& script = {});
+  /// Training ▸ Launch: exports to a temporary package and opens the simulator's interactive
+  /// endoscopic view on it, driven by `input`; the report appears in the report dock when the
+  /// session ends, a failure as one sentence in the error dialog.
+  bool launch_interactive_training(const TrainingInput& input, double duration_s = 0.0);
   QString report_text() const;
 
   /// Generates `request.count` variants of the document off the UI thread (progress, Cancel;
@@ -145,6 +150,9 @@ class MainWindow : public QMainWindow {
   void build_volume_views();
   void build_volume_menu(QMenu* view);
   bool ask_save_as();
+  /// Exports the document for the next training session; false after showing the error.
+  bool export_session_package();
+  void show_training_result(const TrainingResult& result);
   bool maybe_save();
 
   MainWindowOptions options_;

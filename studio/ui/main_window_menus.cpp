@@ -12,6 +12,7 @@
 #include "studio/ui/scene_view.h"
 #include "studio/ui/segmentation_panel.h"
 #include "studio/ui/template_dialog.h"
+#include "studio/ui/training_dialog.h"
 #include "studio/ui/variants_dialog.h"
 #include "templates/template_catalog.h"
 
@@ -107,12 +108,20 @@ void MainWindow::build_menus() {
                      [this] { segmentation_->mesh_segmentation(segmentation_->mesh_request()); });
 
   QMenu* training = menuBar()->addMenu(tr("&Training"));
-  training->addAction(tr("&Launch headless session…"), this, [this] {
+  training->addAction(tr("&Launch…"), this, [this] {
+    TrainingDialog dialog(this);
+    if (dialog.exec() == QDialog::Accepted)
+      launch_interactive_training(dialog.input(), dialog.duration());
+  });
+  training->addAction(tr("Launch &headless scripted run…"), this, [this] {
+    const QString script =
+        QFileDialog::getOpenFileName(this, tr("Script of the headless run (Cancel: no instrument)"),
+                                     QString(), tr("Scripts (*.json);;All files (*)"));
     bool ok = false;
     const double duration = QInputDialog::getDouble(
-        this, tr("Launch training"), tr("Session length in s (0: the scenario's own)"), 2.0, 0.0,
-        3600.0, 1, &ok);
-    if (ok) launch_training(duration);
+        this, tr("Launch headless run"), tr("Session length in s (0: the script's or scenario's)"),
+        0.0, 0.0, 3600.0, 1, &ok);
+    if (ok) launch_training(duration, script);
   });
   training->addAction(tr("&Stop session"), this, [this] { launcher_.stop(); });
 

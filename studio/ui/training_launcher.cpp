@@ -27,8 +27,42 @@ QString summarize_report(const nlohmann::json& r) {
   }
   if (r.contains("score") && r["score"].is_number()) {
     lines << QObject::tr("Score %1.").arg(r["score"].get<double>(), 0, 'f', 1);
+  } else if (r.contains("score")) {
+    const std::string reason = r.value("score_reason", nlohmann::json()).is_string()
+                                   ? r["score_reason"].get<std::string>()
+                                   : std::string();
+    lines << QObject::tr("No score: %1.").arg(QString::fromStdString(reason));
   }
   return lines.join('\n');
+}
+
+QStringList input_arguments(const TrainingInput& input) {
+  switch (input.kind) {
+    case TrainingInput::Kind::Gamepad:
+      return {QStringLiteral("--input"), QStringLiteral("gamepad")};
+    case TrainingInput::Kind::Device:
+      return {QStringLiteral("--input"), QStringLiteral("udp:%1").arg(input.port)};
+    case TrainingInput::Kind::Script:
+      return {QStringLiteral("--script"), input.script};
+    case TrainingInput::Kind::Keyboard:
+      break;
+  }
+  return {QStringLiteral("--input"), QStringLiteral("keyboard")};
+}
+
+QString failure_sentence(const TrainingResult& result) {
+  if (result.exit_code == 0 && !result.crashed) return {};
+  if (result.crashed && result.exit_code != static_cast<int>(core::ExitCode::SimulationFailed))
+    return QObject::tr("The simulator stopped before the session ended.");
+  const QString prefix = QStringLiteral("viscera-sim: ");
+  QString line;
+  for (const QString& candidate : result.output.split('\n')) {
+    if (candidate.startsWith(prefix)) line = candidate.mid(prefix.size()).trimmed();
+  }
+  if (line.isEmpty()) line = QObject::tr("it ended with code %1").arg(result.exit_code);
+  if (result.exit_code == static_cast<int>(core::ExitCode::SimulationFailed))
+    return QObject::tr("The simulation failed: %1").arg(line);
+  return QObject::tr("The session could not run: %1").arg(line);
 }
 
 TrainingLauncher::TrainingLauncher(QObject* parent)
@@ -62,16 +96,31 @@ bool TrainingLauncher::running() const {
   return process_ != nullptr;
 }
 
-void TrainingLauncher::start(double duration_s) {
+void TrainingLauncher::start(double duration_s, const QString& script) {
+  QStringList arguments = {QStringLiteral("--headless")};
+  if (!script.isEmpty()) {
+    if (!QFileInfo(script).isFile())
+      throw core::InputError("the script does not exist", {script.toStdString(), "", ""});
+    arguments << QStringLiteral("--script") << script;
+  }
+  launch(arguments, duration_s);
+}
+
+void TrainingLauncher::start_interactive(const TrainingInput& input, double duration_s) {
+  if (input.kind == TrainingInput::Kind::Script && !QFileInfo(input.script).isFile())
+    throw core::InputError("the script does not exist", {input.script.toStdString(), "", ""});
+  launch(input_arguments(input), duration_s);
+}
+
+void TrainingLauncher::launch(QStringList arguments, double duration_s) {
   if (running()) throw core::InputError("a training session is already running");
   if (folder_ == nullptr) throw core::UsageError("prepare() the session package first");
   if (!QFileInfo(simulator_).isExecutable()) {
     throw core::InputError("the simulator is missing", {simulator_.toStdString(), "", ""});
   }
-  QStringList arguments = {QStringLiteral("run"),
-                           folder_->filePath(QStringLiteral("session.vscene")),
-                           QStringLiteral("--headless"), QStringLiteral("--report"),
-                           folder_->filePath(QStringLiteral("report"))};
+  arguments.prepend(folder_->filePath(QStringLiteral("session.vscene")));
+  arguments.prepend(QStringLiteral("run"));
+  arguments << QStringLiteral("--report") << folder_->filePath(QStringLiteral("report"));
   if (duration_s > 0.0) arguments << QStringLiteral("--duration") << QString::number(duration_s);
   process_ = new QProcess(this);
   process_->setProcessChannelMode(QProcess::MergedChannels);

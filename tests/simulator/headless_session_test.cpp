@@ -90,7 +90,10 @@ TEST(HeadlessSession, report_json_has_the_documented_fields) {
   options.package = "block.vscene";
   const auto json = report_to_json(run_headless(standing_block(), options));
   EXPECT_EQ(json["format"], "viscera-session-report");
-  EXPECT_EQ(json["version"], 2);
+  EXPECT_EQ(json["version"], 3);
+  EXPECT_TRUE(json["score"].is_null());  // no instrument: nothing to assess
+  EXPECT_TRUE(json["score_reason"].is_string());
+  EXPECT_TRUE(json["realtime"].is_null());  // headless
   EXPECT_EQ(json["steps"], 100);
   EXPECT_NEAR(json["simulated_time"].get<double>(), 0.1, 1e-12);
   EXPECT_EQ(json["package"], "block.vscene");

@@ -58,5 +58,25 @@ TEST(SessionReportSchema, catches_a_missing_metric_and_an_unknown_end) {
   EXPECT_NE(text.find("/end_reason"), std::string::npos) << text;
 }
 
+TEST(SessionReportSchema, an_unassessed_session_has_a_null_score_with_its_reason) {
+  const auto schema = report_schema();
+  const core::Scenario scenario = viscera::testing::cavity_scenario();
+  HeadlessRunOptions options;
+  options.duration = 0.1;  // no instrument: nothing of a trainee's work to assess
+  const nlohmann::json report = report_to_json(run_headless(scenario, options));
+  EXPECT_TRUE(report["score"].is_null());
+  ASSERT_TRUE(report["score_reason"].is_string());
+  EXPECT_FALSE(report["score_reason"].get<std::string>().empty());
+  const auto violations = schema.validate(report);
+  EXPECT_TRUE(violations.empty()) << describe(violations);
+  // A null score without its reason is caught.
+  nlohmann::json silent = report;
+  silent["score_reason"] = 3;
+  silent["score"] = -1;
+  const std::string text = describe(schema.validate(silent));
+  EXPECT_NE(text.find("/score_reason"), std::string::npos) << text;
+  EXPECT_NE(text.find("/score"), std::string::npos) << text;
+}
+
 }  // namespace
 }  // namespace viscera::sim

@@ -54,7 +54,8 @@ TEST(SessionRunner, expert_and_novice_separate_on_every_metric_in_the_expected_d
   EXPECT_GE(a.surface_seen(), 0.35);
   EXPECT_GT(a.view_quality(), b.view_quality());
   EXPECT_GT(a.tasks_completed(), b.tasks_completed());
-  EXPECT_GT(e.score, n.score);
+  ASSERT_TRUE(e.score.has_value() && n.score.has_value());
+  EXPECT_GT(*e.score, *n.score);
   EXPECT_EQ(task(n, "centre-left").status, "not-completed");
   // The novice pushed past the warning level: logged as events; the expert never did.
   int warnings = 0;

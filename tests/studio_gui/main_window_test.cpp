@@ -27,6 +27,7 @@
 
 #include "core/error.h"
 #include "core/image/image_volume_io.h"
+#include "core/json_eigen.h"
 #include "core/materials/shipped_materials.h"
 #include "core/package/scenario_package.h"
 #include "studio/ui/background_task.h"
@@ -35,6 +36,7 @@
 #include "studio/ui/scene_view.h"
 #include "studio/ui/slice_views.h"
 #include "studio/ui/template_dialog.h"
+#include "studio/ui/training_dialog.h"
 #include "templates/template_catalog.h"
 #include "tests/studio_gui/image_checks.h"
 #include "textures/scenario_baking.h"
@@ -265,6 +267,80 @@ class MainWindowTest : public QObject {
     QVERIFY(result.report.value("steps", 0) > 0);
     QVERIFY(window.report_text().startsWith("Simulated 0.1"));
     QVERIFY(window.report_text().contains("Ended:"));
+  }
+
+  void launchesAnInteractiveSessionDrivenByAScriptAndShowsItsReport() {
+    studio::MainWindow window(options());
+    QVERIFY(window.open_package(ball_package_));
+    QStringList errors;
+    window.set_error_handler([&](const QString& message) { errors << message; });
+    // A script that moves the tool 5 mm sideways 10 cm above the ball, looking at it.
+    core::Vec3 centre = core::Vec3::Zero();
+    const auto& nodes = window.document().scenario().objects.front().body.nodes;
+    for (const auto& node : nodes)
+      centre += node / static_cast<double>(nodes.size());
+    const core::Vec3 above = centre + core::Vec3(0.0, 0.0, 0.1);
+    const nlohmann::json script = {
+        {"format", "viscera-script"},
+        {"version", 2},
+        {"waypoints",
+         {{{"t", 0.0}, {"tip", above}, {"look_at", centre}},
+          {{"t", 0.4}, {"tip", above + core::Vec3(0.005, 0.0, 0.0)}, {"look_at", centre}}}}};
+    const fs::path script_path = dir() / "interactive-script.json";
+    std::ofstream(script_path) << script.dump();
+
+    // The dialog's choice becomes the simulator's input.
+    studio::TrainingDialog dialog(&window);
+    studio::TrainingInput input;
+    input.kind = studio::TrainingInput::Kind::Script;
+    input.script = QString::fromStdString(script_path.string());
+    dialog.set_input(input);
+    dialog.set_duration(0.5);
+    QCOMPARE(static_cast<int>(dialog.input().kind), static_cast<int>(input.kind));
+    QCOMPARE(studio::input_arguments(dialog.input()),
+             QStringList({QStringLiteral("--script"), input.script}));
+    studio::TrainingInput device;
+    device.kind = studio::TrainingInput::Kind::Device;
+    device.port = 5123;
+    QCOMPARE(studio::input_arguments(device),
+             QStringList({QStringLiteral("--input"), QStringLiteral("udp:5123")}));
+
+    QSignalSpy finished(&window, &studio::MainWindow::training_finished);
+    QVERIFY(window.launch_interactive_training(dialog.input(), dialog.duration()));
+    QVERIFY(window.launcher().running());
+    QVERIFY(finished.wait(300'000));
+    const auto result = finished.takeFirst().at(0).value<studio::TrainingResult>();
+    QVERIFY2(result.exit_code == 0, qPrintable(result.output));
+    QCOMPARE(result.report.value("format", ""), std::string("viscera-session-report"));
+    // The session ran in the simulator's window, threaded in real time, not headless.
+    QVERIFY(result.report["realtime"].is_object());
+    QVERIFY(result.report["realtime"].value("frames", 0) > 0);
+    QVERIFY(result.report.value("simulated_time", 0.0) >= 0.499);
+    QVERIFY(window.report_text().startsWith("Simulated 0.5"));
+    QVERIFY(window.report_text().contains("Ended:"));
+    QVERIFY2(errors.isEmpty(), qPrintable(errors.join("; ")));
+
+    // A script that is not there is refused in one sentence, nothing launched.
+    input.script = QString::fromStdString((dir() / "missing.json").string());
+    QVERIFY(!window.launch_interactive_training(input, 0.5));
+    QCOMPARE(errors.size(), 1);
+    QVERIFY(errors.front().contains("missing.json"));
+    QVERIFY(!window.launcher().running());
+  }
+
+  void showsASimulationFailureInOneSentence() {
+    studio::TrainingResult result;
+    result.exit_code = static_cast<int>(core::ExitCode::SimulationFailed);
+    result.output = QStringLiteral(
+        "the haptic device drives the instrument\n"
+        "viscera-sim: body \"ball\", node 12, step 40: the simulation became unstable at step 40 "
+        "(t = 0.04 s): node 12 of body \"ball\" has a non-finite position; likely cause: "
+        "non-finite state\n");
+    const QString sentence = studio::failure_sentence(result);
+    QVERIFY(sentence.startsWith("The simulation failed: body \"ball\", node 12, step 40"));
+    QVERIFY(!sentence.contains('\n'));
+    result.exit_code = 0;
+    QVERIFY(studio::failure_sentence(result).isEmpty());
   }
 
   void screenshotShowsTheTexturedScene() {

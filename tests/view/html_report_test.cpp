@@ -11,6 +11,7 @@
 
 #include "core/error.h"
 #include "simulator/session/headless_session.h"
+#include "simulator/session/manual_control.h"
 #include "simulator/view/scene_surfaces.h"
 #include "tests/simulator/session_fixtures.h"
 #include "tests/support/test_paths.h"
@@ -83,6 +84,27 @@ TEST(HtmlReport, novice_page_against_the_expert_references_existing_plots) {
   const std::string collisions = html.substr(row, html.find("</tr>", row) - row);
   EXPECT_NE(collisions.find("class=\"worse\""), std::string::npos) << collisions;
   EXPECT_NE(html.find("Reference score"), std::string::npos);
+}
+
+TEST(HtmlReport, an_unassessed_session_says_so_instead_of_a_score) {
+  // The expert's patient with the instrument resting where the session starts: never moved.
+  const core::Scenario scenario = viscera::testing::cavity_scenario();
+  const sim::RecordedInput resting({{0, sim::starting_pose(scenario, 30.0)}});
+  sim::HeadlessRunOptions options;
+  options.duration = 0.3;
+  options.instrument = &resting;
+  options.instrument_body = "uterus";
+  const nlohmann::json report = sim::report_to_json(sim::run_headless(scenario, options));
+  ASSERT_TRUE(report["score"].is_null());
+  const auto dir = viscera::testing::scratch_dir();
+  write_html_report(report, nullptr, dir);
+  const std::string html = viscera::testing::file_bytes(dir / "report.html");
+  const std::size_t row = html.find("<tr><td>Score</td>");
+  ASSERT_NE(row, std::string::npos);
+  const std::string score = html.substr(row, html.find("</tr>", row) - row);
+  EXPECT_NE(score.find("not assessed: the instrument never moved"), std::string::npos) << score;
+  EXPECT_EQ(score.find("/ 100"), std::string::npos) << score;
+  EXPECT_TRUE(std::filesystem::exists(dir / "scores.png"));
 }
 
 TEST(HtmlReport, refuses_what_is_not_a_session_report) {

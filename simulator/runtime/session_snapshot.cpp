@@ -1,0 +1,33 @@
+#include "simulator/runtime/session_snapshot.h"
+
+#include "simulator/session/session_runner.h"
+
+namespace viscera::sim {
+
+void capture_snapshot(const SessionRunner& runner, SessionSnapshot& out) {
+  const World& world = runner.world();
+  out.steps = world.steps();
+  out.time = world.time();
+  out.bodies.resize(world.bodies().size());
+  for (std::size_t b = 0; b < world.bodies().size(); ++b) {
+    const BodyView& body = world.bodies()[b];
+    if (out.bodies[b].name != body.name()) out.bodies[b].name = body.name();
+    out.bodies[b].positions.assign(body.positions().begin(), body.positions().end());
+  }
+  out.instrument = runner.instrument_state();
+  out.optics_angle = runner.instrument().optics_angle;
+  out.instrument_force = runner.instrument_force();
+  out.time_limit = runner.time_limit();
+  const SessionReport& report = runner.report();
+  out.force_warning = report.force_warning;
+  out.surface_seen = runner.coverage() != nullptr ? runner.coverage()->fraction_seen() : 0.0;
+  out.step.clear();
+  const int step = runner.current_step();
+  if (step >= 0 && static_cast<std::size_t>(step) < report.procedure_steps.size()) {
+    const StepResult& result = report.procedure_steps[static_cast<std::size_t>(step)];
+    out.step = result.name.empty() ? result.id : result.name;
+  }
+  out.ended = runner.finished() ? report.end_reason : std::string();
+}
+
+}  // namespace viscera::sim

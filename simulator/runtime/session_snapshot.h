@@ -1,0 +1,42 @@
+#pragma once
+/// What the view shows of a running session at one physics step (issue 16 item 3): the
+/// positions of every body, the instrument and the overlay's numbers. The physics thread fills
+/// one and hands it to the render thread through a TripleBuffer, so the view never reads the
+/// SessionRunner while it steps.
+
+#include <string>
+#include <vector>
+
+#include "core/math_types.h"
+#include "simulator/session/instrument_state.h"
+
+namespace viscera::sim {
+
+class SessionRunner;
+
+/// One body's nodes, by the body's (scenario object's) name.
+struct BodyPositions {
+  std::string name;
+  std::vector<core::Vec3> positions;  ///< m
+};
+
+/// A session as the view draws it.
+struct SessionSnapshot {
+  long long steps = 0;
+  double time = 0.0;  ///< s simulated
+  std::vector<BodyPositions> bodies;
+  InstrumentState instrument;
+  double optics_angle = 0.0;                         ///< °
+  core::Vec3 instrument_force = core::Vec3::Zero();  ///< N on the instrument
+  double time_limit = 0.0;                           ///< s
+  double force_warning = 0.0;                        ///< N, 0: none
+  double surface_seen = 0.0;                         ///< fraction 0…1
+  std::string step;                                  ///< procedure step under way, or ""
+  std::string ended;                                 ///< end reason once finished, or ""
+};
+
+/// Fills `out` from `runner` at its current step, reusing out's storage (no allocation once
+/// the sizes are known).
+void capture_snapshot(const SessionRunner& runner, SessionSnapshot& out);
+
+}  // namespace viscera::sim

@@ -76,10 +76,11 @@ class TeschnerVolumeTerm : public BodyTerm {
   void add_stiffness(std::span<const Vec3> x, double scale, bool project,
                      BlockSparseMatrix&) const override;
   const VolumeTerms& terms() const { return terms_; }
-  /// First tet turned inside out at x — signed volume below −`fraction` × V0 — as a body-local
-  /// tet index, or −1. A tet pressed flat and slightly past zero is pushed back by its signed
-  /// volume term; one inverted by half its rest volume is beyond what the energy recovers.
-  int first_inverted(std::span<const Vec3> x, double fraction = 0.5) const;
+  /// First tet turned inside out at x — signed volume below −`fraction` × V0, a mirror image
+  /// of itself — as a body-local tet index, or −1. A tet pressed flat and past zero under a
+  /// point load (the tool's proxy pulls one triangle) is pushed back by its signed-volume term
+  /// and is not an error; an everted one is beyond what the energy recovers.
+  int first_inverted(std::span<const Vec3> x, double fraction = 1.0) const;
 
  protected:
   void build(const SimulationState& state, int first) override;

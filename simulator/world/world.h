@@ -52,8 +52,15 @@ class World {
   World& operator=(const World&) = delete;
 
   /// Advances by one physics step (time_step() seconds). Throws the error of
-  /// simulation_error() (body, node, step) for a non-finite state or an inverted tet.
+  /// simulation_error() (body, node, step) for a non-finite state, and — when
+  /// set_inversion_errors(true) — for a tet turned inside out (TeschnerVolumeTerm::first_inverted).
   void step();
+  /// Whether an everted tet is an error. Off by default: a tool pushed through a wall everts
+  /// the tets under its proxy before the session calls it a perforation, and the signed-volume
+  /// energy pushes them back when the tool leaves; checks and tests of material limits turn it on.
+  void set_inversion_errors(bool on) { inversion_errors_ = on; }
+  /// Tets now turned inside out (signed volume below −V0), for reports.
+  int everted_tets() const;
 
   double time() const { return static_cast<double>(steps_) * time_step_; }
   long long steps() const { return steps_; }
@@ -151,6 +158,7 @@ class World {
   double sleep_threshold_ = 0.0;
   int calm_steps_ = 0;
   bool asleep_ = false;
+  bool inversion_errors_ = false;
 };
 
 }  // namespace viscera::sim

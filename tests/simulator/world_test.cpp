@@ -78,5 +78,29 @@ TEST(World, non_finite_positions_raise_an_error_naming_the_body_and_step) {
   }
 }
 
+TEST(World, an_everted_tet_is_an_error_naming_body_node_and_step_when_asked) {
+  World world(small_block());
+  world.set_inversion_errors(true);
+  world.step();
+  // Mirror the top layer through the base and hold it there: the tets up there stay everted.
+  auto& state = world.state();
+  for (std::size_t n = 0; n < state.node_count(); ++n)
+    if (state.positions[n].z() > 0.02) {
+      state.positions[n].z() = -state.positions[n].z();
+      state.inverse_masses[n] = 0.0;
+    }
+  EXPECT_GT(world.everted_tets(), 0);
+  try {
+    world.step();
+    FAIL() << "an everted tet went unnoticed";
+  } catch (const core::Error& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("block"), std::string::npos) << message;
+    EXPECT_NE(message.find("inside out"), std::string::npos) << message;
+    EXPECT_NE(message.find("step 2"), std::string::npos) << message;
+    EXPECT_NE(message.find("node "), std::string::npos) << message;
+  }
+}
+
 }  // namespace
 }  // namespace viscera::sim

@@ -1,6 +1,7 @@
 #include "templates/generator/simulation_check.h"
 
 #include <cmath>
+#include <span>
 #include <sstream>
 
 #include "core/error.h"
@@ -11,7 +12,7 @@
 namespace viscera::templates {
 namespace {
 
-double diagonal(const std::vector<core::Vec3>& points) {
+double diagonal(std::span<const core::Vec3> points) {
   core::BoundingBox box;
   for (const auto& p : points)
     box.add(p);
@@ -34,7 +35,7 @@ Motion motion_of(std::span<const core::Vec3> x, std::span<const core::Vec3> velo
       return m;
     }
     m.displacement = std::max(m.displacement, (x[n] - rest[n]).norm());
-    m.speed = std::max(m.speed, velocity[n].norm());
+    if (!velocity.empty()) m.speed = std::max(m.speed, velocity[n].norm());
   }
   return m;
 }
@@ -139,7 +140,7 @@ ValidationCheck simulate_one_second(const core::Scenario& scenario,
       for (long long s = 1; s <= steps && check.passed; ++s) {
         tissue.step(h);
         if (s % 10 != 0 && s != steps) continue;
-        judge(spec.object, motion_of(tissue.positions(), {}, object->body.nodes, h), limit);
+        judge(spec.object, motion_of(tissue.positions(), {}, object->body.nodes), limit);
         for (const auto& v : tissue.velocities())
           worst_speed = std::max(worst_speed, v.norm());
         if (worst_speed > bounds.max_speed) {

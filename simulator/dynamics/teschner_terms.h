@@ -40,7 +40,11 @@ class TeschnerDistanceTerm : public BodyTerm {
   void shift(int delta) override;
 
  private:
+  /// Slots (i,i), (j,j), (i,j), (j,i) of every edge in matrices of pattern `slots_for_`.
+  const std::vector<std::array<int, 4>>& slots(const BlockSparseMatrix& m) const;
   DistanceTerms terms_;
+  mutable std::vector<std::array<int, 4>> slots_;
+  mutable std::uint64_t slots_for_ = 0;
 };
 
 /// Area terms on the surface triangles (eq. 5); none when every material's area stiffness is 0.
@@ -87,7 +91,11 @@ class TeschnerVolumeTerm : public BodyTerm {
   void shift(int delta) override;
 
  private:
+  /// Slots (a, b) of every tet, a·4 + b, in matrices of pattern `slots_for_`.
+  const std::vector<std::array<int, 16>>& slots(const BlockSparseMatrix& m) const;
   VolumeTerms terms_;
+  mutable std::vector<std::array<int, 16>> slots_;
+  mutable std::uint64_t slots_for_ = 0;
 };
 
 }  // namespace viscera::sim

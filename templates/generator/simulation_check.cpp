@@ -85,6 +85,8 @@ ValidationCheck simulate_one_second(const core::Scenario& scenario,
   };
   try {
     sim::World world(scenario);
+    // A check of the patient's limits: a tet turned inside out is a failure, not a load case.
+    world.set_inversion_errors(true);
     core::Rng rng(1);
     for (auto& body : world.bodies()) {
       const auto x = body.positions();

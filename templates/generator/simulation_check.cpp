@@ -105,8 +105,7 @@ ValidationCheck simulate_one_second(const core::Scenario& scenario,
       if (s % 10 != 0 && s != steps) continue;
       for (std::size_t b = 0; b < world.bodies().size() && check.passed; ++b) {
         const auto& body = world.bodies()[b];
-        judge(body.name(),
-              motion_of(body.positions(), body.velocities(), body.rest_positions()),
+        judge(body.name(), motion_of(body.positions(), body.velocities(), body.rest_positions()),
               limits[b]);
       }
     }

@@ -23,7 +23,8 @@ Deformed deformed_block(std::uint64_t seed) {
   material.area_stiffness = 3.0;
   material.volume_stiffness = 7000.0;
   material.distance_damping = 0.0;
-  Deformed d{viscera::testing::TeschnerBody(viscera::testing::tet_block(2, 2, 2, 0.01), material), {}};
+  Deformed d{viscera::testing::TeschnerBody(viscera::testing::tet_block(2, 2, 2, 0.01), material),
+             {}};
   d.x = d.body.rest_positions();
   viscera::testing::jiggle(d.x, 0.002, seed);
   return d;
@@ -50,13 +51,15 @@ TEST(TeschnerEnergies, forces_are_the_negative_energy_gradient) {
     const auto f = forces_at(d.body, d.x, zero);
     const double h = 1e-7;
     double largest = 0.0;
-    for (const auto& force : f) largest = std::max(largest, force.norm());
+    for (const auto& force : f)
+      largest = std::max(largest, force.norm());
     for (std::size_t i = 0; i < d.x.size(); ++i) {
       for (int c = 0; c < 3; ++c) {
         auto plus = d.x, minus = d.x;
         plus[i][c] += h;
         minus[i][c] -= h;
-        const double gradient = (total_energy(d.body, plus) - total_energy(d.body, minus)) / (2 * h);
+        const double gradient =
+            (total_energy(d.body, plus) - total_energy(d.body, minus)) / (2 * h);
         ASSERT_NEAR(f[i][c], -gradient, 1e-5 * largest) << "node " << i << " axis " << c;
       }
     }
@@ -66,9 +69,12 @@ TEST(TeschnerEnergies, forces_are_the_negative_energy_gradient) {
 TEST(TeschnerEnergies, each_energy_returns_what_its_energy_function_computes) {
   Deformed d = deformed_block(4);
   std::vector<Vec3> f(d.x.size(), Vec3::Zero()), v(d.x.size(), Vec3::Zero());
-  EXPECT_DOUBLE_EQ(add_distance_forces(d.x, v, d.body.distance_terms(), f), distance_energy(d.x, d.body.distance_terms()));
-  EXPECT_DOUBLE_EQ(add_area_forces(d.x, d.body.area_terms(), f), area_energy(d.x, d.body.area_terms()));
-  EXPECT_DOUBLE_EQ(add_volume_forces(d.x, d.body.volume_terms(), f), volume_energy(d.x, d.body.volume_terms()));
+  EXPECT_DOUBLE_EQ(add_distance_forces(d.x, v, d.body.distance_terms(), f),
+                   distance_energy(d.x, d.body.distance_terms()));
+  EXPECT_DOUBLE_EQ(add_area_forces(d.x, d.body.area_terms(), f),
+                   area_energy(d.x, d.body.area_terms()));
+  EXPECT_DOUBLE_EQ(add_volume_forces(d.x, d.body.volume_terms(), f),
+                   volume_energy(d.x, d.body.volume_terms()));
   EXPECT_GT(distance_energy(d.x, d.body.distance_terms()), 0.0);
   EXPECT_EQ(distance_energy(d.body.rest_positions(), d.body.distance_terms()), 0.0);
 }
@@ -81,7 +87,8 @@ TEST(TeschnerEnergies, internal_forces_conserve_linear_and_angular_momentum) {
   std::vector<Vec3> f(d.x.size(), Vec3::Zero());
   add_distance_forces(d.x, v, d.body.distance_terms(), f);  // damping is zero in the material…
   DistanceTerms damped = d.body.distance_terms();
-  for (auto& k : damped.damping) k = 0.3;  // …so add damped terms explicitly
+  for (auto& k : damped.damping)
+    k = 0.3;  // …so add damped terms explicitly
   add_distance_forces(d.x, v, damped, f);
   add_area_forces(d.x, d.body.area_terms(), f);
   add_volume_forces(d.x, d.body.volume_terms(), f);
@@ -134,8 +141,11 @@ TEST(TeschnerEnergies, forces_are_the_negative_energy_gradient_on_inverted_tets)
         auto plus = x, minus = x;
         plus[i][c] += h;
         minus[i][c] -= h;
-        const double gradient = (volume_energy(plus, body.volume_terms()) - volume_energy(minus, body.volume_terms())) / (2 * h);
-        ASSERT_NEAR(f[i][c], -gradient, 1e-6 * std::max(1.0, std::abs(gradient))) << "depth " << depth << " node " << i;
+        const double gradient =
+            (volume_energy(plus, body.volume_terms()) - volume_energy(minus, body.volume_terms())) /
+            (2 * h);
+        ASSERT_NEAR(f[i][c], -gradient, 1e-6 * std::max(1.0, std::abs(gradient)))
+            << "depth " << depth << " node " << i;
       }
     }
   }
@@ -162,8 +172,10 @@ TEST(TeschnerEnergies, inverted_tet_is_pushed_back_to_its_orientation) {
     const auto terms = body.terms();
     verlet.topology_changed(body.state, terms);
     const double h = 0.1 * verlet.stable_step();
-    for (int s = 0; s < 20000; ++s) verlet.step(body.state, terms, {s * h, h, s + 1});
-    EXPECT_NEAR(signed_volume(), rest_volume, 0.02 * rest_volume) << "apex started at z = " << depth;
+    for (int s = 0; s < 20000; ++s)
+      verlet.step(body.state, terms, {s * h, h, s + 1});
+    EXPECT_NEAR(signed_volume(), rest_volume, 0.02 * rest_volume)
+        << "apex started at z = " << depth;
   }
 }
 

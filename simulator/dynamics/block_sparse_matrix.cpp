@@ -1,10 +1,16 @@
 #include "simulator/dynamics/block_sparse_matrix.h"
 
 #include <algorithm>
+#include <atomic>
 #include <stdexcept>
 #include <string>
 
 namespace viscera::sim {
+
+BlockPattern::BlockPattern(std::size_t nodes) : nodes_(nodes) {
+  static std::atomic<std::uint64_t> next{1};
+  id_ = next.fetch_add(1);
+}
 
 void BlockPattern::add(int i, int j) {
   if (i == j) return;  // diagonals are always present
@@ -19,6 +25,7 @@ void BlockPattern::add_clique(std::span<const int> nodes) {
 
 void BlockSparseMatrix::set_pattern(const BlockPattern& pattern) {
   const std::size_t n = pattern.node_count();
+  pattern_id_ = pattern.id();
   std::vector<std::pair<int, int>> pairs = pattern.pairs();
   std::sort(pairs.begin(), pairs.end());
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());

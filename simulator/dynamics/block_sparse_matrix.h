@@ -4,6 +4,7 @@
 /// the force terms, the values are refilled every step; terms may keep slot indices until the
 /// next topology change. Both (i, j) and (j, i) are stored, so a product reads one row at a time.
 
+#include <cstdint>
 #include <span>
 #include <utility>
 #include <vector>
@@ -18,7 +19,9 @@ using Mat3 = Eigen::Matrix3d;
 /// The (i, j) node pairs whose block a matrix holds; (i, i) is always present.
 class BlockPattern {
  public:
-  explicit BlockPattern(std::size_t nodes = 0) : nodes_(nodes) {}
+  /// Every pattern gets a process-wide unique id, which the matrices set from it carry.
+  explicit BlockPattern(std::size_t nodes = 0);
+  std::uint64_t id() const { return id_; }
   std::size_t node_count() const { return nodes_; }
   /// Declares blocks (i, j) and (j, i).
   void add(int i, int j);
@@ -28,6 +31,7 @@ class BlockPattern {
 
  private:
   std::size_t nodes_;
+  std::uint64_t id_;
   std::vector<std::pair<int, int>> pairs_;  ///< i < j
 };
 
@@ -38,6 +42,9 @@ class BlockSparseMatrix {
   void set_pattern(const BlockPattern& pattern);
   std::size_t node_count() const { return row_start_.empty() ? 0 : row_start_.size() - 1; }
   std::size_t block_count() const { return columns_.size(); }
+  /// Id of the pattern the matrix was set from: terms that cache slot indices refresh them
+  /// when it changes (matrices set from one pattern share their slots).
+  std::uint64_t pattern_id() const { return pattern_id_; }
   /// Slot of block (i, j); −1 when the pattern lacks it.
   int slot(int i, int j) const;
   /// Slot of the diagonal block (i, i).
@@ -58,6 +65,7 @@ class BlockSparseMatrix {
  private:
   std::vector<int> row_start_, columns_, diagonal_;
   std::vector<Mat3> blocks_;
+  std::uint64_t pattern_id_ = 0;
 };
 
 }  // namespace viscera::sim

@@ -183,7 +183,8 @@ void BodyContactTerm::declare_blocks(BlockPattern& pattern) const {
   for (const auto& [vertex, node] : declared_)
     pattern.add(vertex, node);
   // The tet's own pairs (its body's terms declare them too; a lone contact term needs them).
-  for (const Contact& c : contacts_) pattern.add_clique(std::span<const int>(c.node).subspan(1));
+  for (const Contact& c : contacts_)
+    pattern.add_clique(std::span<const int>(c.node).subspan(1));
 }
 
 void BodyContactTerm::add_stiffness(std::span<const Vec3> x, double scale, bool,

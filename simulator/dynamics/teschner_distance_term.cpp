@@ -32,6 +32,7 @@ void TeschnerDistanceTerm::build(const SimulationState& state, int first) {
     }
   }
   terms_ = {};
+  slots_for_ = 0;
   for (const auto& [e, k] : edge) {
     terms_.edges.push_back({first + e[0], first + e[1]});
     terms_.rest_length.push_back((rest[e[1]] - rest[e[0]]).norm());
@@ -43,6 +44,7 @@ void TeschnerDistanceTerm::build(const SimulationState& state, int first) {
 void TeschnerDistanceTerm::shift(int delta) {
   for (auto& e : terms_.edges)
     e = {e[0] + delta, e[1] + delta};
+  slots_for_ = 0;
 }
 
 double TeschnerDistanceTerm::energy(std::span<const Vec3> x) const {
@@ -61,6 +63,7 @@ void TeschnerDistanceTerm::declare_blocks(BlockPattern& pattern) const {
 
 void TeschnerDistanceTerm::add_stiffness(std::span<const Vec3> x, double scale, bool project,
                                          BlockSparseMatrix& m) const {
+  const auto& slot = slots(m);
   for (std::size_t e = 0; e < terms_.edges.size(); ++e) {
     const auto [i, j] = terms_.edges[e];
     const Vec3 d = x[j] - x[i];
@@ -69,13 +72,17 @@ void TeschnerDistanceTerm::add_stiffness(std::span<const Vec3> x, double scale, 
     // E = ½ k C², C = (l − D0)/D0: dE/dl = k C / D0, d²E/dl² = k / D0².
     const double d0 = terms_.rest_length[e], k = terms_.stiffness[e];
     const double c = (length - d0) / d0;
-    add_pair_block(m, i, j, radial_hessian(d / length, length, k * c / d0, k / (d0 * d0), project),
-                   scale);
+    const Mat3 h = scale * radial_hessian(d / length, length, k * c / d0, k / (d0 * d0), project);
+    m.block(slot[e][0]) += h;
+    m.block(slot[e][1]) += h;
+    m.block(slot[e][2]) -= h;
+    m.block(slot[e][3]) -= h;
   }
 }
 
 void TeschnerDistanceTerm::add_damping(std::span<const Vec3> x, double scale,
                                        BlockSparseMatrix& m) const {
+  const auto& slot = slots(m);
   for (std::size_t e = 0; e < terms_.edges.size(); ++e) {
     const auto [i, j] = terms_.edges[e];
     const Vec3 d = x[j] - x[i];
@@ -84,8 +91,23 @@ void TeschnerDistanceTerm::add_damping(std::span<const Vec3> x, double scale,
     // f_j = −k_d (∇C_j · (v_j − v_i)) ∇C_j with ∇C_j = d / (|d| D0): D = k_d/D0² d̂d̂ᵀ.
     const double d0 = terms_.rest_length[e];
     const Vec3 unit = d / length;
-    add_pair_block(m, i, j, (terms_.damping[e] / (d0 * d0)) * (unit * unit.transpose()), scale);
+    const Mat3 h = (scale * terms_.damping[e] / (d0 * d0)) * (unit * unit.transpose());
+    m.block(slot[e][0]) += h;
+    m.block(slot[e][1]) += h;
+    m.block(slot[e][2]) -= h;
+    m.block(slot[e][3]) -= h;
   }
+}
+
+const std::vector<std::array<int, 4>>& TeschnerDistanceTerm::slots(
+    const BlockSparseMatrix& m) const {
+  if (slots_for_ != m.pattern_id() || slots_.size() != terms_.edges.size()) {
+    slots_.clear();
+    for (const auto& [i, j] : terms_.edges)
+      slots_.push_back({m.diagonal_slot(i), m.diagonal_slot(j), m.slot(i, j), m.slot(j, i)});
+    slots_for_ = m.pattern_id();
+  }
+  return slots_;
 }
 
 }  // namespace viscera::sim

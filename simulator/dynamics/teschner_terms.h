@@ -40,7 +40,11 @@ class TeschnerDistanceTerm : public BodyTerm {
   void shift(int delta) override;
 
  private:
+  /// Slots (i,i), (j,j), (i,j), (j,i) of every edge in matrices of pattern `slots_for_`.
+  const std::vector<std::array<int, 4>>& slots(const BlockSparseMatrix& m) const;
   DistanceTerms terms_;
+  mutable std::vector<std::array<int, 4>> slots_;
+  mutable std::uint64_t slots_for_ = 0;
 };
 
 /// Area terms on the surface triangles (eq. 5); none when every material's area stiffness is 0.
@@ -76,17 +80,22 @@ class TeschnerVolumeTerm : public BodyTerm {
   void add_stiffness(std::span<const Vec3> x, double scale, bool project,
                      BlockSparseMatrix&) const override;
   const VolumeTerms& terms() const { return terms_; }
-  /// First tet turned inside out at x — signed volume below −`fraction` × V0 — as a body-local
-  /// tet index, or −1. A tet pressed flat and slightly past zero is pushed back by its signed
-  /// volume term; one inverted by half its rest volume is beyond what the energy recovers.
-  int first_inverted(std::span<const Vec3> x, double fraction = 0.5) const;
+  /// First tet turned inside out at x — signed volume below −`fraction` × V0, a mirror image
+  /// of itself — as a body-local tet index, or −1. A tet pressed flat and past zero under a
+  /// point load (the tool's proxy pulls one triangle) is pushed back by its signed-volume term
+  /// and is not an error; an everted one is beyond what the energy recovers.
+  int first_inverted(std::span<const Vec3> x, double fraction = 1.0) const;
 
  protected:
   void build(const SimulationState& state, int first) override;
   void shift(int delta) override;
 
  private:
+  /// Slots (a, b) of every tet, a·4 + b, in matrices of pattern `slots_for_`.
+  const std::vector<std::array<int, 16>>& slots(const BlockSparseMatrix& m) const;
   VolumeTerms terms_;
+  mutable std::vector<std::array<int, 16>> slots_;
+  mutable std::uint64_t slots_for_ = 0;
 };
 
 }  // namespace viscera::sim

@@ -21,6 +21,7 @@ void TeschnerVolumeTerm::build(const SimulationState& state, int first) {
   const BodyModel& m = model();
   const std::span<const Vec3> rest = state.range(state.rest_positions, m.body);
   terms_ = {};
+  slots_for_ = 0;
   for (std::size_t t = 0; t < m.mesh.tets.size(); ++t) {
     const auto& tet = m.mesh.tets[t];
     const double v0 = core::signed_volume(rest[tet[0]], rest[tet[1]], rest[tet[2]], rest[tet[3]]);
@@ -34,6 +35,7 @@ void TeschnerVolumeTerm::shift(int delta) {
   for (auto& t : terms_.tets)
     for (int& n : t)
       n += delta;
+  slots_for_ = 0;
 }
 
 double TeschnerVolumeTerm::energy(std::span<const Vec3> x) const {
@@ -52,6 +54,11 @@ void TeschnerVolumeTerm::declare_blocks(BlockPattern& pattern) const {
 
 void TeschnerVolumeTerm::add_stiffness(std::span<const Vec3> x, double scale, bool project,
                                        BlockSparseMatrix& m) const {
+  const auto& slot = slots(m);
+  const auto add = [&](std::size_t t, int a, int b, const Mat3& value) {
+    m.block(slot[t][static_cast<std::size_t>(4 * a + b)]) += value;
+    if (a != b) m.block(slot[t][static_cast<std::size_t>(4 * b + a)]) += value.transpose();
+  };
   for (std::size_t t = 0; t < terms_.tets.size(); ++t) {
     const auto& n = terms_.tets[t];
     const Vec3 e1 = x[n[1]] - x[n[0]], e2 = x[n[2]] - x[n[0]], e3 = x[n[3]] - x[n[0]];
@@ -70,7 +77,7 @@ void TeschnerVolumeTerm::add_stiffness(std::span<const Vec3> x, double scale, bo
     const double normal = scale * k * (1.0 + barrier.second) * inverse6 * inverse6;
     for (int a = 0; a < 4; ++a)
       for (int b = a; b < 4; ++b)
-        m.add_symmetric(n[a], n[b], normal * (g[a] * g[b].transpose()));
+        add(t, a, b, normal * (g[a] * g[b].transpose()));
     if (project) continue;
     // Curvature part k C ∇²C: ∂g_a/∂p_b among nodes 1..3 are skew matrices of the edges
     // (∂(a×b)/∂a = −[b]×), rows and columns of node 0 by translation invariance.
@@ -90,7 +97,7 @@ void TeschnerVolumeTerm::add_stiffness(std::span<const Vec3> x, double scale, bo
     const double curvature = scale * k * (c + barrier.first) * inverse6;
     for (int a = 0; a < 4; ++a)
       for (int b = a; b < 4; ++b)
-        m.add_symmetric(n[a], n[b], curvature * h[a][b]);
+        add(t, a, b, curvature * h[a][b]);
   }
 }
 
@@ -101,6 +108,20 @@ int TeschnerVolumeTerm::first_inverted(std::span<const Vec3> x, double fraction)
       return static_cast<int>(t);
   }
   return -1;
+}
+
+const std::vector<std::array<int, 16>>& TeschnerVolumeTerm::slots(
+    const BlockSparseMatrix& m) const {
+  if (slots_for_ != m.pattern_id() || slots_.size() != terms_.tets.size()) {
+    slots_.assign(terms_.tets.size(), {});
+    for (std::size_t t = 0; t < terms_.tets.size(); ++t)
+      for (int a = 0; a < 4; ++a)
+        for (int b = 0; b < 4; ++b)
+          slots_[t][static_cast<std::size_t>(4 * a + b)] =
+              m.slot(terms_.tets[t][a], terms_.tets[t][b]);
+    slots_for_ = m.pattern_id();
+  }
+  return slots_;
 }
 
 }  // namespace viscera::sim

@@ -133,6 +133,21 @@ void World::step() {
   if (sleep_threshold_ > 0.0 && !drives_bodies(terms_)) update_sleep();
 }
 
+int World::everted_tets() const {
+  int count = 0;
+  for (const auto& term : terms_) {
+    const auto* volume = dynamic_cast<const TeschnerVolumeTerm*>(term.get());
+    if (volume == nullptr) continue;
+    for (std::size_t t = 0; t < volume->terms().tets.size(); ++t) {
+      const auto& n = volume->terms().tets[t];
+      const auto& x = state_.positions;
+      if (core::signed_volume(x[n[0]], x[n[1]], x[n[2]], x[n[3]]) < -volume->terms().rest_volume[t])
+        ++count;
+    }
+  }
+  return count;
+}
+
 void World::check_state() const {
   const double t = time();
   for (const auto& m : models_) {
@@ -149,6 +164,7 @@ void World::check_state() const {
             "stiffness and damping)");
     }
   }
+  if (!inversion_errors_) return;
   for (const auto& term : terms_) {
     const auto* volume = dynamic_cast<const TeschnerVolumeTerm*>(term.get());
     if (volume == nullptr) continue;

@@ -52,8 +52,17 @@ class World {
   World& operator=(const World&) = delete;
 
   /// Advances by one physics step (time_step() seconds). Throws core::SimulationError (body,
-  /// node, step, likely cause) for a non-finite state or an inverted tet.
+  /// node, step, likely cause) for a non-finite state, and — unless set_inversion_errors(false)
+  /// — for a tet turned inside out (TeschnerVolumeTerm::first_inverted).
   void step();
+  /// Whether an everted tet is an error. On by default: the volume terms' collapse barrier
+  /// (teschner_energies.h) keeps every tet of the implicit integrator above zero volume under
+  /// any finite load, so a tet that still turns inside out is a real failure (a tangled input,
+  /// or a time step the explicit integrator cannot hold). Off only for reports that count
+  /// everted tets (everted_tets()) instead of stopping at the first.
+  void set_inversion_errors(bool on) { inversion_errors_ = on; }
+  /// Tets now turned inside out (signed volume below −V0), for reports.
+  int everted_tets() const;
 
   double time() const { return static_cast<double>(steps_) * time_step_; }
   long long steps() const { return steps_; }
@@ -151,6 +160,7 @@ class World {
   double sleep_threshold_ = 0.0;
   int calm_steps_ = 0;
   bool asleep_ = false;
+  bool inversion_errors_ = true;
 };
 
 }  // namespace viscera::sim

@@ -34,7 +34,7 @@ Motion motion_of(std::span<const core::Vec3> x, std::span<const core::Vec3> velo
       return m;
     }
     m.displacement = std::max(m.displacement, (x[n] - rest[n]).norm());
-    m.speed = std::max(m.speed, velocity[n].norm());
+    if (!velocity.empty()) m.speed = std::max(m.speed, velocity[n].norm());
   }
   return m;
 }
@@ -67,6 +67,8 @@ ValidationCheck simulate_one_second(const core::Scenario& scenario,
   };
   try {
     sim::World world(scenario);
+    // A check of the patient's limits: a tet turned inside out is a failure, not a load case.
+    world.set_inversion_errors(true);
     core::Rng rng(1);
     for (auto& body : world.bodies()) {
       const auto x = body.positions();

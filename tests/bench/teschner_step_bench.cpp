@@ -47,8 +47,10 @@ void add_counters(benchmark::State& state, const viscera::sim::World& world) {
 void BM_ImplicitStep(benchmark::State& state) {
   viscera::sim::World world(block_scenario(static_cast<int>(state.range(0))),
                             viscera::sim::IntegratorKind::BackwardEuler);
-  for (int s = 0; s < 5; ++s) world.step();
-  for (auto _ : state) world.step();
+  for (int s = 0; s < 5; ++s)
+    world.step();
+  for (auto _ : state)
+    world.step();
   add_counters(state, world);
 }
 BENCHMARK(BM_ImplicitStep)->Arg(kMedium)->Arg(kLarge)->Unit(benchmark::kMillisecond);
@@ -59,9 +61,11 @@ void BM_TeschnerSimulatedSecond(benchmark::State& state) {
                                         : viscera::sim::IntegratorKind::ExplicitVerlet;
   for (auto _ : state) {
     state.PauseTiming();
-    auto world = std::make_unique<viscera::sim::World>(block_scenario(static_cast<int>(state.range(0))), kind);
+    auto world = std::make_unique<viscera::sim::World>(
+        block_scenario(static_cast<int>(state.range(0))), kind);
     state.ResumeTiming();
-    for (int s = 0; s < 1000; ++s) world->step();
+    for (int s = 0; s < 1000; ++s)
+      world->step();
     state.PauseTiming();
     add_counters(state, *world);
     world.reset();
@@ -103,20 +107,25 @@ void BM_BulletSoftBodySimulatedSecond(benchmark::State& state) {
     std::vector<std::array<int, 2>> edges;
     for (const auto& t : mesh.tets)
       for (int a = 0; a < 4; ++a)
-        for (int b = a + 1; b < 4; ++b) edges.push_back({std::min(t[a], t[b]), std::max(t[a], t[b])});
+        for (int b = a + 1; b < 4; ++b)
+          edges.push_back({std::min(t[a], t[b]), std::max(t[a], t[b])});
     std::sort(edges.begin(), edges.end());
     edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-    for (const auto& [a, b] : edges) body->appendLink(a, b);
-    for (const auto& t : mesh.tets) body->appendTetra(t[0], t[1], t[2], t[3]);
+    for (const auto& [a, b] : edges)
+      body->appendLink(a, b);
+    for (const auto& t : mesh.tets)
+      body->appendTetra(t[0], t[1], t[2], t[3]);
     body->m_cfg.piterations = static_cast<int>(state.range(1));
     world.addSoftBody(body);
     state.ResumeTiming();
-    for (int s = 0; s < 1000; ++s) world.stepSimulation(1e-3, 0, 1e-3);
+    for (int s = 0; s < 1000; ++s)
+      world.stepSimulation(1e-3, 0, 1e-3);
     state.PauseTiming();
     sag = 0.0;
     for (int i = 0; i < body->m_nodes.size(); ++i) {
       const btVector3& x = body->m_nodes[i].m_x;
-      sag = std::max(sag, (Vec3(x.x(), x.y(), x.z()) - mesh.nodes[static_cast<std::size_t>(i)]).norm());
+      sag = std::max(sag,
+                     (Vec3(x.x(), x.y(), x.z()) - mesh.nodes[static_cast<std::size_t>(i)]).norm());
     }
     state.counters["nodes"] = static_cast<double>(body->m_nodes.size());
     world.removeSoftBody(body);

@@ -49,7 +49,8 @@ std::pair<double, double> settle(const core::Scenario& scenario, IntegratorKind 
   World world(scenario, kind);
   const double start = world.bodies()[0].centre_of_mass().z();
   const int steps = static_cast<int>(seconds / world.time_step() + 0.5);
-  for (int s = 0; s < steps; ++s) world.step();
+  for (int s = 0; s < steps; ++s)
+    world.step();
   return {start - world.bodies()[0].centre_of_mass().z(), world.energies().kinetic};
 }
 

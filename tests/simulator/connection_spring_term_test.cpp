@@ -47,7 +47,8 @@ core::Scenario two_blocks(bool connected, double stiffness = 200.0) {
 
 const ConnectionSpringTerm& connections(const World& world) {
   for (const auto& term : world.terms())
-    if (const auto* springs = dynamic_cast<const ConnectionSpringTerm*>(term.get())) return *springs;
+    if (const auto* springs = dynamic_cast<const ConnectionSpringTerm*>(term.get()))
+      return *springs;
   throw std::logic_error("the world has no connection springs");
 }
 
@@ -70,7 +71,8 @@ TEST(ConnectionSprings, join_the_facing_nodes_with_their_rest_distance) {
     EXPECT_EQ(spring.body_b, 1);
     EXPECT_NEAR(spring.rest_length, 0.01, 1e-12);
   }
-  for (const auto& spring : connections(world).springs()) EXPECT_DOUBLE_EQ(spring.stiffness, 200.0);
+  for (const auto& spring : connections(world).springs())
+    EXPECT_DOUBLE_EQ(spring.stiffness, 200.0);
 }
 
 TEST(ConnectionSprings, forces_cancel_and_are_the_gradient_of_the_energy) {

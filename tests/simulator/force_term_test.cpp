@@ -31,7 +31,8 @@ Scene two_bodies(const core::Material& material) {
   Scene s;
   core::TetMesh a = viscera::testing::tet_block(2, 2, 2, 0.01);
   core::TetMesh b = viscera::testing::tet_block(2, 2, 1, 0.004);
-  for (auto& n : b.nodes) n += Vec3(0.001, 0.001, 0.025);
+  for (auto& n : b.nodes)
+    n += Vec3(0.001, 0.001, 0.025);
   for (const core::TetMesh* mesh : {&a, &b}) {
     auto model = viscera::testing::one_material_model(*mesh, material);
     model->body = s.state.add_body("b" + std::to_string(s.models.size()), mesh->nodes,
@@ -59,7 +60,8 @@ void check_term(const ForceTerm& term, const SimulationState& state, std::vector
   const double e = term.add_forces(x, zero, f);
   EXPECT_NEAR(e, term.energy(x), 1e-12 * std::max(1.0, std::abs(e))) << term.name();
   double largest = 0.0;
-  for (const auto& v : f) largest = std::max(largest, v.norm());
+  for (const auto& v : f)
+    largest = std::max(largest, v.norm());
   ASSERT_GT(largest, 0.0) << term.name() << ": the check needs a loaded state";
   BlockPattern pattern(n);
   term.declare_blocks(pattern);
@@ -78,7 +80,8 @@ void check_term(const ForceTerm& term, const SimulationState& state, std::vector
       plus[i][c] += eps;
       minus[i][c] -= eps;
       const double gradient = (term.energy(plus) - term.energy(minus)) / (2 * eps);
-      ASSERT_NEAR(f[i][c], -gradient, 1e-5 * largest) << term.name() << " node " << i << " axis " << c;
+      ASSERT_NEAR(f[i][c], -gradient, 1e-5 * largest)
+          << term.name() << " node " << i << " axis " << c;
       // Column (i, c) of the Hessian: −(f(x + ε e) − f(x − ε e)) / 2ε.
       std::vector<Vec3> fp(n, Vec3::Zero()), fm(n, Vec3::Zero());
       term.add_forces(plus, zero, fp);
@@ -96,7 +99,8 @@ void check_term(const ForceTerm& term, const SimulationState& state, std::vector
   Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(3 * static_cast<long>(n), 3 * static_cast<long>(n));
   for (std::size_t i = 0; i < n; ++i)
     for (const int j : projected.row_columns(static_cast<int>(i)))
-      dense.block<3, 3>(3 * static_cast<long>(i), 3 * j) = projected.block(projected.slot(static_cast<int>(i), j));
+      dense.block<3, 3>(3 * static_cast<long>(i), 3 * j) =
+          projected.block(projected.slot(static_cast<int>(i), j));
   EXPECT_LT((dense - dense.transpose()).norm(), 1e-9 * std::max(1.0, dense.norm())) << term.name();
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(dense);
   EXPECT_GT(solver.eigenvalues().minCoeff(), -1e-9 * std::max(1.0, dense.norm())) << term.name();
@@ -147,7 +151,8 @@ TEST(ForceTerms, body_contact_is_consistent_and_conserves_momentum) {
   BodyContactTerm contact(s.models, 500.0, s.state);
   // Sink the small block 3 mm into the large one: its bottom layer collides.
   const int first = s.state.body(1).first;
-  for (int i = 0; i < s.state.body(1).count; ++i) s.state.positions[static_cast<std::size_t>(first + i)].z() -= 0.008;
+  for (int i = 0; i < s.state.body(1).count; ++i)
+    s.state.positions[static_cast<std::size_t>(first + i)].z() -= 0.008;
   contact.prepare(s.state, {});
   EXPECT_EQ(contact.statistics().colliding_points, 9);
   EXPECT_NEAR(contact.statistics().max_penetration, 0.003, 1e-9);
@@ -170,7 +175,8 @@ TEST(ForceTerms, overlaps_of_the_rest_configuration_are_not_contacts) {
   Scene s;
   core::TetMesh a = viscera::testing::tet_block(2, 2, 2, 0.01);
   core::TetMesh b = viscera::testing::tet_block(2, 2, 1, 0.004);
-  for (auto& n : b.nodes) n += Vec3(0.001, 0.001, 0.017);  // its base sunk 3 mm into a
+  for (auto& n : b.nodes)
+    n += Vec3(0.001, 0.001, 0.017);  // its base sunk 3 mm into a
   for (const core::TetMesh* mesh : {&a, &b}) {
     auto model = viscera::testing::one_material_model(*mesh, m);
     model->body = s.state.add_body("b", mesh->nodes, core::lumped_node_masses(*mesh, 1000.0), {});

@@ -5,8 +5,8 @@
 #include <span>
 
 #include "core/mesh/tet_mesh.h"
-#include "core/scenario/material.h"
 #include "core/random.h"
+#include "core/scenario/material.h"
 #include "simulator/dynamics/body_model.h"
 #include "simulator/dynamics/force_term.h"
 #include "simulator/dynamics/simulation_state.h"

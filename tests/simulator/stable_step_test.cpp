@@ -59,7 +59,8 @@ TEST(StableStep, power_iteration_matches_a_dense_eigensolve_of_the_body_forces) 
       std::vector<Vec3> x = state.rest_positions;
       x[static_cast<std::size_t>(node)][c % 3] += sign * eps;
       std::vector<Vec3> f(x.size(), Vec3::Zero());
-      for (ForceTerm* t : terms) t->add_forces(x, zero, f);
+      for (ForceTerm* t : terms)
+        t->add_forces(x, zero, f);
       (sign > 0 ? plus : minus) = f;
     }
     for (int r = 0; r < dofs; ++r) {
@@ -74,10 +75,12 @@ TEST(StableStep, power_iteration_matches_a_dense_eigensolve_of_the_body_forces) 
 
   // The terms' projected Hessians at rest (exact there: every constraint is zero).
   BlockPattern pattern(state.node_count());
-  for (ForceTerm* t : terms) t->declare_blocks(pattern);
+  for (ForceTerm* t : terms)
+    t->declare_blocks(pattern);
   BlockSparseMatrix stiffness;
   stiffness.set_pattern(pattern);
-  for (ForceTerm* t : terms) t->add_stiffness(state.rest_positions, 1.0, true, stiffness);
+  for (ForceTerm* t : terms)
+    t->add_stiffness(state.rest_positions, 1.0, true, stiffness);
   const double power = largest_eigenvalue(stiffness, state.inverse_masses, 5000, 1e-9);
   EXPECT_NEAR(power, dense, 1e-3 * dense);
   // The default iteration count already lands within the explicit integrator's safety margin,

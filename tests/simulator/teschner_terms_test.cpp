@@ -19,11 +19,14 @@ class ConstantPull : public ForceTerm {
   std::string name() const override { return "pull"; }
   double energy(std::span<const Vec3> x) const override {
     double e = 0.0;
-    for (const int n : nodes_) e -= force_.dot(x[n] - rest_[static_cast<std::size_t>(n)]);
+    for (const int n : nodes_)
+      e -= force_.dot(x[n] - rest_[static_cast<std::size_t>(n)]);
     return e;
   }
-  double add_forces(std::span<const Vec3> x, std::span<const Vec3>, std::span<Vec3> f) const override {
-    for (const int n : nodes_) f[n] += force_;
+  double add_forces(std::span<const Vec3> x, std::span<const Vec3>,
+                    std::span<Vec3> f) const override {
+    for (const int n : nodes_)
+      f[n] += force_;
     return energy(x);
   }
   void declare_blocks(BlockPattern&) const override {}
@@ -54,7 +57,8 @@ TEST(TeschnerTerms, a_two_layer_bar_in_tension_strains_as_its_two_materials_pred
     bar.body.fixed[n] = bar.body.nodes[n].x() < 1e-9 ? 1 : 0;
   for (const auto& t : bar.body.tets) {
     double x = 0.0;
-    for (const int n : t) x += bar.body.nodes[static_cast<std::size_t>(n)].x() / 4.0;
+    for (const int n : t)
+      x += bar.body.nodes[static_cast<std::size_t>(n)].x() / 4.0;
     bar.body.tet_labels.push_back(x < 0.04 ? 1 : 2);
   }
   bar.layer_materials = {{1, "soft"}, {2, "stiff"}};
@@ -65,8 +69,10 @@ TEST(TeschnerTerms, a_two_layer_bar_in_tension_strains_as_its_two_materials_pred
   std::vector<int> end;
   for (std::size_t n = 0; n < bar.body.nodes.size(); ++n)
     if (bar.body.nodes[n].x() > 0.08 - 1e-9) end.push_back(static_cast<int>(n));
-  world.add_term(std::make_unique<ConstantPull>(end, Vec3(0.05, 0.0, 0.0), world.state().rest_positions));
-  for (int s = 0; s < 3000; ++s) world.step();
+  world.add_term(
+      std::make_unique<ConstantPull>(end, Vec3(0.05, 0.0, 0.0), world.state().rest_positions));
+  for (int s = 0; s < 3000; ++s)
+    world.step();
   ASSERT_LT(world.energies().kinetic, 1e-6);  // settled (the pull stores about 1 mJ)
   // Mean x displacement of the cross-sections at 1, 3, 5 and 7 cm: strain within each layer,
   // away from the clamp, the interface and the loaded end.

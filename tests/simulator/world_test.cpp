@@ -78,5 +78,44 @@ TEST(World, non_finite_positions_raise_an_error_naming_the_body_and_step) {
   }
 }
 
+/// Mirrors the top layer of the block through its base and holds it there: the tets up there
+/// stay everted.
+void evert_top_layer(World& world) {
+  auto& state = world.state();
+  for (std::size_t n = 0; n < state.node_count(); ++n)
+    if (state.positions[n].z() > 0.02) {
+      state.positions[n].z() = -state.positions[n].z();
+      state.inverse_masses[n] = 0.0;
+    }
+}
+
+TEST(World, an_everted_tet_is_an_error_by_default_naming_body_node_and_step) {
+  World world(small_block());
+  world.step();
+  evert_top_layer(world);
+  EXPECT_GT(world.everted_tets(), 0);
+  try {
+    world.step();
+    FAIL() << "an everted tet went unnoticed";
+  } catch (const core::Error& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("block"), std::string::npos) << message;
+    EXPECT_NE(message.find("inside out"), std::string::npos) << message;
+    EXPECT_NE(message.find("step 2"), std::string::npos) << message;
+    EXPECT_NE(message.find("node "), std::string::npos) << message;
+  }
+}
+
+TEST(World, everted_tets_are_only_counted_when_inversion_errors_are_off) {
+  World world(small_block());
+  world.set_inversion_errors(false);
+  world.step();
+  evert_top_layer(world);
+  const int everted = world.everted_tets();
+  EXPECT_GT(everted, 0);
+  EXPECT_NO_THROW(world.step());
+  EXPECT_GT(world.everted_tets(), 0);
+}
+
 }  // namespace
 }  // namespace viscera::sim

@@ -50,13 +50,15 @@ BodyTopology split_tet(const BodyView& body, int t) {
   }
   topology.rest_mesh.fixed.assign(topology.rest_mesh.nodes.size(), 0);
   for (std::size_t n = 0; n < topology.rest_mesh.nodes.size(); ++n)
-    topology.rest_mesh.fixed[n] = body.inverse_masses().size() > n && body.inverse_masses()[n] == 0.0;
+    topology.rest_mesh.fixed[n] =
+        body.inverse_masses().size() > n && body.inverse_masses()[n] == 0.0;
   return topology;
 }
 
 double total_mass(const BodyView& body) {
   double m = 0.0;
-  for (const double v : body.masses()) m += v;
+  for (const double v : body.masses())
+    m += v;
   return m;
 }
 
@@ -76,7 +78,8 @@ TEST(WorldTopology, a_split_tet_keeps_mass_and_rest_and_the_body_still_sags_alik
     world.step();
     reference.step();
   }
-  const double drop = world.bodies()[0].rest_centre_of_mass().z() - world.bodies()[0].centre_of_mass().z();
+  const double drop =
+      world.bodies()[0].rest_centre_of_mass().z() - world.bodies()[0].centre_of_mass().z();
   const double reference_drop =
       reference.bodies()[0].rest_centre_of_mass().z() - reference.bodies()[0].centre_of_mass().z();
   ASSERT_GT(reference_drop, 1e-6);
@@ -89,11 +92,13 @@ TEST(WorldTopology, a_split_while_deformed_keeps_every_cache_consistent_with_the
   // Two bodies with contact and an instrument: after the split every term sees the new ranges.
   core::Scenario scenario = hanging_block();
   core::SceneObject other = viscera::testing::held_block("other", 2, 2, 1, 0.01);
-  for (auto& n : other.body.nodes) n.x() += 0.05;
+  for (auto& n : other.body.nodes)
+    n.x() += 0.05;
   scenario.objects.push_back(other);
   World world(scenario);
   world.attach_instrument(1, 300.0, Vec3(0.06, 0.01, 0.03));
-  for (int s = 0; s < 50; ++s) world.step();
+  for (int s = 0; s < 50; ++s)
+    world.step();
   world.topology_changed(0, split_tet(world.bodies()[0], 3));
   EXPECT_EQ(world.bodies()[1].first_node(), static_cast<int>(world.bodies()[0].node_count()));
   // Press the second body with the tool: the proxy's surface follows the moved range.
@@ -104,7 +109,8 @@ TEST(WorldTopology, a_split_while_deformed_keeps_every_cache_consistent_with_the
   EXPECT_TRUE(world.instrument_in_contact());
   EXPECT_EQ(world.instrument_touched_body(), 1);
   EXPECT_GT(world.bodies()[1].max_displacement(), 1e-4);
-  for (const auto& p : world.state().positions) ASSERT_TRUE(p.allFinite());
+  for (const auto& p : world.state().positions)
+    ASSERT_TRUE(p.allFinite());
 }
 
 }  // namespace

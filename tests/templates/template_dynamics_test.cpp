@@ -24,7 +24,8 @@ TEST(TemplateDynamics, every_template_steps_implicitly_at_its_step_and_never_gai
     auto& state = world.state();
     for (std::size_t n = 0; n < state.node_count(); ++n)
       if (state.inverse_masses[n] > 0.0)
-        state.positions[n] += 2e-4 * Vec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
+        state.positions[n] +=
+            2e-4 * Vec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
     double previous = world.energies().total();
     for (int s = 0; s < 100; ++s) {
       world.step();
@@ -37,9 +38,8 @@ TEST(TemplateDynamics, every_template_steps_implicitly_at_its_step_and_never_gai
 
 /// The hysteroscopy template with one polyp and nothing else in the cavity.
 core::Scenario one_polyp() {
-  return build_from_template("hysteroscopy",
-                             {{"polyps", "1"}, {"submucosal_myomas", "0"}, {"polyp_length", "0.01"}},
-                             4);
+  return build_from_template(
+      "hysteroscopy", {{"polyps", "1"}, {"submucosal_myomas", "0"}, {"polyp_length", "0.01"}}, 4);
 }
 
 int polyp_index(const sim::World& world, const core::Scenario& scenario) {
@@ -91,7 +91,8 @@ TEST(TemplateDynamics, a_polyp_follows_its_wall_when_the_wall_is_moved) {
   // driven (inverse mass 0) like motility would drive them.
   auto& state = world.state();
   const auto range = state.body(wall);
-  for (int i = 0; i < range.count; ++i) state.inverse_masses[static_cast<std::size_t>(range.first + i)] = 0.0;
+  for (int i = 0; i < range.count; ++i)
+    state.inverse_masses[static_cast<std::size_t>(range.first + i)] = 0.0;
   const Vec3 shift(0.002, 0.0, 0.0);
   const Vec3 start = world.bodies()[static_cast<std::size_t>(polyp)].centre_of_mass();
   for (int s = 1; s <= 400; ++s) {

@@ -4,6 +4,11 @@
 #   ./dev.sh test    install missing Debian packages, build, run the whole test suite (ctest)
 #   ./dev.sh build   install missing Debian packages and build
 #   ./dev.sh bench   build and run the Google Benchmark suite (JSON under build/bench/)
+#   ./dev.sh test --sanitize   the suite built with AddressSanitizer + UndefinedBehaviorSanitizer
+#                              in its own folder (build-sanitize/); slow, not part of CI
+#   ./dev.sh fuzz [TARGET…] [--seconds N]   libFuzzer (clang, ASan + UBSan) on every reader a user
+#                              can feed, N s per target (default 60), in build-fuzz/; findings in
+#                              build-fuzz/crashes/TARGET/ (tests/fuzz/README.md)
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
@@ -26,6 +31,7 @@ packages=(
   python3-nibabel python3-pydicom libcgal-demo  # real DICOM/NIfTI/MINC/INR test images
   assimp-testmodels gmsh-doc  # real meshes (assimp's test set, gmsh's tutorials) for the mesh import tests
   nodejs  # runs the Khronos glTF validator (npm gltf-validator) in the export tests
+  clang-format python3  # the shape checks of .ci/run (layout, module graph)
 )
 
 say() { printf '\033[1m==> %s\033[0m\n' "$*" >&2; }
@@ -58,7 +64,17 @@ configure_and_build() {
   install_missing_packages
   if [ ! -f "$build/CMakeCache.txt" ]; then
     say "configuring in $build"
-    cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release
+    if [ "${sanitize:-0}" = 1 ]; then
+      # Benchmarks off: they time code the sanitizers slow down tenfold.
+      cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+        -DVISCERA_BUILD_BENCHMARKS=OFF \
+        -DCMAKE_CXX_FLAGS="-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined" \
+        -DCMAKE_C_FLAGS="-fsanitize=address,undefined -fno-omit-frame-pointer" \
+        -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
+        -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined"
+    else
+      cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release
+    fi
   fi
   say "building"
   cmake --build "$build" -j "$jobs"
@@ -106,6 +122,73 @@ run_tests() {
   "${runner[@]}" ctest --test-dir "$build" --output-on-failure -j "$jobs" --timeout 600
 }
 
+# libFuzzer on the fuzz targets of tests/fuzz/: the project built with clang, coverage
+# instrumentation, ASan and UBSan in build-fuzz/; each target starts from its seeds and
+# regressions and keeps its growing corpus in build-fuzz/corpus/TARGET/.
+run_fuzz() {
+  local seconds=60 targets=()
+  while [ $# -gt 0 ]; do
+    case "$1" in
+      --seconds) seconds="$2"; shift 2 ;;
+      *) targets+=("$1"); shift ;;
+    esac
+  done
+  packages+=(clang-14 libclang-rt-14-dev)  # libFuzzer; only this command needs them
+  install_missing_packages
+  local fuzz_build="${VISCERA_FUZZ_BUILD_DIR:-$root/build-fuzz}"
+  if [ ! -f "$fuzz_build/CMakeCache.txt" ]; then
+    say "configuring the fuzz build in $fuzz_build"
+    CC=clang-14 CXX=clang++-14 cmake -S "$root" -B "$fuzz_build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+      -DVISCERA_LIBFUZZER=ON -DVISCERA_BUILD_BENCHMARKS=OFF -DVISCERA_WARNINGS_AS_ERRORS=OFF \
+      -DCMAKE_CXX_FLAGS="-fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer" \
+      -DCMAKE_C_FLAGS="-fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer" \
+      -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
+      -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined"
+  fi
+  say "building the fuzzer"
+  cmake --build "$fuzz_build" -j "$jobs" --target viscera_fuzzer
+  local fuzzer="$fuzz_build/bin/viscera_fuzzer"
+  [ -x "$fuzzer" ] || fuzzer="$fuzz_build/tests/fuzz/viscera_fuzzer"
+  if [ "${#targets[@]}" -eq 0 ]; then
+    mapfile -t targets < <(VISCERA_FUZZ_TARGET=list "$fuzzer")
+  fi
+  export ASAN_OPTIONS="detect_leaks=0" UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+  local summary="$fuzz_build/fuzz-summary.txt" failed=0
+  : > "$summary"
+  for target in "${targets[@]}"; do
+    local corpus="$fuzz_build/corpus/$target" crashes="$fuzz_build/crashes/$target"
+    mkdir -p "$corpus" "$crashes"
+    # Seeds: tests/fuzz/seeds/TARGET/, the lines of seeds.txt, tests/fuzz/regressions/TARGET/.
+    for folder in "$root/tests/fuzz/seeds/$target" "$root/tests/fuzz/regressions/$target"; do
+      [ -d "$folder" ] && cp -n "$folder"/* "$corpus"/ 2>/dev/null || true
+    done
+    while read -r name path; do
+      [ "$name" = "$target" ] || continue
+      case "$path" in /*) ;; *) path="$root/$path" ;; esac
+      cp -n "$path" "$corpus"/ 2>/dev/null || true
+    done < <(grep -v '^#' "$root/tests/fuzz/seeds.txt")
+    say "fuzzing $target for $seconds s"
+    local log="$fuzz_build/fuzz-$target.log"
+    if VISCERA_FUZZ_TARGET="$target" "$fuzzer" -max_total_time="$seconds" -timeout=30 \
+      -rss_limit_mb=4096 -print_final_stats=1 -artifact_prefix="$crashes/" "$corpus" > "$log" 2>&1; then
+      :
+    else
+      failed=1
+    fi
+    local runs cov
+    runs="$(grep -o 'stat::number_of_executed_units: [0-9]*' "$log" | grep -o '[0-9]*$' || echo '?')"
+    cov="$(grep -o 'cov: [0-9]*' "$log" | tail -1 | grep -o '[0-9]*$' || echo '?')"
+    printf '%-22s %6s s  %10s executions  %6s edges  %s finding(s)\n' "$target" "$seconds" \
+      "$runs" "$cov" "$(find "$crashes" -type f | wc -l)" | tee -a "$summary"
+  done
+  echo "summary: $summary"
+  if [ "$failed" = 1 ]; then
+    echo "dev.sh fuzz: findings above (logs build-fuzz/fuzz-TARGET.log); after fixing, copy each" >&2
+    echo "  finding into tests/fuzz/regressions/TARGET/ so ctest replays it" >&2
+    exit 1
+  fi
+}
+
 run_bench() {
   configure_and_build
   mkdir -p "$build/bench"
@@ -118,11 +201,20 @@ run_bench() {
 
 case "${1:-}" in
   demo) run_demo ;;
-  test) run_tests ;;
+  test)
+    if [ "${2:-}" = "--sanitize" ]; then
+      sanitize=1
+      build="${VISCERA_SANITIZE_BUILD_DIR:-$root/build-sanitize}"
+      # Leaks in VTK's and Qt's global singletons are theirs; ASan's other checks stay fatal.
+      export ASAN_OPTIONS="detect_leaks=0:abort_on_error=1"
+      export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+    fi
+    run_tests ;;
   build) configure_and_build ;;
   bench) shift; run_bench "$@" ;;
+  fuzz) shift; run_fuzz "$@" ;;
   *)
-    echo "usage: ./dev.sh demo|test|build|bench" >&2
+    echo "usage: ./dev.sh demo|test [--sanitize]|build|bench|fuzz [TARGET…] [--seconds N]" >&2
     exit 2
     ;;
 esac

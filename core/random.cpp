@@ -10,7 +10,9 @@ namespace {
 // GCC's 128-bit integer; __extension__ marks the deliberate use under -Wpedantic.
 __extension__ typedef unsigned __int128 UInt128;
 
-constexpr std::uint64_t rotl(std::uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
+constexpr std::uint64_t rotl(std::uint64_t x, int k) {
+  return (x << k) | (x >> (64 - k));
+}
 
 }  // namespace
 
@@ -23,7 +25,8 @@ std::uint64_t splitmix64(std::uint64_t& state) {
 
 Rng::Rng(std::uint64_t seed) {
   std::uint64_t s = seed;
-  for (auto& word : state_) word = splitmix64(s);
+  for (auto& word : state_)
+    word = splitmix64(s);
 }
 
 Rng Rng::for_stream(std::uint64_t seed, std::uint64_t stream) {
@@ -48,7 +51,9 @@ double Rng::uniform01() {
   return static_cast<double>(next_u64() >> 11) * 0x1.0p-53;
 }
 
-double Rng::uniform(double lo, double hi) { return lo + (hi - lo) * uniform01(); }
+double Rng::uniform(double lo, double hi) {
+  return lo + (hi - lo) * uniform01();
+}
 
 std::int64_t Rng::uniform_int(std::int64_t lo, std::int64_t hi) {
   if (hi < lo) throw UsageError("uniform_int needs lo <= hi");
@@ -97,6 +102,8 @@ double Rng::truncated_normal(double mean, double stddev, double lo, double hi) {
   return uniform(lo, hi);
 }
 
-bool Rng::bernoulli(double p) { return uniform01() < p; }
+bool Rng::bernoulli(double p) {
+  return uniform01() < p;
+}
 
 }  // namespace viscera::core

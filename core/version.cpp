@@ -8,7 +8,9 @@
 
 namespace viscera::core {
 
-std::string viscera_version() { return VISCERA_VERSION; }
+std::string viscera_version() {
+  return VISCERA_VERSION;
+}
 
 std::map<std::string, std::string> tool_versions() {
   const auto join = [](int major, int minor, int patch) {
@@ -19,8 +21,8 @@ std::map<std::string, std::string> tool_versions() {
       {"gmsh", GMSH_API_VERSION},
       {"vtk", VTK_VERSION},
       {"eigen", join(EIGEN_WORLD_VERSION, EIGEN_MAJOR_VERSION, EIGEN_MINOR_VERSION)},
-      {"nlohmann-json", join(NLOHMANN_JSON_VERSION_MAJOR, NLOHMANN_JSON_VERSION_MINOR,
-                             NLOHMANN_JSON_VERSION_PATCH)},
+      {"nlohmann-json",
+       join(NLOHMANN_JSON_VERSION_MAJOR, NLOHMANN_JSON_VERSION_MINOR, NLOHMANN_JSON_VERSION_PATCH)},
   };
 }
 

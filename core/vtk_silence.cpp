@@ -8,6 +8,8 @@ ScopedVtkSilence::ScopedVtkSilence() : previous_(vtkObject::GetGlobalWarningDisp
   vtkObject::GlobalWarningDisplayOff();
 }
 
-ScopedVtkSilence::~ScopedVtkSilence() { vtkObject::SetGlobalWarningDisplay(previous_); }
+ScopedVtkSilence::~ScopedVtkSilence() {
+  vtkObject::SetGlobalWarningDisplay(previous_);
+}
 
 }  // namespace viscera::core

@@ -13,6 +13,8 @@ namespace viscera::exporters {
 void write_sofa(const core::Scenario& scenario, const std::vector<ExportObject>& objects,
                 const std::filesystem::path& main, const std::string& shown) {
   const std::string folder = main.stem().string() + "_meshes";
+  // The scene first: it refuses objects SOFA cannot simulate before any file is written.
+  const std::string scene = sofa_scene_xml(scenario, objects, folder);
   const std::filesystem::path directory = main.parent_path() / folder;
   std::filesystem::create_directories(directory);
   for (const auto& object : objects) {
@@ -20,14 +22,14 @@ void write_sofa(const core::Scenario& scenario, const std::vector<ExportObject>&
       write_legacy_vtk_tets(object.source->body, false, directory / (object.id() + "_body.vtk"),
                             shown);
     const std::string stem = object.id() + "_surface";
-    const AssimpExportScene scene = make_assimp_scene({object}, TextureStorage::SideFiles, stem);
-    export_assimp_scene(*scene.scene, "obj", directory / (stem + ".obj"), shown);
+    const AssimpExportScene assimp = make_assimp_scene({object}, TextureStorage::SideFiles, stem);
+    export_assimp_scene(*assimp.scene, "obj", directory / (stem + ".obj"), shown);
     std::set<std::string> written;
-    for (const auto& [name, bytes] : scene.side_files) {
+    for (const auto& [name, bytes] : assimp.side_files) {
       if (written.insert(name).second) write_bytes(bytes, directory / name, shown);
     }
   }
-  write_bytes(sofa_scene_xml(scenario, objects, folder), main, shown);
+  write_bytes(scene, main, shown);
 }
 
 }  // namespace viscera::exporters

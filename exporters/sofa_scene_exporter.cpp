@@ -1,23 +1,97 @@
 #include "exporters/sofa_scene_exporter.h"
 
 #include <charconv>
-#include <cmath>
+#include <map>
 
-#include "exporters/sofa_material.h"
+#include "exporters/sofa_scene_parts.h"
 
 namespace viscera::exporters {
 namespace {
 
-std::string number(double value) {
+/// Text safe inside an XML comment, which may not contain "--".
+std::string comment_safe(std::string text) {
+  for (std::size_t at = text.find("--"); at != std::string::npos; at = text.find("--", at))
+    text.replace(at, 2, "- -");
+  return text;
+}
+
+std::string header(const core::Scenario& scenario, const SofaSolverSettings& solver,
+                   const SofaContact& contact) {
+  std::string text = "<!-- " + comment_safe(scenario.metadata.name) +
+                     ": exported by Viscera (exporters/sofa_scene_exporter.h).\n";
+  text += "     sofa-version " + std::string(kSofaRelease) + ": written for SOFA " + kSofaRelease +
+          " (component names and data of that release; open with runSofa on this file).\n";
+  text +=
+      "     Materials: exporters/sofa_material.h. Solver: exporters/sofa_solver_settings.h;"
+      " estimated smallest pTAp " +
+      sofa_number(solver.smallest_denominator) + " kg m2/s2.\n";
+  if (!solver.rayleigh_exact) {
+    text +=
+        "     The bodies' materials damp with different Rayleigh coefficients; the one solver"
+        " takes their mass-weighted mean.\n";
+  }
+  if (contact.enabled) {
+    text += "     Contact: " + sofa_number(contact.stiffness) +
+            " N/m per contact = contactStiffness^2 / contactDistance.\n";
+  }
+  return text + "-->\n";
+}
+
+void write_collision_pipeline(SofaXml& xml, const SofaContact& contact) {
+  xml.element("  ", "CollisionPipeline", " name=\"pipeline\"");
+  xml.element("  ", "BruteForceBroadPhase", " name=\"broadphase\"");
+  xml.element("  ", "BVHNarrowPhase", " name=\"narrowphase\"");
+  xml.element("  ", "MinProximityIntersection",
+              " name=\"intersection\" alarmDistance=\"" + sofa_number(contact.alarm_distance) +
+                  "\" contactDistance=\"" + sofa_number(contact.contact_distance) + "\"");
+  xml.element("  ", "CollisionResponse",
+              " name=\"response\" response=\"PenalityContactForceField\"");
+}
+
+void write_connection(SofaXml& xml, const core::Scenario& scenario,
+                      const core::Connection& connection) {
+  const auto& a = scenario.find_object(connection.object_a)->body.nodes;
+  const auto& b = scenario.find_object(connection.object_b)->body.nodes;
+  std::string springs;
+  for (const auto& [i, j] : connection.node_pairs) {
+    const double rest = (a[static_cast<std::size_t>(i)] - b[static_cast<std::size_t>(j)]).norm();
+    springs += (springs.empty() ? "" : "  ") + std::to_string(i) + " " + std::to_string(j) + " " +
+               sofa_number(connection.stiffness) + " 0 " + sofa_number(rest);
+  }
+  xml.element("  ", "SpringForceField",
+              " name=\"" + xml_escaped(connection.id) + "\" template=\"Vec3d\" object1=\"@" +
+                  xml_escaped(connection.object_a) + "/dofs\" object2=\"@" +
+                  xml_escaped(connection.object_b) + "/dofs\" spring=\"" + springs + "\"");
+}
+
+}  // namespace
+
+void SofaXml::element(const std::string& indent, const std::string& type,
+                      const std::string& attributes) {
+  components.insert(type);
+  text += indent + "<" + type + attributes + "/>\n";
+}
+
+std::string sofa_number(double value) {
   char buffer[32];
   return std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, value).ptr);
 }
 
-std::string vector_text(const core::Vec3& v) {
-  return number(v.x()) + " " + number(v.y()) + " " + number(v.z());
+std::string sofa_numbers(const std::vector<double>& values) {
+  std::string text;
+  for (const double v : values)
+    text += (text.empty() ? "" : " ") + sofa_number(v);
+  return text;
 }
 
-std::string escaped(const std::string& text) {
+std::string sofa_indices(const std::vector<int>& values) {
+  std::string text;
+  for (const int v : values)
+    text += (text.empty() ? "" : " ") + std::to_string(v);
+  return text;
+}
+
+std::string xml_escaped(const std::string& text) {
   std::string out;
   for (const char c : text) {
     if (c == '&')
@@ -34,123 +108,74 @@ std::string escaped(const std::string& text) {
   return out;
 }
 
-/// True when the package's node masses are the lumped density·V/4 of `material`.
-bool masses_follow_density(const core::TetMesh& body, double density) {
-  if (body.node_mass.empty()) return true;
-  const std::vector<double> lumped = core::lumped_node_masses(body, density);
-  for (std::size_t i = 0; i < lumped.size(); ++i) {
-    if (std::abs(lumped[i] - body.node_mass[i]) > 1e-9 * std::max(std::abs(lumped[i]), 1e-30))
-      return false;
-  }
-  return true;
+std::string sofa_plugin_of(const std::string& type) {
+  static const std::map<std::string, std::string> plugins = {
+      {"MeshVTKLoader", "Sofa.Component.IO.Mesh"},
+      {"MeshOBJLoader", "Sofa.Component.IO.Mesh"},
+      {"MeshTopology", "Sofa.Component.Topology.Container.Constant"},
+      {"MechanicalObject", "Sofa.Component.StateContainer"},
+      {"DiagonalMass", "Sofa.Component.Mass"},
+      {"TetrahedronFEMForceField", "Sofa.Component.SolidMechanics.FEM.Elastic"},
+      {"MeshSpringForceField", "Sofa.Component.SolidMechanics.Spring"},
+      {"SpringForceField", "Sofa.Component.SolidMechanics.Spring"},
+      {"FixedProjectiveConstraint", "Sofa.Component.Constraint.Projective"},
+      {"EulerImplicitSolver", "Sofa.Component.ODESolver.Backward"},
+      {"CGLinearSolver", "Sofa.Component.LinearSolver.Iterative"},
+      {"BarycentricMapping", "Sofa.Component.Mapping.Linear"},
+      {"SubsetMapping", "Sofa.Component.Mapping.Linear"},
+      {"OglModel", "Sofa.GL.Component.Rendering3D"},
+      {"CollisionPipeline", "Sofa.Component.Collision.Detection.Algorithm"},
+      {"BruteForceBroadPhase", "Sofa.Component.Collision.Detection.Algorithm"},
+      {"BVHNarrowPhase", "Sofa.Component.Collision.Detection.Algorithm"},
+      {"MinProximityIntersection", "Sofa.Component.Collision.Detection.Intersection"},
+      {"CollisionResponse", "Sofa.Component.Collision.Response.Contact"},
+      {"TriangleCollisionModel", "Sofa.Component.Collision.Geometry"},
+      {"LineCollisionModel", "Sofa.Component.Collision.Geometry"},
+      {"PointCollisionModel", "Sofa.Component.Collision.Geometry"},
+  };
+  const auto it = plugins.find(type);
+  return it == plugins.end() ? std::string() : it->second;
 }
-
-void add_body(std::string& xml, const ExportObject& object, const std::string& folder) {
-  const core::SceneObject& source = *object.source;
-  const core::TetMesh& body = source.body;
-  const core::Material material = object.material != nullptr ? *object.material : core::Material{};
-  xml += "    <MeshVTKLoader name=\"loader\" filename=\"" +
-         escaped(folder + "/" + object.id() + "_body.vtk") + "\"/>\n";
-  xml += "    <MeshTopology name=\"topology\" src=\"@loader\"/>\n";
-  xml += "    <MechanicalObject name=\"dofs\" template=\"Vec3d\" src=\"@loader\"/>\n";
-  if (masses_follow_density(body, material.density)) {
-    xml += "    <DiagonalMass name=\"mass\" massDensity=\"" + number(material.density) + "\"/>\n";
-  } else {
-    xml += "    <DiagonalMass name=\"mass\" vertexMass=\"";
-    for (std::size_t i = 0; i < body.node_mass.size(); ++i)
-      xml += (i > 0 ? " " : "") + number(body.node_mass[i]);
-    xml += "\"/>\n";
-  }
-  if (source.body_kind == core::BodyKind::MassSpring) {
-    const SofaSprings springs = sofa_springs(material, body);
-    xml += "    <MeshSpringForceField name=\"springs\" tetrasStiffness=\"" +
-           number(springs.stiffness) + "\" tetrasDamping=\"" + number(springs.damping) + "\"/>\n";
-  } else {
-    const SofaElasticity fem = sofa_elasticity(material);
-    xml += "    <TetrahedronFEMForceField name=\"fem\" method=\"large\" youngModulus=\"" +
-           number(fem.young_modulus) + "\" poissonRatio=\"" + number(fem.poisson_ratio) +
-           "\" rayleighStiffness=\"" + number(fem.rayleigh_stiffness) + "\"/>\n";
-  }
-  std::string fixed;
-  for (std::size_t i = 0; i < body.fixed.size(); ++i) {
-    if (body.fixed[i] != 0) fixed += (fixed.empty() ? "" : " ") + std::to_string(i);
-  }
-  if (!fixed.empty())
-    xml += "    <FixedProjectiveConstraint name=\"fixed\" indices=\"" + fixed + "\"/>\n";
-}
-
-void add_visual(std::string& xml, const ExportObject& object, const std::string& folder,
-                const std::string& indent, bool mapped) {
-  xml += indent + "<Node name=\"visual\">\n";
-  xml += indent + "  <MeshOBJLoader name=\"surface\" filename=\"" +
-         escaped(folder + "/" + object.id() + "_surface.obj") + "\" handleSeams=\"1\"/>\n";
-  xml += indent + "  <OglModel name=\"model\" src=\"@surface\"";
-  if (object.maps.contains("albedo")) {
-    xml += " texturename=\"" +
-           escaped(folder + "/" + object.id() + "_surface_" + object.texture_id + "_albedo.png") +
-           "\"";
-  }
-  xml += "/>\n";
-  if (mapped)
-    xml += indent +
-           "  <BarycentricMapping name=\"embedding\" input=\"@../dofs\" output=\"@model\"/>\n";
-  xml += indent + "</Node>\n";
-}
-
-}  // namespace
 
 std::string sofa_scene_xml(const core::Scenario& scenario, const std::vector<ExportObject>& objects,
                            const std::string& folder) {
-  const auto& session = scenario.session;
-  std::string xml = "<?xml version=\"1.0\"?>\n";
-  xml += "<!-- " + escaped(scenario.metadata.name) +
-         ": exported by Viscera; materials mapped as in exporters/sofa_material.h -->\n";
-  xml += "<Node name=\"root\" dt=\"" + number(session.time_step) + "\" gravity=\"" +
-         vector_text(session.gravity) + "\">\n";
-  for (const char* plugin :
-       {"Sofa.Component.IO.Mesh", "Sofa.Component.Topology.Container.Constant",
-        "Sofa.Component.StateContainer", "Sofa.Component.Mass",
-        "Sofa.Component.SolidMechanics.FEM.Elastic", "Sofa.Component.SolidMechanics.Spring",
-        "Sofa.Component.Constraint.Projective", "Sofa.Component.ODESolver.Backward",
-        "Sofa.Component.LinearSolver.Iterative", "Sofa.Component.Mapping.Linear",
-        "Sofa.GL.Component.Rendering3D", "Sofa.Component.AnimationLoop"}) {
-    xml += "  <RequiredPlugin name=\"" + std::string(plugin) + "\"/>\n";
-  }
-  xml += "  <DefaultAnimationLoop/>\n";
-  xml += "  <EulerImplicitSolver name=\"odesolver\" rayleighMass=\"0\"/>\n";
-  xml +=
-      "  <CGLinearSolver name=\"linearsolver\" iterations=\"100\" tolerance=\"1e-9\" "
-      "threshold=\"1e-12\"/>\n";
-  std::vector<std::string> bodies;
+  const std::vector<SofaBody> bodies = sofa_bodies(scenario, objects);
+  const SofaContact contact = sofa_contact(scenario, bodies);
+  const SofaSolverSettings solver = sofa_solver_settings(scenario, bodies, contact);
+
+  SofaXml body;
+  body.element("  ", "DefaultAnimationLoop", " name=\"animation\"");
+  if (contact.enabled) write_collision_pipeline(body, contact);
+  body.element("  ", "EulerImplicitSolver",
+               " name=\"odesolver\" rayleighStiffness=\"" + sofa_number(solver.rayleigh_stiffness) +
+                   "\" rayleighMass=\"0\"");
+  body.element("  ", "CGLinearSolver",
+               " name=\"linearsolver\" iterations=\"" + std::to_string(solver.iterations) +
+                   "\" tolerance=\"" + sofa_number(solver.tolerance) + "\" threshold=\"" +
+                   sofa_number(solver.threshold) + "\"");
   for (const auto& object : objects) {
-    const bool simulated =
-        object.has_body() && object.source->body_kind != core::BodyKind::CellAgent;
-    xml += "  <Node name=\"" + escaped(object.id()) + "\">\n";
-    if (simulated) {
-      add_body(xml, object, folder);
-      bodies.push_back(object.id());
-    }
-    add_visual(xml, object, folder, "    ", simulated);
-    xml += "  </Node>\n";
+    const SofaBody* simulated = find_body(bodies, object.id());
+    if (simulated != nullptr)
+      write_body_node(body, *simulated, contact, folder);
+    else
+      write_static_node(body, object, folder);
   }
-  for (const auto& connection : scenario.connections) {
-    const auto exported = [&](const std::string& id) {
-      return std::find(bodies.begin(), bodies.end(), id) != bodies.end();
-    };
-    if (!exported(connection.object_a) || !exported(connection.object_b)) continue;
-    const auto& a = scenario.find_object(connection.object_a)->body.nodes;
-    const auto& b = scenario.find_object(connection.object_b)->body.nodes;
-    xml += "  <SpringForceField name=\"" + escaped(connection.id) +
-           "\" template=\"Vec3d\" object1=\"@" + escaped(connection.object_a) +
-           "/dofs\" object2=\"@" + escaped(connection.object_b) + "/dofs\" spring=\"";
-    for (std::size_t p = 0; p < connection.node_pairs.size(); ++p) {
-      const auto [i, j] = connection.node_pairs[p];
-      const double rest = (a[static_cast<std::size_t>(i)] - b[static_cast<std::size_t>(j)]).norm();
-      xml += (p > 0 ? "  " : "") + std::to_string(i) + " " + std::to_string(j) + " " +
-             number(connection.stiffness) + " 0 " + number(rest);
-    }
-    xml += "\"/>\n";
+  for (const core::Connection* connection : exported_connections(scenario, bodies))
+    write_connection(body, scenario, *connection);
+
+  const auto& session = scenario.session;
+  std::string xml = "<?xml version=\"1.0\"?>\n" + header(scenario, solver, contact);
+  xml += "<Node name=\"root\" dt=\"" + sofa_number(session.time_step) + "\" gravity=\"" +
+         sofa_number(session.gravity.x()) + " " + sofa_number(session.gravity.y()) + " " +
+         sofa_number(session.gravity.z()) + "\">\n";
+  std::set<std::string> plugins;
+  for (const auto& type : body.components) {
+    const std::string plugin = sofa_plugin_of(type);
+    if (!plugin.empty()) plugins.insert(plugin);
   }
+  for (const auto& plugin : plugins)
+    xml += "  <RequiredPlugin pluginName=\"" + plugin + "\"/>\n";
+  xml += body.text;
   xml += "</Node>\n";
   return xml;
 }

@@ -1,40 +1,32 @@
 #include "exporters/staged_output.h"
 
-#include <unistd.h>
-
 #include <algorithm>
-#include <atomic>
 #include <fstream>
 
+#include "core/atomic_replace.h"
 #include "core/error.h"
 
 namespace viscera::exporters {
-namespace {
-
 namespace fs = std::filesystem;
 
-fs::path hidden_sibling(const fs::path& target, const char* kind) {
-  static std::atomic<int> counter{0};
-  const fs::path parent = target.parent_path().empty() ? fs::path(".") : target.parent_path();
-  std::string name = ".";
-  name += target.filename().string();
-  name += kind;
-  name += std::to_string(getpid());
-  name += "-";
-  name += std::to_string(counter.fetch_add(1));
-  return parent / name;
-}
-
-}  // namespace
-
 StagedOutput::StagedOutput(const fs::path& target)
-    : target_(target), folder_(hidden_sibling(target, ".partial-")) {
+    : target_(target), folder_(core::staging_sibling(target, ".partial-")) {
   std::error_code error;
   if (target_.filename().empty())
     throw core::UsageError("the output \"" + target.string() + "\" names no file");
   const fs::path parent = folder_.parent_path();
   if (!fs::is_directory(parent, error)) {
-    throw core::OutputError("the output folder does not exist", {target.string(), "", ""});
+    // Create the missing folders, remembering the outermost so a failed export removes them.
+    fs::path outermost = parent;
+    while (outermost.has_parent_path() && outermost.parent_path() != outermost &&
+           !fs::exists(outermost.parent_path(), error))
+      outermost = outermost.parent_path();
+    if (fs::exists(parent, error) || !fs::create_directories(parent, error) || error) {
+      throw core::OutputError("cannot create the output folder " + parent.string() +
+                                  (error ? ": " + error.message() : ": a file is in the way"),
+                              {target.string(), "", ""});
+    }
+    created_ = outermost;
   }
   if (!fs::create_directory(folder_, error) || error) {
     throw core::OutputError(
@@ -46,6 +38,7 @@ StagedOutput::StagedOutput(const fs::path& target)
 StagedOutput::~StagedOutput() {
   std::error_code ignored;
   fs::remove_all(folder_, ignored);
+  if (!committed_ && !created_.empty()) fs::remove_all(created_, ignored);
 }
 
 std::vector<fs::path> StagedOutput::commit() {
@@ -70,34 +63,46 @@ std::vector<fs::path> StagedOutput::commit() {
                               {target_.string(), "", ""});
     }
   }
-  // Older versions step aside, the new entries move in; on any failure the new ones are removed
-  // and the old ones put back, so the target is either wholly old or wholly new.
-  std::vector<std::pair<fs::path, fs::path>> set_aside;  // destination → backup
+  // Each entry replaces its older version in one atomic step (a file by rename, a folder by an
+  // exchange), so a crash at any moment leaves every name wholly old or wholly new. The older
+  // versions are kept under hidden names until all entries are in, so that a failure half-way
+  // puts every one of them back.
+  std::vector<std::pair<fs::path, fs::path>> set_aside;  // destination → older version
   std::vector<fs::path> written;
   try {
     for (const auto& entry : entries) {
       const fs::path destination = parent / entry.filename();
-      if (fs::exists(destination)) {
-        const fs::path backup = hidden_sibling(destination, ".old-");
-        fs::rename(destination, backup);
-        set_aside.emplace_back(destination, backup);
+      if (fs::is_directory(destination)) {
+        core::exchange_atomically(entry, destination);  // `entry` now holds the older folder
+        set_aside.emplace_back(destination, entry);
+      } else {
+        if (fs::exists(destination)) {
+          const fs::path older = core::staging_sibling(destination, ".old-");
+          fs::create_hard_link(destination, older);
+          set_aside.emplace_back(destination, older);
+        }
+        core::replace_atomically(entry, destination);
       }
-      fs::rename(entry, destination);
       written.push_back(destination);
     }
-  } catch (const fs::filesystem_error& e) {
+  } catch (const std::exception& e) {
     std::error_code ignored;
-    for (const auto& path : written)
-      fs::remove_all(path, ignored);
-    for (const auto& [destination, backup] : set_aside)
-      fs::rename(backup, destination, ignored);
+    for (const auto& [destination, older] : set_aside)
+      fs::rename(older, destination, ignored);
+    for (const auto& path : written) {
+      if (std::none_of(set_aside.begin(), set_aside.end(),
+                       [&](const auto& pair) { return pair.first == path; }))
+        fs::remove_all(path, ignored);
+    }
     throw core::OutputError(std::string("cannot move the export into place: ") + e.what(),
                             {target_.string(), "", ""});
   }
   std::error_code ignored;
-  for (const auto& [destination, backup] : set_aside)
-    fs::remove_all(backup, ignored);
+  for (const auto& [destination, older] : set_aside)
+    fs::remove_all(older, ignored);
+  core::remove_abandoned_staging(target_);
   std::rotate(written.rbegin(), written.rbegin() + 1, written.rend());  // the main file first
+  committed_ = true;
   return written;
 }
 

@@ -8,10 +8,12 @@
 
 namespace viscera::exporters {
 
-/// A hidden folder ".<name>.partial-<pid>-<n>" beside `target`, removed on destruction.
+/// A hidden folder ".<name>.partial-<pid>-<n>" beside `target`, removed on destruction. Missing
+/// folders on the way to `target` are created, and removed again when nothing is committed.
 class StagedOutput {
  public:
-  /// Creates the folder; throws core::OutputError naming `target` when it cannot.
+  /// Creates the folder (and the target's missing parent folders); throws core::OutputError
+  /// naming `target` when it cannot, e.g. when a parent is a file.
   explicit StagedOutput(const std::filesystem::path& target);
   ~StagedOutput();
   StagedOutput(const StagedOutput&) = delete;
@@ -29,6 +31,8 @@ class StagedOutput {
  private:
   std::filesystem::path target_;
   std::filesystem::path folder_;
+  std::filesystem::path created_;  ///< the outermost parent folder made here, or empty
+  bool committed_ = false;
 };
 
 /// Writes `bytes` to `path` (a file inside a staging folder); throws core::OutputError naming

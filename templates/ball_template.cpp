@@ -25,7 +25,8 @@ std::vector<TemplateParameter> BallTemplate::parameters() const {
       {"area_stiffness", "N/m", "Teschner surface area stiffness density", 0.0, 1.0e3, 2.0, false},
       {"distance_damping", "Pa*s", "damping density on distance terms", 0.0, 1.0e3, 100.0, false},
       {"floor", "count",
-       "1: the ball rests free on a fixed tissue slab (two touching bodies) instead of a fixed base",
+       "1: the ball rests free on a fixed tissue slab (two touching bodies) instead of a fixed "
+       "base",
        0, 1, 0, true},
   };
 }
@@ -33,7 +34,8 @@ std::vector<TemplateParameter> BallTemplate::parameters() const {
 namespace {
 
 /// A fixed slab of stiff tissue whose top face touches the bottom of the ball (z = −radius).
-void add_floor(core::Scenario& scenario, double radius, double cell_size, core::Progress& progress) {
+void add_floor(core::Scenario& scenario, double radius, double cell_size,
+               core::Progress& progress) {
   core::Material slab;
   slab.id = "floor-tissue";
   slab.name = "Stiff supporting tissue";
@@ -84,7 +86,8 @@ core::Scenario BallTemplate::build(const ParameterValues& p, std::uint64_t /*see
   tissue.area_stiffness = p.at("area_stiffness");
   tissue.distance_damping = p.at("distance_damping");
   tissue.source =
-      "effective modulus about a fifth of distance_stiffness (edge-spring network), i.e. ~6 kPa, the order of soft abdominal tissue; density of water-rich tissue";
+      "effective modulus about a fifth of distance_stiffness (edge-spring network), i.e. ~6 kPa, "
+      "the order of soft abdominal tissue; density of water-rich tissue";
   scenario.materials[tissue.id] = tissue;
 
   // The body surface is an icosphere whose edges match the cell size; the visual surface is
@@ -109,8 +112,7 @@ core::Scenario BallTemplate::build(const ParameterValues& p, std::uint64_t /*see
   ball.role = core::ObjectRole::Organ;
   ball.material = tissue.id;
   ball.body_kind = core::BodyKind::TetMesh;
-  const int visual_level =
-      std::min(7, body_level + static_cast<int>(p.at("visual_subdivisions")));
+  const int visual_level = std::min(7, body_level + static_cast<int>(p.at("visual_subdivisions")));
   ball.surface = core::make_icosphere(radius, visual_level);
   ball.embedding = core::embed_points(ball.surface.vertices, body);
   ball.body = std::move(body);

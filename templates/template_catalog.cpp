@@ -26,6 +26,42 @@ const std::vector<std::unique_ptr<ScenarioTemplate>>& template_catalog() {
   return catalog;
 }
 
+ParameterGroup parameter_group(const TemplateParameter& parameter) {
+  const std::string& n = parameter.name;
+  const auto has = [&n](const char* part) { return n.find(part) != std::string::npos; };
+  if (n.starts_with("texture_")) return ParameterGroup::Texture;
+  if (n.starts_with("vessel_")) return ParameterGroup::Vessels;
+  if (has("myoma") || has("polyp") || has("adhesion") || has("inclusion"))
+    return ParameterGroup::Pathologies;
+  if (has("stiffness") || has("damping") || n.starts_with("fixed_") || has("friction") ||
+      has("strain") || has("break_") || n == "density" || n == "cell_mass" ||
+      n == "max_displacement")
+    return ParameterGroup::Tissue;
+  if (n == "resolution" || n == "edge_length" || n == "cell_size" || n == "sections" ||
+      n == "points_per_section" || n == "visual_subdivisions" || n == "spacing" || n == "columns" ||
+      n == "rows")
+    return ParameterGroup::Meshing;
+  return ParameterGroup::Anatomy;
+}
+
+std::string to_string(ParameterGroup group) {
+  switch (group) {
+    case ParameterGroup::Anatomy:
+      return "anatomy";
+    case ParameterGroup::Pathologies:
+      return "pathologies";
+    case ParameterGroup::Tissue:
+      return "tissue";
+    case ParameterGroup::Vessels:
+      return "vessels";
+    case ParameterGroup::Texture:
+      return "texture";
+    case ParameterGroup::Meshing:
+      return "meshing";
+  }
+  return "anatomy";
+}
+
 const ScenarioTemplate& find_template(const std::string& name) {
   std::string known;
   for (const auto& t : template_catalog()) {
@@ -77,7 +113,8 @@ nlohmann::json catalog_to_json() {
                             {"minimum", p.minimum},
                             {"maximum", p.maximum},
                             {"default", p.default_value},
-                            {"integer", p.integer}});
+                            {"integer", p.integer},
+                            {"group", to_string(parameter_group(p))}});
     }
     list.push_back({{"name", t->name()},
                     {"description", t->description()},

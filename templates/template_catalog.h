@@ -25,6 +25,17 @@ struct TemplateParameter {
   bool integer = false;
 };
 
+/// Where a parameter belongs in a form (the studio's New from template dialog groups by it).
+enum class ParameterGroup { Anatomy, Pathologies, Tissue, Vessels, Texture, Meshing };
+
+/// The group of a catalogue parameter, from its name: stiffness, damping, friction and strain
+/// limits are tissue; counts and sizes of lesions (myomas, polyps, adhesions, inclusions) are
+/// pathologies; vessel_* are vessels; texture_* are texture; resolution, edge and cell sizes and
+/// section counts are meshing; every other dimension is anatomy.
+ParameterGroup parameter_group(const TemplateParameter& parameter);
+/// "anatomy", "pathologies", "tissue", "vessels", "texture", "meshing".
+std::string to_string(ParameterGroup group);
+
 /// Parameter values by name; every parameter of the template is present after resolution.
 using ParameterValues = std::map<std::string, double>;
 
@@ -65,7 +76,8 @@ const ScenarioTemplate& find_template(const std::string& name);
 ParameterValues resolve_parameters(const ScenarioTemplate& scenario_template,
                                    const std::map<std::string, std::string>& overrides);
 
-/// The catalogue as JSON: [{name, description, version, procedure, parameters:[…]}].
+/// The catalogue as JSON: [{name, description, version, procedure, parameters:[…]}]; each
+/// parameter carries its group (parameter_group).
 nlohmann::json catalog_to_json();
 
 /// Builds `name` with `overrides` and `seed`, and records the provenance (template, version,

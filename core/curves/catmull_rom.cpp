@@ -8,9 +8,11 @@ namespace viscera::core {
 
 CatmullRomSpline::CatmullRomSpline(std::vector<Vec3> points, KnotSpacing spacing, bool closed)
     : points_(std::move(points)), spacing_(spacing), closed_(closed) {
-  if (points_.size() < (closed_ ? 3U : 2U)) throw UsageError("a Catmull-Rom spline needs more points");
+  if (points_.size() < (closed_ ? 3U : 2U))
+    throw UsageError("a Catmull-Rom spline needs more points");
   for (int i = 0; i < segments(); ++i) {
-    if ((point(i + 1) - point(i)).norm() == 0.0) throw UsageError("spline points " + std::to_string(i) + " and the next coincide");
+    if ((point(i + 1) - point(i)).norm() == 0.0)
+      throw UsageError("spline points " + std::to_string(i) + " and the next coincide");
   }
 }
 
@@ -26,9 +28,12 @@ Vec3 CatmullRomSpline::point(int i) const {
 double CatmullRomSpline::knot_gap(int i) const {
   const double chord = (point(i + 1) - point(i)).norm();
   switch (spacing_) {
-    case KnotSpacing::Uniform: return 1.0;
-    case KnotSpacing::Centripetal: return std::sqrt(chord);
-    case KnotSpacing::ChordLength: return chord;
+    case KnotSpacing::Uniform:
+      return 1.0;
+    case KnotSpacing::Centripetal:
+      return std::sqrt(chord);
+    case KnotSpacing::ChordLength:
+      return chord;
   }
   return 1.0;
 }
@@ -53,7 +58,9 @@ Vec3 bezier_point(const std::array<Vec3, 4>& b, double t) {
   return u * u * u * b[0] + 3.0 * u * u * t * b[1] + 3.0 * u * t * t * b[2] + t * t * t * b[3];
 }
 
-Vec3 CatmullRomSpline::evaluate(int s, double t) const { return bezier_point(bezier(s), t); }
+Vec3 CatmullRomSpline::evaluate(int s, double t) const {
+  return bezier_point(bezier(s), t);
+}
 
 Vec3 CatmullRomSpline::derivative(int s, double t) const {
   const auto b = bezier(s);
@@ -69,12 +76,19 @@ std::vector<double> catmull_rom_knot_gaps(const std::vector<Vec3>& points, KnotS
   for (std::size_t i = 0; i < gaps.size(); ++i) {
     const double chord = (points[(i + 1) % n] - points[i]).norm();
     if (!(chord > 0.0)) {
-      throw UsageError("spline points " + std::to_string(i) + " and " + std::to_string((i + 1) % n) + " coincide");
+      throw UsageError("spline points " + std::to_string(i) + " and " +
+                       std::to_string((i + 1) % n) + " coincide");
     }
     switch (spacing) {
-      case KnotSpacing::Uniform: gaps[i] = 1.0; break;
-      case KnotSpacing::Centripetal: gaps[i] = std::sqrt(chord); break;
-      case KnotSpacing::ChordLength: gaps[i] = chord; break;
+      case KnotSpacing::Uniform:
+        gaps[i] = 1.0;
+        break;
+      case KnotSpacing::Centripetal:
+        gaps[i] = std::sqrt(chord);
+        break;
+      case KnotSpacing::ChordLength:
+        gaps[i] = chord;
+        break;
     }
   }
   return gaps;
@@ -85,7 +99,8 @@ std::vector<Vec3> catmull_rom_bezier_net(const std::vector<Vec3>& points,
   const std::size_t n = points.size();
   const std::size_t segments = closed ? n : n - 1;
   if (n < (closed ? 3U : 2U) || gaps.size() != segments) {
-    throw UsageError("Catmull-Rom net: " + std::to_string(gaps.size()) + " knot gaps for " + std::to_string(n) + " points");
+    throw UsageError("Catmull-Rom net: " + std::to_string(gaps.size()) + " knot gaps for " +
+                     std::to_string(n) + " points");
   }
   // Tangent at point i with respect to the knot parameter (Barry-Goldman blend of the chords on
   // either side); an open end sees a reflected phantom point, i.e. the first/last chord.

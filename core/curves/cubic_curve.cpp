@@ -11,11 +11,13 @@ namespace viscera::core {
 CubicCurve::CubicCurve(std::vector<Vec3> net, std::vector<double> gaps, bool closed)
     : net_(std::move(net)), gaps_(std::move(gaps)), closed_(closed) {
   if (gaps_.empty() || net_.size() != 3 * gaps_.size() + 1) {
-    throw UsageError("a cubic curve needs 3·segments + 1 control points, got " + std::to_string(net_.size()) +
-                     " for " + std::to_string(gaps_.size()) + " segments");
+    throw UsageError("a cubic curve needs 3·segments + 1 control points, got " +
+                     std::to_string(net_.size()) + " for " + std::to_string(gaps_.size()) +
+                     " segments");
   }
   for (std::size_t i = 0; i < net_.size(); ++i) {
-    if (!net_[i].allFinite()) throw UsageError("curve control point " + std::to_string(i) + " is not finite");
+    if (!net_[i].allFinite())
+      throw UsageError("curve control point " + std::to_string(i) + " is not finite");
   }
   knots_.assign(1, 0.0);
   for (std::size_t s = 0; s < gaps_.size(); ++s) {
@@ -42,7 +44,8 @@ std::pair<int, double> CubicCurve::locate(double t) const {
   // upper_bound finds the first knot after t; the segment starts one before it.
   const auto it = std::upper_bound(knots_.begin(), knots_.end(), t);
   const int s = std::clamp(static_cast<int>(it - knots_.begin()) - 1, 0, segments() - 1);
-  const double u = std::clamp((t - knots_[static_cast<std::size_t>(s)]) / gaps_[static_cast<std::size_t>(s)], 0.0, 1.0);
+  const double u = std::clamp(
+      (t - knots_[static_cast<std::size_t>(s)]) / gaps_[static_cast<std::size_t>(s)], 0.0, 1.0);
   return {s, u};
 }
 
@@ -55,7 +58,8 @@ Vec3 CubicCurve::derivative(double t) const {
   const auto [s, u] = locate(t);
   const auto b = bezier(s);
   const double v = 1.0 - u;
-  const Vec3 d = 3.0 * (v * v * (b[1] - b[0]) + 2.0 * v * u * (b[2] - b[1]) + u * u * (b[3] - b[2]));
+  const Vec3 d =
+      3.0 * (v * v * (b[1] - b[0]) + 2.0 * v * u * (b[2] - b[1]) + u * u * (b[3] - b[2]));
   return d / gaps_[static_cast<std::size_t>(s)];
 }
 
@@ -85,7 +89,9 @@ CubicCurve catmull_rom_curve(const std::vector<Vec3>& points, KnotSpacing spacin
 
 CubicCurve cubic_bspline_curve(const std::vector<Vec3>& control, bool closed) {
   const auto n = static_cast<int>(control.size());
-  if (n < (closed ? 3 : 2)) throw UsageError("a cubic B-spline needs at least " + std::string(closed ? "3" : "2") + " control points");
+  if (n < (closed ? 3 : 2))
+    throw UsageError("a cubic B-spline needs at least " + std::string(closed ? "3" : "2") +
+                     " control points");
   const auto at = [&](int i) -> Vec3 {
     if (closed) return control[static_cast<std::size_t>(((i % n) + n) % n)];
     if (i < 0) return 2.0 * control.front() - control[1];
@@ -103,7 +109,8 @@ CubicCurve cubic_bspline_curve(const std::vector<Vec3>& control, bool closed) {
     net.push_back((b + 2.0 * c) / 3.0);
   }
   net.push_back((at(segments - 1) + 4.0 * at(segments) + at(segments + 1)) / 6.0);
-  return CubicCurve(std::move(net), std::vector<double>(static_cast<std::size_t>(segments), 1.0), closed);
+  return CubicCurve(std::move(net), std::vector<double>(static_cast<std::size_t>(segments), 1.0),
+                    closed);
 }
 
 CubicCurve hermite_curve(const std::vector<Vec3>& points, const std::vector<Vec3>& tangents,

@@ -11,13 +11,17 @@ Vec3 perpendicular_to(const Vec3& direction, const Vec3& hint) {
   const Vec3 projected = hint - hint.dot(d) * d;
   if (projected.norm() > 1e-9 * (1.0 + hint.norm())) return projected.normalized();
   const Vec3 a = d.cwiseAbs();
-  const Vec3 axis = a.x() <= a.y() && a.x() <= a.z() ? Vec3::UnitX() : (a.y() <= a.z() ? Vec3::UnitY() : Vec3::UnitZ());
+  const Vec3 axis = a.x() <= a.y() && a.x() <= a.z()
+                        ? Vec3::UnitX()
+                        : (a.y() <= a.z() ? Vec3::UnitY() : Vec3::UnitZ());
   return (axis - axis.dot(d) * d).normalized();
 }
 
-std::vector<CurveFrame> rotation_minimizing_frames(const CubicCurve& curve, const std::vector<double>& parameters,
+std::vector<CurveFrame> rotation_minimizing_frames(const CubicCurve& curve,
+                                                   const std::vector<double>& parameters,
                                                    const Vec3& initial_normal, bool close_loop) {
-  if (parameters.empty()) throw UsageError("rotation-minimising frames need at least one parameter");
+  if (parameters.empty())
+    throw UsageError("rotation-minimising frames need at least one parameter");
   std::vector<CurveFrame> frames(parameters.size());
   CurveFrame& first = frames.front();
   first.origin = curve.point(parameters.front());
@@ -53,7 +57,8 @@ std::vector<CurveFrame> rotation_minimizing_frames(const CubicCurve& curve, cons
     // Angle from the transported last normal to the first normal about the common tangent.
     const CurveFrame& last = frames.back();
     const Vec3 target = perpendicular_to(last.tangent, first.normal);
-    const double twist = std::atan2(last.normal.cross(target).dot(last.tangent), last.normal.dot(target));
+    const double twist =
+        std::atan2(last.normal.cross(target).dot(last.tangent), last.normal.dot(target));
     const double span = parameters.back() - parameters.front();
     for (std::size_t i = 1; i < frames.size(); ++i) {
       const double angle = span > 0.0 ? twist * (parameters[i] - parameters.front()) / span : 0.0;

@@ -23,8 +23,10 @@ struct CurveFrame {
 /// whole loop, the remaining twist between the last and first frame is spread over the frames
 /// in proportion to the knot parameter, so a swept tube closes without a seam. Throws
 /// UsageError for an empty parameter list.
-std::vector<CurveFrame> rotation_minimizing_frames(const CubicCurve& curve, const std::vector<double>& parameters,
-                                                   const Vec3& initial_normal = Vec3::Zero(), bool close_loop = false);
+std::vector<CurveFrame> rotation_minimizing_frames(const CubicCurve& curve,
+                                                   const std::vector<double>& parameters,
+                                                   const Vec3& initial_normal = Vec3::Zero(),
+                                                   bool close_loop = false);
 
 /// A unit vector perpendicular to `direction`, deterministic: `hint` projected off `direction`
 /// when that leaves a usable vector, otherwise the coordinate axis least aligned with it.

@@ -32,9 +32,7 @@ struct ImageVolume {
   ScalarType scalar_type = ScalarType::Int16;
   std::vector<std::byte> voxels;
 
-  std::size_t voxel_count() const {
-    return static_cast<std::size_t>(dims[0]) * dims[1] * dims[2];
-  }
+  std::size_t voxel_count() const { return static_cast<std::size_t>(dims[0]) * dims[1] * dims[2]; }
   std::size_t linear_index(int i, int j, int k) const {
     return (static_cast<std::size_t>(k) * dims[1] + j) * dims[0] + i;
   }
@@ -52,8 +50,8 @@ struct ImageVolume {
 
 /// A label map: an ImageVolume of UInt16 labels (0 = background) with label names.
 struct LabelMap {
-  ImageVolume image;                   ///< scalar_type UInt16
-  std::map<int, std::string> names;    ///< label → tissue name
+  ImageVolume image;                 ///< scalar_type UInt16
+  std::map<int, std::string> names;  ///< label → tissue name
 
   std::uint16_t label(std::size_t linear) const;
   void set_label(std::size_t linear, std::uint16_t value);

@@ -21,12 +21,18 @@ namespace {
 
 int vtk_type_of(ScalarType type) {
   switch (type) {
-    case ScalarType::UInt8: return VTK_UNSIGNED_CHAR;
-    case ScalarType::Int16: return VTK_SHORT;
-    case ScalarType::UInt16: return VTK_UNSIGNED_SHORT;
-    case ScalarType::Int32: return VTK_INT;
-    case ScalarType::Float32: return VTK_FLOAT;
-    case ScalarType::Float64: return VTK_DOUBLE;
+    case ScalarType::UInt8:
+      return VTK_UNSIGNED_CHAR;
+    case ScalarType::Int16:
+      return VTK_SHORT;
+    case ScalarType::UInt16:
+      return VTK_UNSIGNED_SHORT;
+    case ScalarType::Int32:
+      return VTK_INT;
+    case ScalarType::Float32:
+      return VTK_FLOAT;
+    case ScalarType::Float64:
+      return VTK_DOUBLE;
   }
   return VTK_VOID;
 }
@@ -48,7 +54,8 @@ void fill_image(const ImageVolume& volume, vtkImageData& image) {
   image.SetOrigin(volume.origin.data());
   double direction[9];
   for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) direction[3 * r + c] = volume.direction(r, c);
+    for (int c = 0; c < 3; ++c)
+      direction[3 * r + c] = volume.direction(r, c);
   image.SetDirectionMatrix(direction);
   image.AllocateScalars(vtk_type_of(volume.scalar_type), 1);
   if (!volume.voxels.empty()) {
@@ -96,23 +103,28 @@ ImageVolume read_volume_vti(const std::filesystem::path& path) {
   const ScopedVtkSilence silence;  // the failure is reported below, once, naming the file
   reader->Update();
   vtkImageData* image = reader->GetOutput();
-  if (reader->GetErrorCode() != 0 || image == nullptr || image->GetPointData()->GetScalars() == nullptr) {
+  if (reader->GetErrorCode() != 0 || image == nullptr ||
+      image->GetPointData()->GetScalars() == nullptr) {
     throw InputError("not a readable VTK image file", {file, "", ""});
   }
   vtkDataArray* scalars = image->GetPointData()->GetScalars();
   if (scalars->GetNumberOfComponents() != 1) {
-    throw InputError("image has " + std::to_string(scalars->GetNumberOfComponents()) + " components; one is needed", {file, "", ""});
+    throw InputError("image has " + std::to_string(scalars->GetNumberOfComponents()) +
+                         " components; one is needed",
+                     {file, "", ""});
   }
   ImageVolume volume;
   if (!scalar_type_of(scalars->GetDataType(), volume.scalar_type)) {
-    throw InputError(std::string("unsupported voxel type ") + scalars->GetDataTypeAsString(), {file, "", ""});
+    throw InputError(std::string("unsupported voxel type ") + scalars->GetDataTypeAsString(),
+                     {file, "", ""});
   }
   image->GetDimensions(volume.dims.data());
   image->GetSpacing(volume.spacing.data());
   image->GetOrigin(volume.origin.data());
   const double* direction = image->GetDirectionMatrix()->GetData();
   for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) volume.direction(r, c) = direction[3 * r + c];
+    for (int c = 0; c < 3; ++c)
+      volume.direction(r, c) = direction[3 * r + c];
   volume.allocate();
   if (static_cast<std::size_t>(scalars->GetNumberOfTuples()) != volume.voxel_count()) {
     throw InputError("voxel count does not match the dimensions", {file, "", ""});
@@ -129,7 +141,8 @@ void write_label_map_vti(const LabelMap& labels, const std::filesystem::path& pa
   fill_image(labels.image, *image);
   vtkNew<vtkStringArray> names;
   names->SetName("label_names");
-  for (const auto& [label, name] : labels.names) names->InsertNextValue(std::to_string(label) + "=" + name);
+  for (const auto& [label, name] : labels.names)
+    names->InsertNextValue(std::to_string(label) + "=" + name);
   vtkNew<vtkFieldData> field;
   field->AddArray(names);
   image->SetFieldData(field);
@@ -140,7 +153,8 @@ LabelMap read_label_map_vti(const std::filesystem::path& path) {
   LabelMap labels;
   labels.image = read_volume_vti(path);
   if (labels.image.scalar_type != ScalarType::UInt16) {
-    throw InputError("label map must hold unsigned 16-bit labels, found " + scalar_type_name(labels.image.scalar_type),
+    throw InputError("label map must hold unsigned 16-bit labels, found " +
+                         scalar_type_name(labels.image.scalar_type),
                      {path.string(), "", ""});
   }
   vtkNew<vtkXMLImageDataReader> reader;

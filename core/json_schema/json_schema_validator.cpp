@@ -10,15 +10,23 @@ namespace {
 
 std::string type_of(const nlohmann::json& value) {
   switch (value.type()) {
-    case nlohmann::json::value_t::null: return "null";
-    case nlohmann::json::value_t::boolean: return "boolean";
+    case nlohmann::json::value_t::null:
+      return "null";
+    case nlohmann::json::value_t::boolean:
+      return "boolean";
     case nlohmann::json::value_t::number_integer:
-    case nlohmann::json::value_t::number_unsigned: return "integer";
-    case nlohmann::json::value_t::number_float: return "number";
-    case nlohmann::json::value_t::string: return "string";
-    case nlohmann::json::value_t::array: return "array";
-    case nlohmann::json::value_t::object: return "object";
-    default: return "unknown";
+    case nlohmann::json::value_t::number_unsigned:
+      return "integer";
+    case nlohmann::json::value_t::number_float:
+      return "number";
+    case nlohmann::json::value_t::string:
+      return "string";
+    case nlohmann::json::value_t::array:
+      return "array";
+    case nlohmann::json::value_t::object:
+      return "object";
+    default:
+      return "unknown";
   }
 }
 
@@ -62,9 +70,11 @@ JsonSchemaValidator::JsonSchemaValidator(nlohmann::json schema) : schema_(std::m
 void JsonSchemaValidator::check_references(const nlohmann::json& schema) const {
   if (schema.is_object()) {
     if (const auto ref = schema.find("$ref"); ref != schema.end()) resolve(ref->get<std::string>());
-    for (const auto& [key, value] : schema.items()) check_references(value);
+    for (const auto& [key, value] : schema.items())
+      check_references(value);
   } else if (schema.is_array()) {
-    for (const auto& value : schema) check_references(value);
+    for (const auto& value : schema)
+      check_references(value);
   }
 }
 
@@ -88,7 +98,8 @@ std::vector<SchemaViolation> JsonSchemaValidator::validate(const nlohmann::json&
 }
 
 void JsonSchemaValidator::check(const nlohmann::json& schema, const nlohmann::json& instance,
-                                const std::string& pointer, std::vector<SchemaViolation>& out) const {
+                                const std::string& pointer,
+                                std::vector<SchemaViolation>& out) const {
   if (schema.is_boolean()) {
     if (!schema.get<bool>()) out.push_back({pointer, "no value is allowed here"});
     return;
@@ -98,20 +109,26 @@ void JsonSchemaValidator::check(const nlohmann::json& schema, const nlohmann::js
   }
   if (const auto type = schema.find("type"); type != schema.end()) {
     const std::vector<std::string> allowed =
-        type->is_array() ? type->get<std::vector<std::string>>() : std::vector<std::string>{type->get<std::string>()};
+        type->is_array() ? type->get<std::vector<std::string>>()
+                         : std::vector<std::string>{type->get<std::string>()};
     bool matches = false;
-    for (const auto& t : allowed) matches = matches || has_type(instance, t);
+    for (const auto& t : allowed)
+      matches = matches || has_type(instance, t);
     if (!matches) {
       std::string expected;
-      for (const auto& t : allowed) expected += (expected.empty() ? "" : " or ") + t;
+      for (const auto& t : allowed)
+        expected += (expected.empty() ? "" : " or ") + t;
       out.push_back({pointer, "expected " + expected + ", found " + type_of(instance)});
       return;  // the other keywords would only repeat the same mistake
     }
   }
   if (const auto values = schema.find("enum"); values != schema.end()) {
     bool found = false;
-    for (const auto& v : *values) found = found || v == instance;
-    if (!found) out.push_back({pointer, "value " + short_text(instance) + " is not one of " + short_text(*values)});
+    for (const auto& v : *values)
+      found = found || v == instance;
+    if (!found)
+      out.push_back(
+          {pointer, "value " + short_text(instance) + " is not one of " + short_text(*values)});
   }
   if (const auto value = schema.find("const"); value != schema.end() && *value != instance) {
     out.push_back({pointer, "value must be " + short_text(*value)});
@@ -119,38 +136,50 @@ void JsonSchemaValidator::check(const nlohmann::json& schema, const nlohmann::js
   if (instance.is_number()) {
     const double x = instance.get<double>();
     if (const auto m = schema.find("minimum"); m != schema.end() && x < m->get<double>())
-      out.push_back({pointer, "value " + short_text(instance) + " is below the minimum " + short_text(*m)});
+      out.push_back(
+          {pointer, "value " + short_text(instance) + " is below the minimum " + short_text(*m)});
     if (const auto m = schema.find("maximum"); m != schema.end() && x > m->get<double>())
-      out.push_back({pointer, "value " + short_text(instance) + " is above the maximum " + short_text(*m)});
+      out.push_back(
+          {pointer, "value " + short_text(instance) + " is above the maximum " + short_text(*m)});
     if (const auto m = schema.find("exclusiveMinimum"); m != schema.end() && x <= m->get<double>())
-      out.push_back({pointer, "value " + short_text(instance) + " must be greater than " + short_text(*m)});
+      out.push_back(
+          {pointer, "value " + short_text(instance) + " must be greater than " + short_text(*m)});
     if (const auto m = schema.find("exclusiveMaximum"); m != schema.end() && x >= m->get<double>())
-      out.push_back({pointer, "value " + short_text(instance) + " must be less than " + short_text(*m)});
+      out.push_back(
+          {pointer, "value " + short_text(instance) + " must be less than " + short_text(*m)});
   }
   if (instance.is_string()) {
     const auto& text = instance.get_ref<const std::string&>();
-    if (const auto m = schema.find("minLength"); m != schema.end() && text.size() < m->get<std::size_t>())
+    if (const auto m = schema.find("minLength");
+        m != schema.end() && text.size() < m->get<std::size_t>())
       out.push_back({pointer, "text is shorter than " + short_text(*m) + " characters"});
     if (const auto p = schema.find("pattern"); p != schema.end()) {
       if (!std::regex_search(text, std::regex(p->get<std::string>(), std::regex::ECMAScript))) {
-        out.push_back({pointer, "text " + short_text(instance) + " does not match " + p->get<std::string>()});
+        out.push_back(
+            {pointer, "text " + short_text(instance) + " does not match " + p->get<std::string>()});
       }
     }
   }
   if (instance.is_array()) {
-    if (const auto m = schema.find("minItems"); m != schema.end() && instance.size() < m->get<std::size_t>())
-      out.push_back({pointer, "needs at least " + short_text(*m) + " items, has " + std::to_string(instance.size())});
-    if (const auto m = schema.find("maxItems"); m != schema.end() && instance.size() > m->get<std::size_t>())
-      out.push_back({pointer, "allows at most " + short_text(*m) + " items, has " + std::to_string(instance.size())});
+    if (const auto m = schema.find("minItems");
+        m != schema.end() && instance.size() < m->get<std::size_t>())
+      out.push_back({pointer, "needs at least " + short_text(*m) + " items, has " +
+                                  std::to_string(instance.size())});
+    if (const auto m = schema.find("maxItems");
+        m != schema.end() && instance.size() > m->get<std::size_t>())
+      out.push_back({pointer, "allows at most " + short_text(*m) + " items, has " +
+                                  std::to_string(instance.size())});
     if (const auto items = schema.find("items"); items != schema.end()) {
-      for (std::size_t i = 0; i < instance.size(); ++i) check(*items, instance[i], pointer + "/" + std::to_string(i), out);
+      for (std::size_t i = 0; i < instance.size(); ++i)
+        check(*items, instance[i], pointer + "/" + std::to_string(i), out);
     }
   }
   if (instance.is_object()) {
     if (const auto required = schema.find("required"); required != schema.end()) {
       for (const auto& name : *required) {
         if (!instance.contains(name.get<std::string>())) {
-          out.push_back({pointer, "required member \"" + name.get<std::string>() + "\" is missing"});
+          out.push_back(
+              {pointer, "required member \"" + name.get<std::string>() + "\" is missing"});
         }
       }
     }

@@ -29,8 +29,8 @@ class JsonSchemaValidator {
   std::vector<SchemaViolation> validate(const nlohmann::json& instance) const;
 
  private:
-  void check(const nlohmann::json& schema, const nlohmann::json& instance, const std::string& pointer,
-             std::vector<SchemaViolation>& out) const;
+  void check(const nlohmann::json& schema, const nlohmann::json& instance,
+             const std::string& pointer, std::vector<SchemaViolation>& out) const;
   const nlohmann::json& resolve(const std::string& reference) const;
   void check_references(const nlohmann::json& schema) const;
 

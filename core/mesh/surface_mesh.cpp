@@ -28,7 +28,8 @@ double enclosed_volume(const SurfaceMesh& mesh) {
 
 BoundingBox bounds(const SurfaceMesh& mesh) {
   BoundingBox box;
-  for (const auto& v : mesh.vertices) box.add(v);
+  for (const auto& v : mesh.vertices)
+    box.add(v);
   return box;
 }
 
@@ -38,7 +39,8 @@ void compute_vertex_normals(SurfaceMesh& mesh) {
     const Vec3& a = mesh.vertices[t[0]];
     // The cross product's length is twice the area: area weighting comes for free.
     const Vec3 n = (mesh.vertices[t[1]] - a).cross(mesh.vertices[t[2]] - a);
-    for (const int v : t) mesh.normals[v] += n;
+    for (const int v : t)
+      mesh.normals[v] += n;
   }
   for (auto& n : mesh.normals) {
     const double length = n.norm();
@@ -63,15 +65,16 @@ void check_surface_mesh(const SurfaceMesh& mesh, const std::string& what) {
   const auto n = static_cast<int>(mesh.vertices.size());
   for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
     if (!mesh.vertices[i].allFinite()) {
-      throw InputError("vertex coordinate is not finite", {what, "", "vertex " + std::to_string(i)});
+      throw InputError("vertex coordinate is not finite",
+                       {what, "", "vertex " + std::to_string(i)});
     }
   }
   for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
     for (const int v : mesh.triangles[i]) {
       if (v < 0 || v >= n) {
-        throw InputError("triangle refers to vertex " + std::to_string(v) + " of " +
-                             std::to_string(n),
-                         {what, "", "triangle " + std::to_string(i)});
+        throw InputError(
+            "triangle refers to vertex " + std::to_string(v) + " of " + std::to_string(n),
+            {what, "", "triangle " + std::to_string(i)});
       }
     }
   }

@@ -20,7 +20,8 @@ double signed_volume(const TetMesh& mesh, int t) {
 
 double total_volume(const TetMesh& mesh) {
   double volume = 0.0;
-  for (std::size_t t = 0; t < mesh.tets.size(); ++t) volume += signed_volume(mesh, static_cast<int>(t));
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t)
+    volume += signed_volume(mesh, static_cast<int>(t));
   return volume;
 }
 
@@ -48,7 +49,8 @@ std::vector<double> lumped_node_masses(const TetMesh& mesh, double density) {
   std::vector<double> mass(mesh.nodes.size(), 0.0);
   for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
     const double quarter = 0.25 * density * std::abs(signed_volume(mesh, static_cast<int>(t)));
-    for (const int n : mesh.tets[t]) mass[n] += quarter;
+    for (const int n : mesh.tets[t])
+      mass[n] += quarter;
   }
   return mass;
 }
@@ -73,13 +75,16 @@ void check_tet_mesh(const TetMesh& mesh, const std::string& what) {
     }
   };
   for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
-    for (const int v : mesh.tets[t]) check_index(v, "tet " + std::to_string(t));
+    for (const int v : mesh.tets[t])
+      check_index(v, "tet " + std::to_string(t));
     if (!(signed_volume(mesh, static_cast<int>(t)) > 0.0)) {
-      throw InputError("tetrahedron is degenerate or inverted", {what, "", "tet " + std::to_string(t)});
+      throw InputError("tetrahedron is degenerate or inverted",
+                       {what, "", "tet " + std::to_string(t)});
     }
   }
   for (std::size_t f = 0; f < mesh.surface_faces.size(); ++f) {
-    for (const int v : mesh.surface_faces[f]) check_index(v, "surface face " + std::to_string(f));
+    for (const int v : mesh.surface_faces[f])
+      check_index(v, "surface face " + std::to_string(f));
   }
   if (!mesh.node_mass.empty() && mesh.node_mass.size() != mesh.nodes.size()) {
     throw InputError("node mass array length differs from node count", {what, "", ""});

@@ -42,16 +42,17 @@ struct LayerOptions {
 /// Vertex positions of layers 0 … layers (layer 0 is the surface). An open surface is offset
 /// below its normal side. Throws UsageError for layers < 1, a thickness that is not positive, or
 /// copies that fold (the thickness exceeds what the surface's curvature allows) — naming a vertex.
-std::vector<std::vector<Vec3>> layer_positions(const SurfaceMesh& surface, const LayerOptions& options);
+std::vector<std::vector<Vec3>> layer_positions(const SurfaceMesh& surface,
+                                               const LayerOptions& options);
 
 /// A KisMo mass-spring net. Knot l·n + i is vertex i of layer l (n vertices per layer).
 struct MassSpringNet {
   std::vector<Vec3> knots;
   int knots_per_layer = 0;
-  int layer_count = 0;                       ///< copies including the surface
-  std::vector<std::array<int, 2>> springs;   ///< unique, sorted by knot indices
-  std::vector<double> rest_length;           ///< m, one per spring
-  std::vector<Tetrahedron> tets;             ///< volumetric elements, positively oriented
+  int layer_count = 0;                      ///< copies including the surface
+  std::vector<std::array<int, 2>> springs;  ///< unique, sorted by knot indices
+  std::vector<double> rest_length;          ///< m, one per spring
+  std::vector<Tetrahedron> tets;            ///< volumetric elements, positively oriented
 };
 
 /// The net of `surface` and its copies. Each prism between neighbouring copies is split into

@@ -14,7 +14,8 @@ namespace {
 class PointGrid {
  public:
   PointGrid(const std::vector<Vec3>& points, double cell) : points_(points), cell_(cell) {
-    for (std::size_t i = 0; i < points.size(); ++i) cells_[key(cell_of(points[i]))].push_back(static_cast<int>(i));
+    for (std::size_t i = 0; i < points.size(); ++i)
+      cells_[key(cell_of(points[i]))].push_back(static_cast<int>(i));
   }
 
   /// Index of the nearest point within `radius` (≤ cell) of p, lowest index on ties, or −1.
@@ -40,12 +41,14 @@ class PointGrid {
 
  private:
   std::array<std::int64_t, 3> cell_of(const Vec3& p) const {
-    return {static_cast<std::int64_t>(std::floor(p.x() / cell_)), static_cast<std::int64_t>(std::floor(p.y() / cell_)),
+    return {static_cast<std::int64_t>(std::floor(p.x() / cell_)),
+            static_cast<std::int64_t>(std::floor(p.y() / cell_)),
             static_cast<std::int64_t>(std::floor(p.z() / cell_))};
   }
   static std::uint64_t key(const std::array<std::int64_t, 3>& c) {
     // The hash primes of Teschner et al. 2003 (DESIGN.md §5); collisions only cost time.
-    return static_cast<std::uint64_t>(c[0] * 73856093) ^ static_cast<std::uint64_t>(c[1] * 19349663) ^
+    return static_cast<std::uint64_t>(c[0] * 73856093) ^
+           static_cast<std::uint64_t>(c[1] * 19349663) ^
            static_cast<std::uint64_t>(c[2] * 83492791);
   }
 
@@ -57,14 +60,17 @@ class PointGrid {
 const SceneObject& find_connectable(const Scenario& scenario, const std::string& id) {
   const SceneObject* object = scenario.find_object(id);
   if (object == nullptr) throw UsageError("there is no object \"" + id + "\" to connect");
-  if (object->body.nodes.empty()) throw UsageError("object \"" + id + "\" has no simulation body whose knots could be connected");
+  if (object->body.nodes.empty())
+    throw UsageError("object \"" + id + "\" has no simulation body whose knots could be connected");
   return *object;
 }
 
 }  // namespace
 
-std::vector<std::array<int, 2>> nearest_knot_pairs(const std::vector<Vec3>& a, const std::vector<Vec3>& b, double within) {
-  if (!(within > 0.0) || !std::isfinite(within)) throw UsageError("connection distance must be positive");
+std::vector<std::array<int, 2>> nearest_knot_pairs(const std::vector<Vec3>& a,
+                                                   const std::vector<Vec3>& b, double within) {
+  if (!(within > 0.0) || !std::isfinite(within))
+    throw UsageError("connection distance must be positive");
   std::set<std::array<int, 2>> pairs;
   const PointGrid grid_a(a, within), grid_b(b, within);
   for (std::size_t i = 0; i < a.size(); ++i) {
@@ -78,10 +84,12 @@ std::vector<std::array<int, 2>> nearest_knot_pairs(const std::vector<Vec3>& a, c
   return {pairs.begin(), pairs.end()};
 }
 
-Connection connect_objects(const Scenario& scenario, const std::string& object_a, const std::string& object_b,
-                           double within, double stiffness) {
-  if (object_a == object_b) throw UsageError("object \"" + object_a + "\" cannot be connected to itself");
-  if (!(stiffness > 0.0) || !std::isfinite(stiffness)) throw UsageError("connection stiffness must be positive");
+Connection connect_objects(const Scenario& scenario, const std::string& object_a,
+                           const std::string& object_b, double within, double stiffness) {
+  if (object_a == object_b)
+    throw UsageError("object \"" + object_a + "\" cannot be connected to itself");
+  if (!(stiffness > 0.0) || !std::isfinite(stiffness))
+    throw UsageError("connection stiffness must be positive");
   const SceneObject& a = find_connectable(scenario, object_a);
   const SceneObject& b = find_connectable(scenario, object_b);
   Connection connection;
@@ -93,7 +101,8 @@ Connection connect_objects(const Scenario& scenario, const std::string& object_a
   return connection;
 }
 
-void assign_organ_group(Scenario& scenario, const std::string& group, const std::vector<std::string>& object_ids) {
+void assign_organ_group(Scenario& scenario, const std::string& group,
+                        const std::vector<std::string>& object_ids) {
   if (group.empty()) throw UsageError("an organ group needs a name");
   for (const auto& id : object_ids) {
     bool found = false;

@@ -27,14 +27,17 @@ Mesh to_cgal(const SurfaceMesh& surface, std::size_t tube) {
   Mesh mesh;
   std::vector<VertexIndex> vertices;
   vertices.reserve(surface.vertices.size());
-  for (const Vec3& p : surface.vertices) vertices.push_back(mesh.add_vertex(Kernel::Point_3(p.x(), p.y(), p.z())));
+  for (const Vec3& p : surface.vertices)
+    vertices.push_back(mesh.add_vertex(Kernel::Point_3(p.x(), p.y(), p.z())));
   for (const auto& t : surface.triangles) {
-    if (mesh.add_face(vertices[static_cast<std::size_t>(t[0])], vertices[static_cast<std::size_t>(t[1])],
+    if (mesh.add_face(vertices[static_cast<std::size_t>(t[0])],
+                      vertices[static_cast<std::size_t>(t[1])],
                       vertices[static_cast<std::size_t>(t[2])]) == Mesh::null_face()) {
       throw InputError("pipe tube " + std::to_string(tube) + " is not a manifold surface");
     }
   }
-  if (!CGAL::is_closed(mesh)) throw InputError("pipe tube " + std::to_string(tube) + " is not closed");
+  if (!CGAL::is_closed(mesh))
+    throw InputError("pipe tube " + std::to_string(tube) + " is not closed");
   return mesh;
 }
 
@@ -49,7 +52,8 @@ SurfaceMesh from_cgal(Mesh& mesh) {
   for (const auto f : mesh.faces()) {
     Triangle t{};
     int k = 0;
-    for (const VertexIndex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) t[static_cast<std::size_t>(k++)] = static_cast<int>(v.idx());
+    for (const VertexIndex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      t[static_cast<std::size_t>(k++)] = static_cast<int>(v.idx());
     surface.triangles.push_back(t);
   }
   return surface;
@@ -76,7 +80,8 @@ bool in_band(const Vec3& p, const std::vector<SeamPoint>& seam) {
 
 }  // namespace
 
-SurfaceMesh join_tubes(const std::vector<JunctionTube>& tubes, double target_edge, Progress& progress) {
+SurfaceMesh join_tubes(const std::vector<JunctionTube>& tubes, double target_edge,
+                       Progress& progress) {
   if (tubes.empty()) throw UsageError("no tubes to join");
   if (!(target_edge > 0.0)) throw UsageError("junction edge length must be positive");
   progress.begin_stage("joining pipes", static_cast<std::int64_t>(tubes.size()) + 1);
@@ -88,17 +93,20 @@ SurfaceMesh join_tubes(const std::vector<JunctionTube>& tubes, double target_edg
   for (std::size_t i = 1; i < tubes.size(); ++i) {
     Mesh tube = to_cgal(tubes[i].surface, i);
     if (PMP::does_self_intersect(tube)) {
-      throw InputError("pipe tube " + std::to_string(i) + " folds onto itself (its radius exceeds its bend radius somewhere)");
+      throw InputError("pipe tube " + std::to_string(i) +
+                       " folds onto itself (its radius exceeds its bend radius somewhere)");
     }
     bool manifold = false;
     try {
-      manifold = PMP::corefine_and_compute_union(result, tube, result, CGAL::parameters::edge_is_constrained_map(seam_edge),
-                                                 CGAL::parameters::default_values(),
-                                                 CGAL::parameters::edge_is_constrained_map(seam_edge));
+      manifold = PMP::corefine_and_compute_union(
+          result, tube, result, CGAL::parameters::edge_is_constrained_map(seam_edge),
+          CGAL::parameters::default_values(), CGAL::parameters::edge_is_constrained_map(seam_edge));
     } catch (const std::exception& e) {
-      throw InputError("pipe tube " + std::to_string(i) + " cannot be joined to the tubes before it: " + e.what());
+      throw InputError("pipe tube " + std::to_string(i) +
+                       " cannot be joined to the tubes before it: " + e.what());
     }
-    if (!manifold) throw InputError("joining pipe tube " + std::to_string(i) + " gives a non-manifold surface");
+    if (!manifold)
+      throw InputError("joining pipe tube " + std::to_string(i) + " gives a non-manifold surface");
     // Vertices of the new intersection curve take this tube's fillet width.
     for (const auto e : result.edges()) {
       if (!seam_edge[e]) continue;
@@ -125,7 +133,8 @@ SurfaceMesh join_tubes(const std::vector<JunctionTube>& tubes, double target_edg
         }
       }
     }
-    PMP::isotropic_remeshing(band_faces, target_edge, result, CGAL::parameters::number_of_iterations(3));
+    PMP::isotropic_remeshing(band_faces, target_edge, result,
+                             CGAL::parameters::number_of_iterations(3));
     result.collect_garbage();
     std::vector<VertexIndex> band_vertices;
     for (const VertexIndex v : result.vertices()) {

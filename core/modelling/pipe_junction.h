@@ -22,6 +22,7 @@ struct JunctionTube {
 /// `target_edge` (m) is the edge length of the remeshed bands. Throws InputError naming the
 /// tube when one is open or self-intersecting, when the union is not manifold, or when fairing
 /// fails; CancelledError through `progress`.
-SurfaceMesh join_tubes(const std::vector<JunctionTube>& tubes, double target_edge, Progress& progress = Progress::none());
+SurfaceMesh join_tubes(const std::vector<JunctionTube>& tubes, double target_edge,
+                       Progress& progress = Progress::none());
 
 }  // namespace viscera::core

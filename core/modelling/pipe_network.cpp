@@ -23,16 +23,22 @@ void check_pipe_network(const PipeNetwork& network, const std::string& what) {
   for (std::size_t b = 0; b < network.branches.size(); ++b) {
     const PipeBranch& branch = network.branches[b];
     const std::string name = what + ": branch " + std::to_string(b);
-    if (b == 0 && branch.parent != -1) throw UsageError(name + " is the root and cannot have a parent");
+    if (b == 0 && branch.parent != -1)
+      throw UsageError(name + " is the root and cannot have a parent");
     if (b > 0 && (branch.parent < 0 || branch.parent >= static_cast<int>(b))) {
-      throw UsageError(name + " must name an earlier branch as its parent, not " + std::to_string(branch.parent));
+      throw UsageError(name + " must name an earlier branch as its parent, not " +
+                       std::to_string(branch.parent));
     }
     if (branch.points.size() < (b == 0 ? 2U : 1U)) throw UsageError(name + " has too few points");
-    if (branch.radii.size() != branch.points.size()) throw UsageError(name + " needs one radius per point");
-    if (!(branch.attach >= 0.0 && branch.attach <= 1.0)) throw UsageError(name + " must attach at a fraction in [0, 1]");
+    if (branch.radii.size() != branch.points.size())
+      throw UsageError(name + " needs one radius per point");
+    if (!(branch.attach >= 0.0 && branch.attach <= 1.0))
+      throw UsageError(name + " must attach at a fraction in [0, 1]");
   }
-  if (!(network.blend >= 0.0 && network.blend <= 2.0)) throw UsageError(what + ": junction blend must be in [0, 2]");
-  for (std::size_t b = 0; b < network.branches.size(); ++b) check_pipe(branch_pipe(network, static_cast<int>(b)), what + ": branch " + std::to_string(b));
+  if (!(network.blend >= 0.0 && network.blend <= 2.0))
+    throw UsageError(what + ": junction blend must be in [0, 2]");
+  for (std::size_t b = 0; b < network.branches.size(); ++b)
+    check_pipe(branch_pipe(network, static_cast<int>(b)), what + ": branch " + std::to_string(b));
 }
 
 Vec3 attach_point(const PipeNetwork& network, int branch) {
@@ -61,7 +67,8 @@ PipePrimitive branch_pipe(const PipeNetwork& network, int branch) {
 
 std::vector<Vec3> network_control_points(const PipeNetwork& network) {
   std::vector<Vec3> points;
-  for (const auto& b : network.branches) points.insert(points.end(), b.points.begin(), b.points.end());
+  for (const auto& b : network.branches)
+    points.insert(points.end(), b.points.begin(), b.points.end());
   return points;
 }
 
@@ -72,16 +79,19 @@ std::pair<int, int> locate_control_point(const PipeNetwork& network, int index) 
     if (index >= first && index < first + count) return {static_cast<int>(b), index - first};
     first += count;
   }
-  throw UsageError("control point " + std::to_string(index) + " does not exist (the pipe has " + std::to_string(first) + ")");
+  throw UsageError("control point " + std::to_string(index) + " does not exist (the pipe has " +
+                   std::to_string(first) + ")");
 }
 
 namespace {
 
 /// Radius of branch b's parent at b's attach point.
 double parent_radius_at_attach(const PipeNetwork& network, int branch) {
-  const PipePrimitive parent = branch_pipe(network, network.branches[static_cast<std::size_t>(branch)].parent);
+  const PipePrimitive parent =
+      branch_pipe(network, network.branches[static_cast<std::size_t>(branch)].parent);
   const ArcLengthTable table(pipe_centre_line(parent));
-  const double t = table.parameter_at(network.branches[static_cast<std::size_t>(branch)].attach * table.length());
+  const double t = table.parameter_at(network.branches[static_cast<std::size_t>(branch)].attach *
+                                      table.length());
   return pipe_radius_at(parent, table.curve(), t);
 }
 
@@ -99,7 +109,8 @@ std::vector<double> nearest_branch(const PipeNetwork& network, const SurfaceMesh
     const double mean_radius = pipe.radii.front();
     const int n = std::max(2, static_cast<int>(std::ceil(table.length() / (0.25 * mean_radius))));
     for (const double t : even_arc_length_parameters(table, n)) {
-      samples.push_back({table.curve().point(t), pipe_radius_at(pipe, table.curve(), t), static_cast<int>(b)});
+      samples.push_back(
+          {table.curve().point(t), pipe_radius_at(pipe, table.curve(), t), static_cast<int>(b)});
     }
   }
   std::vector<double> label(mesh.vertices.size(), 0.0);
@@ -126,7 +137,8 @@ SurfaceMesh tessellate_pipe_network(const PipeNetwork& network, Progress& progre
     return mesh;
   }
   if (network.start_cap == PipeCap::Open || network.end_cap == PipeCap::Open) {
-    throw UsageError("a branching pipe needs closed caps: open tubes cannot be joined into one surface");
+    throw UsageError(
+        "a branching pipe needs closed caps: open tubes cannot be joined into one surface");
   }
   std::vector<JunctionTube> tubes;
   double edge = std::numeric_limits<double>::infinity();
@@ -146,8 +158,11 @@ SurfaceMesh tessellate_pipe_network(const PipeNetwork& network, Progress& progre
     tube.uvs.clear();
     tube.vertex_attributes.clear();
     double mean_radius = 0.0;
-    for (const double r : pipe.radii) mean_radius += r / static_cast<double>(pipe.radii.size());
-    edge = std::min(edge, network.axial_spacing > 0.0 ? network.axial_spacing : 2.0 * std::numbers::pi * mean_radius / network.ring_segments);
+    for (const double r : pipe.radii)
+      mean_radius += r / static_cast<double>(pipe.radii.size());
+    edge = std::min(edge, network.axial_spacing > 0.0
+                              ? network.axial_spacing
+                              : 2.0 * std::numbers::pi * mean_radius / network.ring_segments);
     tubes.push_back({std::move(tube), blend_width});
   }
   SurfaceMesh mesh = join_tubes(tubes, edge, progress);

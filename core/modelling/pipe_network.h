@@ -18,10 +18,11 @@ namespace viscera::core {
 /// One branch. A child's centre line starts at its attach point on the parent (derived, not a
 /// control point) and continues through its own points.
 struct PipeBranch {
-  std::vector<Vec3> points;   ///< own centre-line control points, m (root ≥ 2, child ≥ 1)
-  std::vector<double> radii;  ///< m, one per point; a child's first radius is also its radius at the parent
-  int parent = -1;            ///< an earlier branch, or −1 for the root (branch 0 only)
-  double attach = 1.0;        ///< where on the parent, as a fraction of its centre-line length
+  std::vector<Vec3> points;  ///< own centre-line control points, m (root ≥ 2, child ≥ 1)
+  std::vector<double>
+      radii;        ///< m, one per point; a child's first radius is also its radius at the parent
+  int parent = -1;  ///< an earlier branch, or −1 for the root (branch 0 only)
+  double attach = 1.0;  ///< where on the parent, as a fraction of its centre-line length
 
   bool operator==(const PipeBranch&) const = default;
 };
@@ -33,7 +34,7 @@ struct PipeNetwork {
   PipeCap end_cap = PipeCap::Flat;    ///< every branch's far end
   int ring_segments = 32;             ///< vertices around each cross-section
   double axial_spacing = 0.0;         ///< m between cross-sections; 0 = ring edge length
-  double blend = 0.6;                 ///< junction fillet half-width as a fraction of the child's radius
+  double blend = 0.6;  ///< junction fillet half-width as a fraction of the child's radius
 
   bool operator==(const PipeNetwork&) const = default;
 };
@@ -61,6 +62,7 @@ std::pair<int, int> locate_control_point(const PipeNetwork& network, int index);
 /// attribute "branch" holds the nearest branch of each vertex. Throws UsageError for bad
 /// input, InputError when a tube folds onto itself (radius above its bend radius) or the
 /// junctions cannot be joined; CancelledError through `progress`.
-SurfaceMesh tessellate_pipe_network(const PipeNetwork& network, Progress& progress = Progress::none());
+SurfaceMesh tessellate_pipe_network(const PipeNetwork& network,
+                                    Progress& progress = Progress::none());
 
 }  // namespace viscera::core

@@ -41,7 +41,8 @@ nlohmann::json parse_manifest(const std::string& text, const std::string& file) 
   try {
     return nlohmann::json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {
-    throw InputError("not valid JSON (syntax error at byte " + std::to_string(e.byte) + ")", {file, "", ""});
+    throw InputError("not valid JSON (syntax error at byte " + std::to_string(e.byte) + ")",
+                     {file, "", ""});
   }
 }
 
@@ -49,8 +50,9 @@ void check_format_and_migrate(nlohmann::json& manifest, const std::string& file)
   if (!manifest.is_object()) throw InputError("manifest must be a JSON object", {file, "", ""});
   const auto format = manifest.find("format");
   if (format == manifest.end() || *format != kPackageFormat) {
-    throw InputError(std::string("not a Viscera scenario package (format must be \"") + kPackageFormat + "\")",
-                     {file, "/format", ""});
+    throw InputError(
+        std::string("not a Viscera scenario package (format must be \"") + kPackageFormat + "\")",
+        {file, "/format", ""});
   }
   const auto version = manifest.find("version");
   if (version == manifest.end() || !version->is_number_integer() || version->get<int>() < 1) {
@@ -58,7 +60,8 @@ void check_format_and_migrate(nlohmann::json& manifest, const std::string& file)
   }
   int v = version->get<int>();
   if (v > kPackageVersion) {
-    throw UnsupportedVersionError("package version " + std::to_string(v) + " is newer than this Viscera reads (" +
+    throw UnsupportedVersionError("package version " + std::to_string(v) +
+                                      " is newer than this Viscera reads (" +
                                       std::to_string(kPackageVersion) + "); update Viscera",
                                   {file, "/version", ""});
   }
@@ -83,7 +86,8 @@ std::vector<PackageIssue> check_manifest_references(const nlohmann::json& manife
   const auto& files = manifest.at("files");
   const auto check_file = [&](const nlohmann::json& path, const std::string& pointer) {
     if (!files.contains(path.get<std::string>())) {
-      issues.push_back(manifest_issue(pointer, "file \"" + path.get<std::string>() + "\" is not listed in /files"));
+      issues.push_back(manifest_issue(
+          pointer, "file \"" + path.get<std::string>() + "\" is not listed in /files"));
     }
   };
   const auto keyed_ids = [&](const char* member) {
@@ -91,8 +95,10 @@ std::vector<PackageIssue> check_manifest_references(const nlohmann::json& manife
     for (const auto& [key, value] : member_or_empty_object(scenario, member).items()) {
       ids.insert(key);
       if (value.at("id") != key) {
-        issues.push_back(manifest_issue("/scenario/" + std::string(member) + "/" + escape_pointer_token(key) + "/id",
-                                        "id \"" + value.at("id").get<std::string>() + "\" differs from its key \"" + key + "\""));
+        issues.push_back(manifest_issue(
+            "/scenario/" + std::string(member) + "/" + escape_pointer_token(key) + "/id",
+            "id \"" + value.at("id").get<std::string>() + "\" differs from its key \"" + key +
+                "\""));
       }
     }
     return ids;
@@ -106,19 +112,23 @@ std::vector<PackageIssue> check_manifest_references(const nlohmann::json& manife
     const auto& o = object_list[i];
     const std::string pointer = "/scenario/objects/" + std::to_string(i);
     const std::string id = o.at("id").get<std::string>();
-    if (!objects.insert(id).second) issues.push_back(manifest_issue(pointer + "/id", "object id \"" + id + "\" is used twice"));
+    if (!objects.insert(id).second)
+      issues.push_back(manifest_issue(pointer + "/id", "object id \"" + id + "\" is used twice"));
     const std::string material = o.value("material", std::string());
     if (!material.empty() && !materials.contains(material)) {
-      issues.push_back(manifest_issue(pointer + "/material", "unknown material id \"" + material + "\""));
+      issues.push_back(
+          manifest_issue(pointer + "/material", "unknown material id \"" + material + "\""));
     }
     const std::string texture = o.value("texture", std::string());
     if (!texture.empty() && !textures.contains(texture)) {
-      issues.push_back(manifest_issue(pointer + "/texture", "unknown texture id \"" + texture + "\""));
+      issues.push_back(
+          manifest_issue(pointer + "/texture", "unknown texture id \"" + texture + "\""));
     }
     check_file(o.at("surface"), pointer + "/surface");
     if (o.at("body_kind") != "none") {
       if (!o.contains("body")) {
-        issues.push_back(manifest_issue(pointer, "object with body_kind " + o.at("body_kind").dump() + " names no body file"));
+        issues.push_back(manifest_issue(
+            pointer, "object with body_kind " + o.at("body_kind").dump() + " names no body file"));
       } else {
         check_file(o.at("body"), pointer + "/body");
       }
@@ -126,7 +136,8 @@ std::vector<PackageIssue> check_manifest_references(const nlohmann::json& manife
   }
   for (const auto& [key, texture] : member_or_empty_object(scenario, "textures").items()) {
     for (const auto& [map, path] : member_or_empty_object(texture, "maps").items()) {
-      check_file(path, "/scenario/textures/" + escape_pointer_token(key) + "/maps/" + escape_pointer_token(map));
+      check_file(path, "/scenario/textures/" + escape_pointer_token(key) + "/maps/" +
+                           escape_pointer_token(map));
     }
   }
 
@@ -136,8 +147,9 @@ std::vector<PackageIssue> check_manifest_references(const nlohmann::json& manife
       const std::string value = entries[i].value(member, std::string());
       if (value.empty() && !required) continue;
       if (!objects.contains(value)) {
-        issues.push_back(manifest_issue("/scenario/" + std::string(list) + "/" + std::to_string(i) + "/" + member,
-                                        "unknown object id \"" + value + "\""));
+        issues.push_back(manifest_issue(
+            "/scenario/" + std::string(list) + "/" + std::to_string(i) + "/" + member,
+            "unknown object id \"" + value + "\""));
       }
     }
   };
@@ -149,20 +161,24 @@ std::vector<PackageIssue> check_manifest_references(const nlohmann::json& manife
   check_object("active_deformations", "target_object", false);
 
   std::set<std::string> trees;
-  for (const auto& tree : member_or_empty_array(scenario, "vessel_trees")) trees.insert(tree.at("id").get<std::string>());
+  for (const auto& tree : member_or_empty_array(scenario, "vessel_trees"))
+    trees.insert(tree.at("id").get<std::string>());
   const auto& deformations = member_or_empty_array(scenario, "active_deformations");
   for (std::size_t i = 0; i < deformations.size(); ++i) {
     const auto& d = deformations[i];
     const std::string base = "/scenario/active_deformations/" + std::to_string(i);
     if (d.at("type") == "pulse") {
-      const std::string tree = member_or_empty_object(d, "pulse").value("vessel_tree", std::string());
+      const std::string tree =
+          member_or_empty_object(d, "pulse").value("vessel_tree", std::string());
       if (!tree.empty() && !trees.contains(tree)) {
-        issues.push_back(manifest_issue(base + "/pulse/vessel_tree", "unknown vessel tree id \"" + tree + "\""));
+        issues.push_back(
+            manifest_issue(base + "/pulse/vessel_tree", "unknown vessel tree id \"" + tree + "\""));
       }
     }
     if (!d.contains(d.at("type").get<std::string>())) {
-      issues.push_back(manifest_issue(base, "active deformation of type " + d.at("type").dump() + " has no \"" +
-                                                d.at("type").get<std::string>() + "\" member"));
+      issues.push_back(manifest_issue(base, "active deformation of type " + d.at("type").dump() +
+                                                " has no \"" + d.at("type").get<std::string>() +
+                                                "\" member"));
     }
   }
   return issues;

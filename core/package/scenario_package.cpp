@@ -7,6 +7,7 @@
 #include <set>
 #include <sstream>
 
+#include "core/atomic_replace.h"
 #include "core/error.h"
 #include "core/package/package_manifest.h"
 #include "core/package/vtk_mesh_io.h"
@@ -21,14 +22,13 @@ namespace fs = std::filesystem;
 
 constexpr ZipLimits kLimits{kMaxZipEntryBytes, kMaxPackageBytes};
 
-bool is_zip_path(const fs::path& path) { return path.extension() == ".vscz"; }
+bool is_zip_path(const fs::path& path) {
+  return path.extension() == ".vscz";
+}
 
-/// A unique sibling or temp name: "<base>.tmp-<pid>-<n>". Never part of the output.
+/// A unique hidden sibling name "<base>.tmp-<pid>-<n>". Never part of the output.
 fs::path temporary_sibling(const fs::path& target) {
-  static std::atomic<int> counter{0};
-  fs::path parent = target.parent_path().empty() ? fs::path(".") : target.parent_path();
-  return parent / ("." + target.filename().string() + ".tmp-" + std::to_string(getpid()) + "-" +
-                   std::to_string(counter.fetch_add(1)));
+  return staging_sibling(target, ".tmp-");
 }
 
 /// A folder that is removed when it goes out of scope, whatever happened.
@@ -62,23 +62,20 @@ void write_file(const fs::path& path, const std::string& bytes) {
   if (!out) throw OutputError("cannot write file", {path.string(), "", ""});
 }
 
-/// Replaces `target` by `staged` (a file or folder) so that at every moment either the old or
-/// the new package exists under the target name, never a mix.
+/// Replaces `target` by `staged` (a file or folder) so that at every moment, a crash included,
+/// either the old or the new package exists under the target name, never a mix; staging left
+/// by writers that were killed goes first.
 void move_into_place(const fs::path& staged, const fs::path& target) {
-  if (fs::exists(target)) {
-    const fs::path old = temporary_sibling(target);
-    fs::rename(target, old);
-    fs::rename(staged, target);
-    fs::remove_all(old);
-  } else {
-    fs::rename(staged, target);
-  }
+  replace_atomically(staged, target);
+  remove_abandoned_staging(target);
 }
 
 /// Writes the package's files into `folder` and returns the manifest.
-nlohmann::json write_package_files(const Scenario& scenario, const std::map<std::string, std::string>& extra_files,
+nlohmann::json write_package_files(const Scenario& scenario,
+                                   const std::map<std::string, std::string>& extra_files,
                                    const fs::path& folder, Progress& progress) {
-  progress.begin_stage("writing package", static_cast<std::int64_t>(scenario.objects.size() + extra_files.size()) + 1);
+  progress.begin_stage("writing package",
+                       static_cast<std::int64_t>(scenario.objects.size() + extra_files.size()) + 1);
   nlohmann::json files = nlohmann::json::object();
   const auto record = [&](const std::string& relative) {
     const fs::path path = folder / relative;
@@ -99,7 +96,10 @@ nlohmann::json write_package_files(const Scenario& scenario, const std::map<std:
     record(relative);
     progress.step();
   }
-  return {{"format", kPackageFormat}, {"version", kPackageVersion}, {"scenario", scenario_to_json(scenario)}, {"files", files}};
+  return {{"format", kPackageFormat},
+          {"version", kPackageVersion},
+          {"scenario", scenario_to_json(scenario)},
+          {"files", files}};
 }
 
 /// Checks the meshes against each other and the scenario: embeddings inside their bodies and
@@ -111,8 +111,9 @@ std::vector<PackageIssue> check_meshes(const Scenario& scenario) {
     for (std::size_t v = 0; v < o.embedding.tet.size(); ++v) {
       const int tet = o.embedding.tet[v];
       if (tet < 0 || tet >= static_cast<int>(o.body.tets.size())) {
-        issues.push_back({surface_file_of(o.id), "", "vertex " + std::to_string(v) + " is embedded in tet " +
-                                                         std::to_string(tet) + ", which the body does not have"});
+        issues.push_back({surface_file_of(o.id), "",
+                          "vertex " + std::to_string(v) + " is embedded in tet " +
+                              std::to_string(tet) + ", which the body does not have"});
         break;
       }
     }
@@ -120,7 +121,8 @@ std::vector<PackageIssue> check_meshes(const Scenario& scenario) {
       issues.push_back({surface_file_of(o.id), "", "embedding does not cover every vertex"});
     }
     if (o.body_kind == BodyKind::TetMesh && o.body.tets.empty()) {
-      issues.push_back({kManifestFile, "/scenario/objects/" + std::to_string(i), "tet-mesh body has no tetrahedra"});
+      issues.push_back({kManifestFile, "/scenario/objects/" + std::to_string(i),
+                        "tet-mesh body has no tetrahedra"});
     }
   }
   for (std::size_t c = 0; c < scenario.connections.size(); ++c) {
@@ -130,9 +132,12 @@ std::vector<PackageIssue> check_meshes(const Scenario& scenario) {
     if (a == nullptr || b == nullptr) continue;  // reported by the reference check
     for (std::size_t p = 0; p < connection.node_pairs.size(); ++p) {
       const auto& pair = connection.node_pairs[p];
-      if (pair[0] >= static_cast<int>(a->body.nodes.size()) || pair[1] >= static_cast<int>(b->body.nodes.size())) {
-        issues.push_back({kManifestFile, "/scenario/connections/" + std::to_string(c) + "/node_pairs/" + std::to_string(p),
-                          "node pair refers to a node the bodies do not have"});
+      if (pair[0] >= static_cast<int>(a->body.nodes.size()) ||
+          pair[1] >= static_cast<int>(b->body.nodes.size())) {
+        issues.push_back(
+            {kManifestFile,
+             "/scenario/connections/" + std::to_string(c) + "/node_pairs/" + std::to_string(p),
+             "node pair refers to a node the bodies do not have"});
       }
     }
   }
@@ -148,11 +153,13 @@ struct Inspection {
 
 /// Reads and checks a package folder. Throws InputError when it cannot be opened at all
 /// (no manifest, invalid JSON, wrong format, newer version); every other problem is an issue.
-Inspection inspect_folder(const fs::path& folder, const std::string& shown_name, bool stop_at_first, Progress& progress) {
+Inspection inspect_folder(const fs::path& folder, const std::string& shown_name, bool stop_at_first,
+                          Progress& progress) {
   Inspection result;
   const fs::path manifest_path = folder / kManifestFile;
   const std::string manifest_name = shown_name + "/" + kManifestFile;
-  if (!fs::is_regular_file(manifest_path)) throw InputError("package has no manifest.json", {shown_name, "", ""});
+  if (!fs::is_regular_file(manifest_path))
+    throw InputError("package has no manifest.json", {shown_name, "", ""});
   result.manifest = parse_manifest(read_file(manifest_path), manifest_name);
   check_format_and_migrate(result.manifest, manifest_name);
 
@@ -172,7 +179,8 @@ Inspection inspect_folder(const fs::path& folder, const std::string& shown_name,
     if (!fs::is_regular_file(path)) {
       result.issues.push_back({relative, "", "file listed in the manifest is missing"});
     } else if (sha256_file(path) != entry.at("sha256").get<std::string>()) {
-      result.issues.push_back({relative, "", "checksum differs from the manifest (file changed or corrupt)"});
+      result.issues.push_back(
+          {relative, "", "checksum differs from the manifest (file changed or corrupt)"});
     }
     progress.step();
     if (stop()) return result;
@@ -199,7 +207,8 @@ Inspection inspect_folder(const fs::path& folder, const std::string& shown_name,
     const std::string surface = objects[i].at("surface").get<std::string>();
     try {
       read_surface_vtp(folder / surface, object.surface, object.embedding);
-      if (objects[i].contains("body")) object.body = read_body_vtu(folder / objects[i].at("body").get<std::string>());
+      if (objects[i].contains("body"))
+        object.body = read_body_vtu(folder / objects[i].at("body").get<std::string>());
     } catch (const InputError& e) {
       result.issues.push_back({surface, "", e.what()});
       if (stop()) return result;
@@ -217,8 +226,9 @@ template <typename Work>
 auto with_package_folder(const fs::path& path, Work&& work) {
   if (fs::is_directory(path)) return work(path);
   if (!fs::exists(path)) throw InputError("no such package", {path.string(), "", ""});
-  const ScratchFolder scratch(fs::temp_directory_path() / ("viscera-" + std::to_string(getpid()) + "-" +
-                                                           temporary_sibling(path).filename().string()));
+  const ScratchFolder scratch(
+      fs::temp_directory_path() /
+      ("viscera-" + std::to_string(getpid()) + "-" + temporary_sibling(path).filename().string()));
   unzip_to_folder(path, scratch.path(), kLimits);
   return work(scratch.path());
 }
@@ -237,11 +247,13 @@ void write_package(const Scenario& scenario, const std::map<std::string, std::st
                    const fs::path& path, Progress& progress) {
   for (const auto& object : scenario.objects) {
     check_surface_mesh(object.surface, "object " + object.id + " surface");
-    if (object.body_kind != BodyKind::None) check_tet_mesh(object.body, "object " + object.id + " body");
+    if (object.body_kind != BodyKind::None)
+      check_tet_mesh(object.body, "object " + object.id + " body");
   }
   const fs::path staged = temporary_sibling(path);
   try {
-    const ScratchFolder folder(is_zip_path(path) ? temporary_sibling(path.string() + "-folder") : staged);
+    const ScratchFolder folder(is_zip_path(path) ? temporary_sibling(path.string() + "-folder")
+                                                 : staged);
     nlohmann::json manifest = write_package_files(scenario, extra_files, folder.path(), progress);
     // The package must be readable by the same rules that will read it back.
     std::vector<PackageIssue> issues = check_manifest_schema(manifest);
@@ -262,7 +274,8 @@ void write_package(const Scenario& scenario, const std::map<std::string, std::st
   } catch (const std::exception& e) {
     std::error_code ignored;
     fs::remove_all(staged, ignored);
-    throw OutputError(std::string("cannot write the package: ") + e.what(), {path.string(), "", ""});
+    throw OutputError(std::string("cannot write the package: ") + e.what(),
+                      {path.string(), "", ""});
   }
 }
 
@@ -284,7 +297,8 @@ PackageSummary summarize_package(const fs::path& path) {
   const std::string manifest_name = path.string() + "/" + kManifestFile;
   std::string text;
   if (fs::is_directory(path)) {
-    if (!fs::is_regular_file(path / kManifestFile)) throw InputError("package has no manifest.json", {path.string(), "", ""});
+    if (!fs::is_regular_file(path / kManifestFile))
+      throw InputError("package has no manifest.json", {path.string(), "", ""});
     text = read_file(path / kManifestFile);
   } else if (fs::exists(path)) {
     text = read_zip_entry(path, kManifestFile, kLimits);
@@ -321,7 +335,8 @@ PackageSummary summarize_package(const fs::path& path) {
 }
 
 void pack_package(const fs::path& folder, const fs::path& vscz) {
-  if (!fs::is_directory(folder)) throw InputError("not a package folder", {folder.string(), "", ""});
+  if (!fs::is_directory(folder))
+    throw InputError("not a package folder", {folder.string(), "", ""});
   const auto issues = inspect_folder(folder, folder.string(), true, Progress::none()).issues;
   if (!issues.empty()) throw_issue(folder.string(), issues.front());
   const fs::path staged = temporary_sibling(vscz);
@@ -336,7 +351,8 @@ void pack_package(const fs::path& folder, const fs::path& vscz) {
 }
 
 void unpack_package(const fs::path& vscz, const fs::path& folder) {
-  if (!fs::is_regular_file(vscz)) throw InputError("no such package archive", {vscz.string(), "", ""});
+  if (!fs::is_regular_file(vscz))
+    throw InputError("no such package archive", {vscz.string(), "", ""});
   const fs::path staged = temporary_sibling(folder);
   try {
     fs::create_directories(staged);

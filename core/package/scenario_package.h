@@ -29,8 +29,8 @@ inline constexpr int kPackageVersion = 1;
 
 /// Zip entries larger than this (uncompressed) are refused, and so are archives whose entries
 /// add up to more than kMaxPackageBytes.
-inline constexpr std::uint64_t kMaxZipEntryBytes = 2ULL << 30;   // 2 GiB
-inline constexpr std::uint64_t kMaxPackageBytes = 8ULL << 30;    // 8 GiB
+inline constexpr std::uint64_t kMaxZipEntryBytes = 2ULL << 30;  // 2 GiB
+inline constexpr std::uint64_t kMaxPackageBytes = 8ULL << 30;   // 8 GiB
 
 /// One problem found by validate_package().
 struct PackageIssue {

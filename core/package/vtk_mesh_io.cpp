@@ -38,7 +38,8 @@ std::vector<Vec3> from_points(vtkPoints* points) {
   std::vector<Vec3> positions;
   if (points == nullptr) return positions;
   positions.resize(static_cast<std::size_t>(points->GetNumberOfPoints()));
-  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i) points->GetPoint(i, positions[i].data());
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+    points->GetPoint(i, positions[i].data());
   return positions;
 }
 
@@ -69,12 +70,14 @@ void write_deterministic(Writer& writer, const std::filesystem::path& path) {
   writer.EncodeAppendedDataOff();
   writer.SetCompressorTypeToNone();
   writer.SetHeaderTypeToUInt64();
-  if (writer.Write() != 1) throw OutputError("VTK could not write the file", {path.string(), "", ""});
+  if (writer.Write() != 1)
+    throw OutputError("VTK could not write the file", {path.string(), "", ""});
 }
 
 template <typename Reader>
 void read_checked(Reader& reader, const std::filesystem::path& path) {
-  if (!std::filesystem::is_regular_file(path)) throw InputError("file is missing", {path.string(), "", ""});
+  if (!std::filesystem::is_regular_file(path))
+    throw InputError("file is missing", {path.string(), "", ""});
   reader.SetFileName(path.string().c_str());
   const ScopedVtkSilence silence;  // the failure is reported below, once, naming the file
   reader.Update();
@@ -98,12 +101,14 @@ void surface_to_polydata(const SurfaceMesh& surface, const SurfaceEmbedding& emb
   vtkPointData* data = polydata.GetPointData();
   if (!surface.normals.empty()) {
     auto normals = double_array("Normals", 3, n);
-    for (std::size_t i = 0; i < n; ++i) normals->SetTuple(static_cast<vtkIdType>(i), surface.normals[i].data());
+    for (std::size_t i = 0; i < n; ++i)
+      normals->SetTuple(static_cast<vtkIdType>(i), surface.normals[i].data());
     data->SetNormals(normals);
   }
   if (!surface.uvs.empty()) {
     auto uvs = double_array("UV", 2, n);
-    for (std::size_t i = 0; i < n; ++i) uvs->SetTuple(static_cast<vtkIdType>(i), surface.uvs[i].data());
+    for (std::size_t i = 0; i < n; ++i)
+      uvs->SetTuple(static_cast<vtkIdType>(i), surface.uvs[i].data());
     data->SetTCoords(uvs);
   }
   if (!embedding.empty()) {
@@ -120,7 +125,8 @@ void surface_to_polydata(const SurfaceMesh& surface, const SurfaceEmbedding& emb
   }
   for (const auto& [name, values] : surface.vertex_attributes) {
     auto array = double_array(name.c_str(), 1, n);
-    for (std::size_t i = 0; i < n; ++i) array->SetValue(static_cast<vtkIdType>(i), values[i]);
+    for (std::size_t i = 0; i < n; ++i)
+      array->SetValue(static_cast<vtkIdType>(i), values[i]);
     data->AddArray(array);
   }
 }
@@ -146,11 +152,13 @@ void polydata_to_surface(vtkPolyData& polydata, const std::string& what, Surface
   vtkPointData* data = polydata.GetPointData();
   if (vtkDataArray* normals = checked_array(data, "Normals", 3, n, what)) {
     surface.normals.resize(static_cast<std::size_t>(n));
-    for (vtkIdType i = 0; i < n; ++i) normals->GetTuple(i, surface.normals[i].data());
+    for (vtkIdType i = 0; i < n; ++i)
+      normals->GetTuple(i, surface.normals[i].data());
   }
   if (vtkDataArray* uvs = checked_array(data, "UV", 2, n, what)) {
     surface.uvs.resize(static_cast<std::size_t>(n));
-    for (vtkIdType i = 0; i < n; ++i) uvs->GetTuple(i, surface.uvs[i].data());
+    for (vtkIdType i = 0; i < n; ++i)
+      uvs->GetTuple(i, surface.uvs[i].data());
   }
   vtkDataArray* tets = checked_array(data, "embedding_tet", 1, n, what);
   vtkDataArray* weights = checked_array(data, "embedding_weights", 4, n, what);
@@ -175,7 +183,8 @@ void polydata_to_surface(vtkPolyData& polydata, const std::string& what, Surface
     if (array->GetNumberOfComponents() != 1 || array->GetNumberOfTuples() != n) continue;
     auto& values = surface.vertex_attributes[name];
     values.resize(static_cast<std::size_t>(n));
-    for (vtkIdType i = 0; i < n; ++i) values[i] = array->GetComponent(i, 0);
+    for (vtkIdType i = 0; i < n; ++i)
+      values[i] = array->GetComponent(i, 0);
   }
   check_surface_mesh(surface, what);
 }
@@ -190,21 +199,24 @@ void tet_mesh_to_grid(const TetMesh& body, vtkUnstructuredGrid& grid) {
   }
   if (!body.node_mass.empty()) {
     auto mass = double_array("node_mass", 1, n);
-    for (std::size_t i = 0; i < n; ++i) mass->SetValue(static_cast<vtkIdType>(i), body.node_mass[i]);
+    for (std::size_t i = 0; i < n; ++i)
+      mass->SetValue(static_cast<vtkIdType>(i), body.node_mass[i]);
     grid.GetPointData()->AddArray(mass);
   }
   if (!body.fixed.empty()) {
     vtkNew<vtkUnsignedCharArray> fixed;
     fixed->SetName("fixed");
     fixed->SetNumberOfTuples(static_cast<vtkIdType>(n));
-    for (std::size_t i = 0; i < n; ++i) fixed->SetValue(static_cast<vtkIdType>(i), body.fixed[i]);
+    for (std::size_t i = 0; i < n; ++i)
+      fixed->SetValue(static_cast<vtkIdType>(i), body.fixed[i]);
     grid.GetPointData()->AddArray(fixed);
   }
   if (!body.tet_labels.empty()) {
     vtkNew<vtkIntArray> labels;
     labels->SetName("tet_label");
     labels->SetNumberOfTuples(static_cast<vtkIdType>(body.tet_labels.size()));
-    for (std::size_t i = 0; i < body.tet_labels.size(); ++i) labels->SetValue(static_cast<vtkIdType>(i), body.tet_labels[i]);
+    for (std::size_t i = 0; i < body.tet_labels.size(); ++i)
+      labels->SetValue(static_cast<vtkIdType>(i), body.tet_labels[i]);
     grid.GetCellData()->AddArray(labels);
   }
   vtkNew<vtkIdTypeArray> faces;
@@ -212,7 +224,8 @@ void tet_mesh_to_grid(const TetMesh& body, vtkUnstructuredGrid& grid) {
   faces->SetNumberOfComponents(3);
   faces->SetNumberOfTuples(static_cast<vtkIdType>(body.surface_faces.size()));
   for (std::size_t f = 0; f < body.surface_faces.size(); ++f) {
-    for (int c = 0; c < 3; ++c) faces->SetComponent(static_cast<vtkIdType>(f), c, body.surface_faces[f][c]);
+    for (int c = 0; c < 3; ++c)
+      faces->SetComponent(static_cast<vtkIdType>(f), c, body.surface_faces[f][c]);
   }
   vtkNew<vtkFieldData> field;
   field->AddArray(faces);
@@ -234,15 +247,19 @@ TetMesh grid_to_tet_mesh(vtkUnstructuredGrid& grid, const std::string& what) {
   }
   if (vtkDataArray* mass = checked_array(grid.GetPointData(), "node_mass", 1, n, what)) {
     body.node_mass.resize(static_cast<std::size_t>(n));
-    for (vtkIdType i = 0; i < n; ++i) body.node_mass[i] = mass->GetComponent(i, 0);
+    for (vtkIdType i = 0; i < n; ++i)
+      body.node_mass[i] = mass->GetComponent(i, 0);
   }
   if (vtkDataArray* fixed = checked_array(grid.GetPointData(), "fixed", 1, n, what)) {
     body.fixed.resize(static_cast<std::size_t>(n));
-    for (vtkIdType i = 0; i < n; ++i) body.fixed[i] = fixed->GetComponent(i, 0) != 0.0 ? 1 : 0;
+    for (vtkIdType i = 0; i < n; ++i)
+      body.fixed[i] = fixed->GetComponent(i, 0) != 0.0 ? 1 : 0;
   }
-  if (vtkDataArray* labels = checked_array(grid.GetCellData(), "tet_label", 1, grid.GetNumberOfCells(), what)) {
+  if (vtkDataArray* labels =
+          checked_array(grid.GetCellData(), "tet_label", 1, grid.GetNumberOfCells(), what)) {
     body.tet_labels.resize(static_cast<std::size_t>(grid.GetNumberOfCells()));
-    for (vtkIdType i = 0; i < grid.GetNumberOfCells(); ++i) body.tet_labels[i] = static_cast<int>(labels->GetComponent(i, 0));
+    for (vtkIdType i = 0; i < grid.GetNumberOfCells(); ++i)
+      body.tet_labels[i] = static_cast<int>(labels->GetComponent(i, 0));
   }
   if (vtkFieldData* field = grid.GetFieldData()) {
     if (vtkDataArray* faces = field->GetArray("surface_faces")) {
@@ -251,7 +268,8 @@ TetMesh grid_to_tet_mesh(vtkUnstructuredGrid& grid, const std::string& what) {
       }
       body.surface_faces.resize(static_cast<std::size_t>(faces->GetNumberOfTuples()));
       for (vtkIdType f = 0; f < faces->GetNumberOfTuples(); ++f) {
-        for (int c = 0; c < 3; ++c) body.surface_faces[f][c] = static_cast<int>(faces->GetComponent(f, c));
+        for (int c = 0; c < 3; ++c)
+          body.surface_faces[f][c] = static_cast<int>(faces->GetComponent(f, c));
       }
     }
   }

@@ -2,10 +2,12 @@
 /// Visual surfaces and simulation bodies as VTK XML files (DESIGN.md §4), so that any user can
 /// open a package's meshes in ParaView.
 ///
+// clang-format off
 /// | file        | VTK type            | arrays                                                   |
 /// |-------------|---------------------|----------------------------------------------------------|
 /// | surface.vtp | vtkPolyData         | points (float64), triangles; point data "Normals" (3), "UV" (2), "embedding_tet" (int64), "embedding_weights" (4), and one float64 array per vertex attribute |
 /// | body.vtu    | vtkUnstructuredGrid | points (float64), VTK_TETRA cells; point data "node_mass" (kg), "fixed" (uint8); cell data "tet_label" (int32); field data "surface_faces" (int64, 3 per face) |
+// clang-format on
 ///
 /// Files are written uncompressed in appended raw binary: the same mesh gives the same bytes.
 

@@ -67,29 +67,38 @@ void zip_folder(const std::filesystem::path& folder, const std::filesystem::path
 
   int error_code = 0;
   zip_t* raw = zip_open(archive.string().c_str(), ZIP_CREATE | ZIP_TRUNCATE, &error_code);
-  if (raw == nullptr) throw OutputError("cannot create the zip archive", {archive.string(), "", ""});
+  if (raw == nullptr)
+    throw OutputError("cannot create the zip archive", {archive.string(), "", ""});
   ArchivePtr handle(raw);
   for (const auto& relative : files) {
     const std::string name = relative.generic_string();
     zip_source_t* source = zip_source_file(raw, (folder / relative).string().c_str(), 0, -1);
-    if (source == nullptr) throw OutputError("cannot read " + name + ": " + libzip_error(raw), {archive.string(), "", ""});
-    const zip_int64_t index = zip_file_add(raw, name.c_str(), source, ZIP_FL_ENC_UTF_8 | ZIP_FL_OVERWRITE);
+    if (source == nullptr)
+      throw OutputError("cannot read " + name + ": " + libzip_error(raw),
+                        {archive.string(), "", ""});
+    const zip_int64_t index =
+        zip_file_add(raw, name.c_str(), source, ZIP_FL_ENC_UTF_8 | ZIP_FL_OVERWRITE);
     if (index < 0) {
       zip_source_free(source);
-      throw OutputError("cannot add " + name + ": " + libzip_error(raw), {archive.string(), "", ""});
+      throw OutputError("cannot add " + name + ": " + libzip_error(raw),
+                        {archive.string(), "", ""});
     }
     const auto i = static_cast<zip_uint64_t>(index);
     if (zip_set_file_compression(raw, i, ZIP_CM_DEFLATE, 6) != 0 ||
         zip_file_set_mtime(raw, i, kFixedTimestamp, 0) != 0 ||
         zip_file_set_external_attributes(raw, i, 0, ZIP_OPSYS_UNIX, kRegularFileMode << 16) != 0) {
-      throw OutputError("cannot set attributes of " + name + ": " + libzip_error(raw), {archive.string(), "", ""});
+      throw OutputError("cannot set attributes of " + name + ": " + libzip_error(raw),
+                        {archive.string(), "", ""});
     }
   }
-  if (zip_close(raw) != 0) throw OutputError("cannot write the zip archive: " + libzip_error(raw), {archive.string(), "", ""});
+  if (zip_close(raw) != 0)
+    throw OutputError("cannot write the zip archive: " + libzip_error(raw),
+                      {archive.string(), "", ""});
   (void)handle.release();  // zip_close freed it
 }
 
-std::vector<std::string> checked_zip_entries(const std::filesystem::path& archive, const ZipLimits& limits) {
+std::vector<std::string> checked_zip_entries(const std::filesystem::path& archive,
+                                             const ZipLimits& limits) {
   const ArchivePtr handle = open_for_reading(archive);
   const std::string file = archive.string();
   const zip_int64_t count = zip_get_num_entries(handle.get(), 0);
@@ -99,21 +108,25 @@ std::vector<std::string> checked_zip_entries(const std::filesystem::path& archiv
   for (zip_int64_t i = 0; i < count; ++i) {
     zip_stat_t stat;
     zip_stat_init(&stat);
-    if (zip_stat_index(handle.get(), static_cast<zip_uint64_t>(i), 0, &stat) != 0 || (stat.valid & ZIP_STAT_NAME) == 0) {
+    if (zip_stat_index(handle.get(), static_cast<zip_uint64_t>(i), 0, &stat) != 0 ||
+        (stat.valid & ZIP_STAT_NAME) == 0) {
       throw InputError("entry " + std::to_string(i) + " cannot be read", {file, "", ""});
     }
     const std::string name = stat.name;
     if (is_unsafe_path(name)) {
-      throw InputError("entry \"" + name + "\" points outside the package (absolute path or \"..\"); refused",
-                       {file, "", name});
+      throw InputError(
+          "entry \"" + name + "\" points outside the package (absolute path or \"..\"); refused",
+          {file, "", name});
     }
     zip_uint8_t opsys = 0;
     zip_uint32_t attributes = 0;
-    if (zip_file_get_external_attributes(handle.get(), static_cast<zip_uint64_t>(i), 0, &opsys, &attributes) == 0 &&
+    if (zip_file_get_external_attributes(handle.get(), static_cast<zip_uint64_t>(i), 0, &opsys,
+                                         &attributes) == 0 &&
         opsys == ZIP_OPSYS_UNIX && ((attributes >> 16) & S_IFMT) == S_IFLNK) {
       throw InputError("entry \"" + name + "\" is a symbolic link; refused", {file, "", name});
     }
-    if (!seen.insert(name).second) throw InputError("entry \"" + name + "\" appears twice", {file, "", name});
+    if (!seen.insert(name).second)
+      throw InputError("entry \"" + name + "\" appears twice", {file, "", name});
     if ((stat.valid & ZIP_STAT_SIZE) != 0) {
       if (stat.size > limits.max_entry_bytes) {
         throw InputError("entry \"" + name + "\" unpacks to " + std::to_string(stat.size) +
@@ -122,7 +135,8 @@ std::vector<std::string> checked_zip_entries(const std::filesystem::path& archiv
       }
       total += stat.size;
       if (total > limits.max_total_bytes) {
-        throw InputError("archive unpacks to more than the limit of " + std::to_string(limits.max_total_bytes) + " bytes",
+        throw InputError("archive unpacks to more than the limit of " +
+                             std::to_string(limits.max_total_bytes) + " bytes",
                          {file, "", ""});
       }
     }
@@ -131,14 +145,16 @@ std::vector<std::string> checked_zip_entries(const std::filesystem::path& archiv
   return names;
 }
 
-std::string read_zip_entry(const std::filesystem::path& archive, const std::string& name, const ZipLimits& limits) {
+std::string read_zip_entry(const std::filesystem::path& archive, const std::string& name,
+                           const ZipLimits& limits) {
   const auto names = checked_zip_entries(archive, limits);
   if (std::find(names.begin(), names.end(), name) == names.end()) {
     throw InputError("archive has no entry \"" + name + "\"", {archive.string(), "", name});
   }
   const ArchivePtr handle = open_for_reading(archive);
   zip_file_t* entry = zip_fopen(handle.get(), name.c_str(), 0);
-  if (entry == nullptr) throw InputError("entry \"" + name + "\" cannot be opened", {archive.string(), "", name});
+  if (entry == nullptr)
+    throw InputError("entry \"" + name + "\" cannot be opened", {archive.string(), "", name});
   std::string bytes;
   std::vector<char> buffer(1 << 16);
   zip_int64_t got = 0;
@@ -148,7 +164,8 @@ std::string read_zip_entry(const std::filesystem::path& archive, const std::stri
   }
   zip_fclose(entry);
   if (got < 0 || bytes.size() > limits.max_entry_bytes) {
-    throw InputError("entry \"" + name + "\" is corrupt or too large", {archive.string(), "", name});
+    throw InputError("entry \"" + name + "\" is corrupt or too large",
+                     {archive.string(), "", name});
   }
   return bytes;
 }
@@ -167,7 +184,8 @@ void unzip_to_folder(const std::filesystem::path& archive, const std::filesystem
     }
     std::filesystem::create_directories(target.parent_path());
     zip_file_t* entry = zip_fopen(handle.get(), name.c_str(), 0);
-    if (entry == nullptr) throw InputError("entry \"" + name + "\" cannot be opened", {file, "", name});
+    if (entry == nullptr)
+      throw InputError("entry \"" + name + "\" cannot be opened", {file, "", name});
     std::ofstream out(target, std::ios::binary);
     std::uint64_t written = 0;
     zip_int64_t got = 0;
@@ -183,7 +201,8 @@ void unzip_to_folder(const std::filesystem::path& archive, const std::filesystem
     const bool read_failed = got < 0;
     zip_fclose(entry);
     if (read_failed) throw InputError("entry \"" + name + "\" is corrupt", {file, "", name});
-    if (!out) throw OutputError("cannot write " + target.string(), {destination.string(), "", name});
+    if (!out)
+      throw OutputError("cannot write " + target.string(), {destination.string(), "", name});
   }
 }
 

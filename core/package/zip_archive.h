@@ -23,11 +23,13 @@ struct ZipLimits {
 /// Names of the entries of `archive` after the safety checks: no absolute paths, no ".."
 /// components, no symbolic links, no duplicate names, no entry or total over the limits.
 /// Throws InputError naming the archive and the offending entry.
-std::vector<std::string> checked_zip_entries(const std::filesystem::path& archive, const ZipLimits& limits);
+std::vector<std::string> checked_zip_entries(const std::filesystem::path& archive,
+                                             const ZipLimits& limits);
 
 /// The bytes of one entry, after checked_zip_entries(); throws InputError naming the archive
 /// when the entry is missing or corrupt.
-std::string read_zip_entry(const std::filesystem::path& archive, const std::string& name, const ZipLimits& limits);
+std::string read_zip_entry(const std::filesystem::path& archive, const std::string& name,
+                           const ZipLimits& limits);
 
 /// Extracts `archive` into the existing empty folder `destination` after checked_zip_entries().
 /// Throws InputError naming the archive and entry, OutputError naming the destination.

@@ -22,7 +22,8 @@ double wendland(double r) {
 }  // namespace
 
 std::vector<Vec3> ball_control_directions(int control_level) {
-  if (control_level < 0 || control_level > 2) throw UsageError("ball control level must be 0, 1 or 2");
+  if (control_level < 0 || control_level > 2)
+    throw UsageError("ball control level must be 0, 1 or 2");
   return make_icosphere(1.0, control_level).vertices;
 }
 
@@ -35,25 +36,32 @@ BallPrimitive make_ball(const Vec3& center, double radius, int control_level, in
   ball.radius = radius;
   ball.control_level = control_level;
   ball.subdivisions = subdivisions;
-  for (const Vec3& d : ball_control_directions(control_level)) ball.control_points.push_back(center + radius * d);
+  for (const Vec3& d : ball_control_directions(control_level))
+    ball.control_points.push_back(center + radius * d);
   return ball;
 }
 
 void check_ball(const BallPrimitive& ball, const std::string& what) {
-  if (!(ball.radius > 0.0) || !std::isfinite(ball.radius)) throw UsageError(what + ": ball radius must be positive");
-  if (ball.control_level < 0 || ball.control_level > 2) throw UsageError(what + ": ball control level must be 0, 1 or 2");
-  if (ball.subdivisions < 0 || ball.subdivisions > 7) throw UsageError(what + ": ball subdivisions must be in [0, 7]");
+  if (!(ball.radius > 0.0) || !std::isfinite(ball.radius))
+    throw UsageError(what + ": ball radius must be positive");
+  if (ball.control_level < 0 || ball.control_level > 2)
+    throw UsageError(what + ": ball control level must be 0, 1 or 2");
+  if (ball.subdivisions < 0 || ball.subdivisions > 7)
+    throw UsageError(what + ": ball subdivisions must be in [0, 7]");
   const std::size_t expected = ball_control_directions(ball.control_level).size();
   if (ball.control_points.size() != expected) {
-    throw UsageError(what + ": a level-" + std::to_string(ball.control_level) + " ball has " + std::to_string(expected) +
-                     " control points, not " + std::to_string(ball.control_points.size()));
+    throw UsageError(what + ": a level-" + std::to_string(ball.control_level) + " ball has " +
+                     std::to_string(expected) + " control points, not " +
+                     std::to_string(ball.control_points.size()));
   }
   for (std::size_t i = 0; i < ball.control_points.size(); ++i) {
-    if (!ball.control_points[i].allFinite()) throw UsageError(what + ": control point " + std::to_string(i) + " is not finite");
+    if (!ball.control_points[i].allFinite())
+      throw UsageError(what + ": control point " + std::to_string(i) + " is not finite");
   }
 }
 
-BallShape::BallShape(const BallPrimitive& ball) : ball_(ball), directions_(ball_control_directions(ball.control_level)) {
+BallShape::BallShape(const BallPrimitive& ball)
+    : ball_(ball), directions_(ball_control_directions(ball.control_level)) {
   check_ball(ball, "ball");
   const auto n = static_cast<int>(directions_.size());
   // Support: three nearest-neighbour spacings, so an edit stays local on fine control sets,
@@ -62,7 +70,10 @@ BallShape::BallShape(const BallPrimitive& ball) : ball_(ball), directions_(ball_
   for (int i = 0; i < n; ++i) {
     double nearest = std::numeric_limits<double>::infinity();
     for (int j = 0; j < n; ++j) {
-      if (j != i) nearest = std::min(nearest, (directions_[static_cast<std::size_t>(i)] - directions_[static_cast<std::size_t>(j)]).norm());
+      if (j != i)
+        nearest = std::min(nearest, (directions_[static_cast<std::size_t>(i)] -
+                                     directions_[static_cast<std::size_t>(j)])
+                                        .norm());
     }
     spacing = std::max(spacing, nearest);
   }
@@ -74,17 +85,22 @@ BallShape::BallShape(const BallPrimitive& ball) : ball_(ball), directions_(ball_
   Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(n + 4, 3);
   for (int i = 0; i < n; ++i) {
     const Vec3& di = directions_[static_cast<std::size_t>(i)];
-    for (int j = 0; j < n; ++j) system(i, j) = wendland((di - directions_[static_cast<std::size_t>(j)]).norm() / support_);
+    for (int j = 0; j < n; ++j)
+      system(i, j) = wendland((di - directions_[static_cast<std::size_t>(j)]).norm() / support_);
     system(i, n) = system(n, i) = 1.0;
-    for (int c = 0; c < 3; ++c) system(i, n + 1 + c) = system(n + 1 + c, i) = di[c];
-    const Vec3 displacement = ball.control_points[static_cast<std::size_t>(i)] - (ball.center + ball.radius * di);
+    for (int c = 0; c < 3; ++c)
+      system(i, n + 1 + c) = system(n + 1 + c, i) = di[c];
+    const Vec3 displacement =
+        ball.control_points[static_cast<std::size_t>(i)] - (ball.center + ball.radius * di);
     rhs.row(i) = displacement.transpose();
   }
   const Eigen::MatrixXd solution = system.fullPivLu().solve(rhs);
   weights_.resize(static_cast<std::size_t>(n));
-  for (int i = 0; i < n; ++i) weights_[static_cast<std::size_t>(i)] = solution.row(i).transpose();
+  for (int i = 0; i < n; ++i)
+    weights_[static_cast<std::size_t>(i)] = solution.row(i).transpose();
   constant_ = solution.row(n).transpose();
-  for (int c = 0; c < 3; ++c) linear_.col(c) = solution.row(n + 1 + c).transpose();
+  for (int c = 0; c < 3; ++c)
+    linear_.col(c) = solution.row(n + 1 + c).transpose();
 }
 
 Vec3 BallShape::point(const Vec3& direction) const {
@@ -100,7 +116,8 @@ Vec3 BallShape::point(const Vec3& direction) const {
 SurfaceMesh tessellate_ball(const BallPrimitive& ball) {
   const BallShape shape(ball);
   SurfaceMesh mesh = make_icosphere(1.0, ball.subdivisions);
-  for (auto& v : mesh.vertices) v = shape.point(v);
+  for (auto& v : mesh.vertices)
+    v = shape.point(v);
   compute_vertex_normals(mesh);
   return mesh;
 }

@@ -16,16 +16,17 @@ namespace viscera::core {
 /// `control_level` (12, 42 or 162 points for levels 0, 1, 2) in their current positions.
 struct BallPrimitive {
   Vec3 center = Vec3::Zero();
-  double radius = 0.03;          ///< m
-  int control_level = 0;         ///< 0, 1 or 2
+  double radius = 0.03;              ///< m
+  int control_level = 0;             ///< 0, 1 or 2
   std::vector<Vec3> control_points;  ///< m; at rest center + radius · direction
-  int subdivisions = 4;          ///< tessellation: icosphere level 0–7, 20·4^s triangles
+  int subdivisions = 4;              ///< tessellation: icosphere level 0–7, 20·4^s triangles
 
   bool operator==(const BallPrimitive&) const = default;
 };
 
 /// A ball at rest. Throws UsageError for a non-positive radius or levels out of range.
-BallPrimitive make_ball(const Vec3& center, double radius, int control_level = 0, int subdivisions = 4);
+BallPrimitive make_ball(const Vec3& center, double radius, int control_level = 0,
+                        int subdivisions = 4);
 
 /// Unit directions of the control points of a level (icosphere vertex order).
 std::vector<Vec3> ball_control_directions(int control_level);

@@ -25,8 +25,8 @@ struct FlatPrimitive {
 
 /// A planar grid from `origin` spanning `u_edge` × `v_edge` (m), its normal u_edge × v_edge.
 /// Throws UsageError for fewer than 2 × 2 points, parallel edges or a negative thickness.
-FlatPrimitive make_flat(const Vec3& origin, const Vec3& u_edge, const Vec3& v_edge, int rows, int cols,
-                        double thickness = 0.003);
+FlatPrimitive make_flat(const Vec3& origin, const Vec3& u_edge, const Vec3& v_edge, int rows,
+                        int cols, double thickness = 0.003);
 
 /// Throws UsageError naming `what` when the fields disagree.
 void check_flat(const FlatPrimitive& flat, const std::string& what);

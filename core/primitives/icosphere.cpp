@@ -11,13 +11,15 @@ namespace viscera::core {
 
 SurfaceMesh make_icosphere(double radius, int subdivisions, const Vec3& center) {
   if (!(radius > 0.0)) throw UsageError("sphere radius must be positive");
-  if (subdivisions < 0 || subdivisions > 7) throw UsageError("sphere subdivisions must be in [0, 7]");
+  if (subdivisions < 0 || subdivisions > 7)
+    throw UsageError("sphere subdivisions must be in [0, 7]");
 
   const double phi = (1.0 + std::sqrt(5.0)) / 2.0;
-  std::vector<Vec3> unit = {{-1, phi, 0}, {1, phi, 0},   {-1, -phi, 0}, {1, -phi, 0},
-                            {0, -1, phi}, {0, 1, phi},   {0, -1, -phi}, {0, 1, -phi},
-                            {phi, 0, -1}, {phi, 0, 1},   {-phi, 0, -1}, {-phi, 0, 1}};
-  for (auto& v : unit) v.normalize();
+  std::vector<Vec3> unit = {{-1, phi, 0}, {1, phi, 0}, {-1, -phi, 0}, {1, -phi, 0},
+                            {0, -1, phi}, {0, 1, phi}, {0, -1, -phi}, {0, 1, -phi},
+                            {phi, 0, -1}, {phi, 0, 1}, {-phi, 0, -1}, {-phi, 0, 1}};
+  for (auto& v : unit)
+    v.normalize();
   std::vector<Triangle> faces = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
                                  {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
                                  {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
@@ -65,7 +67,8 @@ double icosphere_edge_length(double radius, int subdivisions) {
   const SurfaceMesh mesh = make_icosphere(radius, subdivisions);
   double total = 0.0;
   for (const auto& t : mesh.triangles) {
-    for (int e = 0; e < 3; ++e) total += (mesh.vertices[t[e]] - mesh.vertices[t[(e + 1) % 3]]).norm();
+    for (int e = 0; e < 3; ++e)
+      total += (mesh.vertices[t[e]] - mesh.vertices[t[(e + 1) % 3]]).norm();
   }
   return total / (3.0 * static_cast<double>(mesh.triangles.size()));
 }

@@ -20,12 +20,13 @@ PipeCap pipe_cap_from_string(const std::string& name);
 
 /// A single pipe: centre-line control points and a radius at each.
 struct PipePrimitive {
-  std::vector<Vec3> points;    ///< centre-line control points, m (≥ 2, neighbours distinct)
-  std::vector<double> radii;   ///< m, one per point, positive
+  std::vector<Vec3> points;   ///< centre-line control points, m (≥ 2, neighbours distinct)
+  std::vector<double> radii;  ///< m, one per point, positive
   PipeCap start_cap = PipeCap::Flat;
   PipeCap end_cap = PipeCap::Flat;
-  int ring_segments = 32;      ///< vertices around each cross-section, ≥ 3
-  double axial_spacing = 0.0;  ///< m between cross-sections; 0 = the ring's edge length at the mean radius
+  int ring_segments = 32;  ///< vertices around each cross-section, ≥ 3
+  double axial_spacing =
+      0.0;  ///< m between cross-sections; 0 = the ring's edge length at the mean radius
 
   bool operator==(const PipePrimitive&) const = default;
 };

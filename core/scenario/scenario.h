@@ -20,8 +20,8 @@ struct Scenario {
   Metadata metadata;
   std::string procedure = "none";
   std::vector<SceneObject> objects;
-  std::map<std::string, Material> materials;   ///< keyed by Material::id
-  std::map<std::string, TextureSpec> textures; ///< keyed by TextureSpec::id
+  std::map<std::string, Material> materials;    ///< keyed by Material::id
+  std::map<std::string, TextureSpec> textures;  ///< keyed by TextureSpec::id
   std::vector<VesselTree> vessel_trees;
   std::vector<ActiveDeformation> active_deformations;
   std::vector<Pathology> pathologies;

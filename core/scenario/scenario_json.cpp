@@ -18,7 +18,10 @@ void read_optional(const nlohmann::json& j, const char* key, T& value) {
 }  // namespace
 
 void to_json(nlohmann::json& j, const StressStrainCurve& c) {
-  j = {{"strain", c.strain}, {"stress", c.stress}, {"cubic", c.cubic}, {"fit_rms_error", c.fit_rms_error},
+  j = {{"strain", c.strain},
+       {"stress", c.stress},
+       {"cubic", c.cubic},
+       {"fit_rms_error", c.fit_rms_error},
        {"fit_max_error", c.fit_max_error}};
 }
 void from_json(const nlohmann::json& j, StressStrainCurve& c) {
@@ -53,11 +56,13 @@ void from_json(const nlohmann::json& j, Material& m) {
   read_optional(j, "tearing_threshold", m.tearing_threshold);
   read_optional(j, "plastic_yield", m.plastic_yield);
   read_optional(j, "source", m.source);
-  if (const auto it = j.find("stress_strain"); it != j.end()) m.stress_strain = it->get<StressStrainCurve>();
+  if (const auto it = j.find("stress_strain"); it != j.end())
+    m.stress_strain = it->get<StressStrainCurve>();
 }
 
 void to_json(nlohmann::json& j, const TextureSpec& t) {
-  j = {{"id", t.id}, {"preset", t.preset}, {"seed", t.seed}, {"width", t.width}, {"height", t.height}, {"maps", t.maps}};
+  j = {{"id", t.id},       {"preset", t.preset}, {"seed", t.seed},
+       {"width", t.width}, {"height", t.height}, {"maps", t.maps}};
 }
 void from_json(const nlohmann::json& j, TextureSpec& t) {
   j.at("id").get_to(t.id);
@@ -92,8 +97,10 @@ void from_json(const nlohmann::json& j, VesselTree& t) {
 }
 
 void to_json(nlohmann::json& j, const PulseSpec& p) {
-  j = {{"vessel_tree", p.vessel_tree}, {"heart_rate", p.heart_rate},
-       {"pulse_velocity", p.pulse_velocity}, {"wall_force", p.wall_force}};
+  j = {{"vessel_tree", p.vessel_tree},
+       {"heart_rate", p.heart_rate},
+       {"pulse_velocity", p.pulse_velocity},
+       {"wall_force", p.wall_force}};
 }
 void from_json(const nlohmann::json& j, PulseSpec& p) {
   read_optional(j, "vessel_tree", p.vessel_tree);
@@ -160,8 +167,11 @@ void from_json(const nlohmann::json& j, Pathology& p) {
 }
 
 void to_json(nlohmann::json& j, const Connection& c) {
-  j = {{"id", c.id}, {"object_a", c.object_a}, {"object_b", c.object_b},
-       {"node_pairs", c.node_pairs}, {"stiffness", c.stiffness}};
+  j = {{"id", c.id},
+       {"object_a", c.object_a},
+       {"object_b", c.object_b},
+       {"node_pairs", c.node_pairs},
+       {"stiffness", c.stiffness}};
 }
 void from_json(const nlohmann::json& j, Connection& c) {
   j.at("id").get_to(c.id);
@@ -196,14 +206,18 @@ void from_json(const nlohmann::json& j, TaskSpec& t) {
   read_optional(j, "parameters", t.parameters);
 }
 
-void to_json(nlohmann::json& j, const SubstepSpec& s) { j = {{"id", s.id}, {"name", s.name}, {"tasks", s.tasks}}; }
+void to_json(nlohmann::json& j, const SubstepSpec& s) {
+  j = {{"id", s.id}, {"name", s.name}, {"tasks", s.tasks}};
+}
 void from_json(const nlohmann::json& j, SubstepSpec& s) {
   j.at("id").get_to(s.id);
   read_optional(j, "name", s.name);
   read_optional(j, "tasks", s.tasks);
 }
 
-void to_json(nlohmann::json& j, const StepSpec& s) { j = {{"id", s.id}, {"name", s.name}, {"substeps", s.substeps}}; }
+void to_json(nlohmann::json& j, const StepSpec& s) {
+  j = {{"id", s.id}, {"name", s.name}, {"substeps", s.substeps}};
+}
 void from_json(const nlohmann::json& j, StepSpec& s) {
   j.at("id").get_to(s.id);
   read_optional(j, "name", s.name);
@@ -230,9 +244,9 @@ void from_json(const nlohmann::json& j, InstrumentSpec& i) {
 }
 
 void to_json(nlohmann::json& j, const SessionSpec& s) {
-  j = {{"time_step", s.time_step}, {"duration_limit", s.duration_limit}, {"gravity", s.gravity},
-       {"contact_stiffness", s.contact_stiffness},
-       {"tasks", s.tasks}, {"metrics", s.metrics}};
+  j = {{"time_step", s.time_step}, {"duration_limit", s.duration_limit},
+       {"gravity", s.gravity},     {"contact_stiffness", s.contact_stiffness},
+       {"tasks", s.tasks},         {"metrics", s.metrics}};
   if (!s.procedure_definition.empty()) j["procedure_definition"] = s.procedure_definition;
   if (!(s.instrument == InstrumentSpec{})) j["instrument"] = s.instrument;
   if (!s.steps.empty()) j["steps"] = s.steps;
@@ -263,7 +277,11 @@ void from_json(const nlohmann::json& j, VariabilityRule& r) {
 }
 
 void to_json(nlohmann::json& j, const Landmark& l) {
-  j = {{"id", l.id}, {"name", l.name}, {"object", l.object}, {"position", l.position}, {"normal", l.normal}};
+  j = {{"id", l.id},
+       {"name", l.name},
+       {"object", l.object},
+       {"position", l.position},
+       {"normal", l.normal}};
 }
 void from_json(const nlohmann::json& j, Landmark& l) {
   j.at("id").get_to(l.id);
@@ -343,8 +361,11 @@ void from_json(const nlohmann::json& j, UrethraLatticeSpec& u) {
 }
 
 void to_json(nlohmann::json& j, const Provenance& p) {
-  j = {{"template", p.template_name}, {"template_version", p.template_version}, {"seed", p.seed},
-       {"parameters", p.parameters}, {"tool_versions", p.tool_versions}};
+  j = {{"template", p.template_name},
+       {"template_version", p.template_version},
+       {"seed", p.seed},
+       {"parameters", p.parameters},
+       {"tool_versions", p.tool_versions}};
 }
 void from_json(const nlohmann::json& j, Provenance& p) {
   read_optional(j, "template", p.template_name);
@@ -363,8 +384,12 @@ void from_json(const nlohmann::json& j, Metadata& m) {
   read_optional(j, "author", m.author);
 }
 
-std::string surface_file_of(const std::string& object_id) { return "objects/" + object_id + "/surface.vtp"; }
-std::string body_file_of(const std::string& object_id) { return "objects/" + object_id + "/body.vtu"; }
+std::string surface_file_of(const std::string& object_id) {
+  return "objects/" + object_id + "/surface.vtp";
+}
+std::string body_file_of(const std::string& object_id) {
+  return "objects/" + object_id + "/body.vtu";
+}
 
 nlohmann::json scenario_to_json(const Scenario& s) {
   nlohmann::json objects = nlohmann::json::array();
@@ -380,7 +405,8 @@ nlohmann::json scenario_to_json(const Scenario& s) {
     if (o.body_kind != BodyKind::None) object["body"] = body_file_of(o.id);
     if (!o.layer_materials.empty()) {
       nlohmann::json layers = nlohmann::json::object();
-      for (const auto& [label, material] : o.layer_materials) layers[std::to_string(label)] = material;
+      for (const auto& [label, material] : o.layer_materials)
+        layers[std::to_string(label)] = material;
       object["layer_materials"] = layers;
     }
     objects.push_back(std::move(object));
@@ -425,7 +451,8 @@ void convert_member(const nlohmann::json& j, const char* key, T& value, const st
 
 Scenario scenario_from_json(const nlohmann::json& j, const std::string& file,
                             const std::string& pointer_prefix) {
-  if (!j.is_object()) throw ValidationError("scenario must be a JSON object", {file, pointer_prefix, ""});
+  if (!j.is_object())
+    throw ValidationError("scenario must be a JSON object", {file, pointer_prefix, ""});
   Scenario s;
   convert_member(j, "metadata", s.metadata, file, pointer_prefix);
   convert_member(j, "procedure", s.procedure, file, pointer_prefix);

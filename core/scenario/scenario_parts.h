@@ -15,9 +15,9 @@ namespace viscera::core {
 /// A procedural texture applied to objects; baked maps are package files.
 struct TextureSpec {
   std::string id;
-  std::string preset;        ///< e.g. "endometrium"
+  std::string preset;  ///< e.g. "endometrium"
   std::uint64_t seed = 0;
-  int width = 512, height = 512;  ///< pixels
+  int width = 512, height = 512;            ///< pixels
   std::map<std::string, std::string> maps;  ///< "albedo"|"normal"|"specular" → package path
 
   bool operator==(const TextureSpec&) const = default;
@@ -48,21 +48,21 @@ struct VesselTree {
 /// Pulse waves along a vessel tree (seed 001 §5).
 struct PulseSpec {
   std::string vessel_tree;
-  double heart_rate = 70.0;       ///< beats per minute
-  double pulse_velocity = 5.0;    ///< m/s
-  double wall_force = 0.05;       ///< N
+  double heart_rate = 70.0;     ///< beats per minute
+  double pulse_velocity = 5.0;  ///< m/s
+  double wall_force = 0.05;     ///< N
 
   bool operator==(const PulseSpec&) const = default;
 };
 
 /// Organ motility: travelling contraction waves plus impulsive contractions (seed 001 §5).
 struct MotilitySpec {
-  double amplitude_mean = 0.002;      ///< m
-  double amplitude_variance = 0.0;    ///< m²
-  double wave_speed = 0.01;           ///< m/s
+  double amplitude_mean = 0.002;    ///< m
+  double amplitude_variance = 0.0;  ///< m²
+  double wave_speed = 0.01;         ///< m/s
   Vec3 wave_direction = Vec3::UnitX();
-  double frequency = 0.1;             ///< Hz
-  double frequency_disturbance = 0.0; ///< Hz
+  double frequency = 0.1;                      ///< Hz
+  double frequency_disturbance = 0.0;          ///< Hz
   double contraction_interval_mean = 0.0;      ///< s, 0 = none
   double contraction_interval_variance = 0.0;  ///< s²
 
@@ -81,9 +81,10 @@ struct ActiveDeformation {
 /// A pathology placed on or in a host organ; its geometry is its own scene object.
 struct Pathology {
   std::string id;
-  std::string kind;          ///< "myoma-submucosal" | "myoma-intramural" | "myoma-pedunculated" | "polyp" | "adhesion"
+  std::string kind;  ///< "myoma-submucosal" | "myoma-intramural" | "myoma-pedunculated" | "polyp" |
+                     ///< "adhesion"
   std::string host_object;
-  std::string object;        ///< scene object holding its geometry, or empty
+  std::string object;            ///< scene object holding its geometry, or empty
   Vec3 position = Vec3::Zero();  ///< m
   double size = 0.0;             ///< m, characteristic diameter
 
@@ -104,9 +105,9 @@ struct Connection {
 struct FluidSpec {
   bool enabled = false;
   std::string medium = "saline";
-  double inflow_pressure = 13332.0;   ///< Pa (100 mmHg)
-  double outflow_pressure = 0.0;      ///< Pa
-  double overload_volume = 1.0e-3;    ///< m³ of deficit that ends a session
+  double inflow_pressure = 13332.0;  ///< Pa (100 mmHg)
+  double outflow_pressure = 0.0;     ///< Pa
+  double overload_volume = 1.0e-3;   ///< m³ of deficit that ends a session
 
   bool operator==(const FluidSpec&) const = default;
 };
@@ -115,7 +116,7 @@ struct FluidSpec {
 struct TaskSpec {
   std::string id;
   std::string name;
-  std::string kind;     ///< what completes it, e.g. "observe", "reach", "settle"
+  std::string kind;  ///< what completes it, e.g. "observe", "reach", "settle"
   nlohmann::json parameters = nlohmann::json::object();
 
   bool operator==(const TaskSpec&) const = default;
@@ -143,11 +144,12 @@ struct StepSpec {
 
 /// The instrument a procedure is trained with. Angles in degrees, lengths in m.
 struct InstrumentSpec {
-  std::string kind = "probe";     ///< "hysteroscope", "cystoscope", "laparoscope", "probe", "grasper", …
-  double optics_angle = 0.0;      ///< viewing direction against the shaft axis (0, 12, 30 °)
-  double field_of_view = 70.0;    ///< full opening angle of the optics, °
-  double shaft_diameter = 0.004;  ///< m
-  double focus_distance = 0.015;  ///< m, sharpest distance of the optics
+  std::string kind =
+      "probe";  ///< "hysteroscope", "cystoscope", "laparoscope", "probe", "grasper", …
+  double optics_angle = 0.0;         ///< viewing direction against the shaft axis (0, 12, 30 °)
+  double field_of_view = 70.0;       ///< full opening angle of the optics, °
+  double shaft_diameter = 0.004;     ///< m
+  double focus_distance = 0.015;     ///< m, sharpest distance of the optics
   double min_view_distance = 0.003;  ///< m, closer than this the view is lost ("red-out")
   double max_view_distance = 0.04;   ///< m, beyond this the surface is too far to assess
 
@@ -156,8 +158,8 @@ struct InstrumentSpec {
 
 /// How a session on this scenario runs and is scored.
 struct SessionSpec {
-  double time_step = 1.0e-3;        ///< s, the fixed physics step
-  double duration_limit = 600.0;    ///< s
+  double time_step = 1.0e-3;             ///< s, the fixed physics step
+  double duration_limit = 600.0;         ///< s
   Vec3 gravity = Vec3(0.0, 0.0, -9.81);  ///< m/s²
   double contact_stiffness = 500.0;      ///< N/m per colliding point (penalty response)
   std::vector<TaskSpec> tasks;
@@ -167,7 +169,7 @@ struct SessionSpec {
   InstrumentSpec instrument;
   /// Steps → substeps → tasks (seed 000 §11); `tasks` above holds tasks outside any step.
   std::vector<StepSpec> steps;
-  double force_warning = 0.0;      ///< N on the instrument that starts a warning; 0: none
+  double force_warning = 0.0;  ///< N on the instrument that starts a warning; 0: none
   /// m the tool may push into the wall before it perforates; 0: the local wall thickness.
   double perforation_depth = 0.0;
 
@@ -177,11 +179,12 @@ struct SessionSpec {
 /// A named anatomical point that procedures and tasks refer to (e.g. "identify the right tubal
 /// orifice", seed 000 §11): where it is and from which side it is seen.
 struct Landmark {
-  std::string id;      ///< e.g. "tubal-orifice-right", "cervix-internal-os", "fundus"
+  std::string id;  ///< e.g. "tubal-orifice-right", "cervix-internal-os", "fundus"
   std::string name;
-  std::string object;  ///< the object whose surface it lies on
+  std::string object;            ///< the object whose surface it lies on
   Vec3 position = Vec3::Zero();  ///< m
-  Vec3 normal = Vec3::Zero();    ///< unit, pointing away from the tissue (where a camera looks from), or zero
+  Vec3 normal =
+      Vec3::Zero();  ///< unit, pointing away from the tissue (where a camera looks from), or zero
 
   bool operator==(const Landmark&) const = default;
 };
@@ -238,7 +241,8 @@ struct UrethraLatticeSpec {
 /// A distribution attached to a template parameter (variability rules).
 struct VariabilityRule {
   std::string parameter;
-  std::string distribution;  ///< "fixed" | "uniform" | "truncated-normal" | "choice" | "integer-range"
+  std::string
+      distribution;  ///< "fixed" | "uniform" | "truncated-normal" | "choice" | "integer-range"
   nlohmann::json arguments = nlohmann::json::object();
 
   bool operator==(const VariabilityRule&) const = default;

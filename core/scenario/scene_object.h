@@ -24,7 +24,7 @@ BodyKind body_kind_from_string(const std::string& name);
 /// A scene object with its meshes held in memory. In a package the meshes live in
 /// objects/<id>/surface.vtp and objects/<id>/body.vtu (DESIGN.md §4).
 struct SceneObject {
-  std::string id;      ///< unique within the scenario; [a-z0-9_-]+
+  std::string id;  ///< unique within the scenario; [a-z0-9_-]+
   std::string name;
   ObjectRole role = ObjectRole::Organ;
   std::string material;  ///< id in Scenario::materials, or empty
@@ -32,8 +32,8 @@ struct SceneObject {
   std::string group;     ///< organ group name, or empty
   BodyKind body_kind = BodyKind::None;
   SurfaceMesh surface;
-  TetMesh body;                 ///< nodes, tets, masses and fixed flags when body_kind is TetMesh
-  SurfaceEmbedding embedding;   ///< surface vertices in body tets
+  TetMesh body;                ///< nodes, tets, masses and fixed flags when body_kind is TetMesh
+  SurfaceEmbedding embedding;  ///< surface vertices in body tets
   /// Material of the tets carrying each tet label (wall layers, e.g. 1 endometrium,
   /// 2 myometrium); tets whose label is not listed use `material`.
   std::map<int, std::string> layer_materials;

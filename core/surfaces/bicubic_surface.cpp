@@ -12,8 +12,9 @@ namespace {
 /// Knot gaps of one direction averaged over the grid lines running that way (the averaged
 /// chord-length parametrisation of surface interpolation, Piegl and Tiller §9.2.5), so every
 /// row shares one set of u knots and every column one set of v knots.
-std::vector<double> averaged_gaps(const std::vector<Vec3>& points, int lines, int count, bool closed,
-                                  KnotSpacing spacing, bool along_rows, const char* direction) {
+std::vector<double> averaged_gaps(const std::vector<Vec3>& points, int lines, int count,
+                                  bool closed, KnotSpacing spacing, bool along_rows,
+                                  const char* direction) {
   const int segments = closed ? count : count - 1;
   std::vector<double> gaps(static_cast<std::size_t>(segments), 0.0);
   for (int line = 0; line < lines; ++line) {
@@ -23,15 +24,17 @@ std::vector<double> averaged_gaps(const std::vector<Vec3>& points, int lines, in
         return points[static_cast<std::size_t>(along_rows ? line * count + i : i * lines + line)];
       };
       const double chord = (at(next) - at(k)).norm();
-      const double gap = spacing == KnotSpacing::Uniform ? 1.0
-                         : spacing == KnotSpacing::Centripetal ? std::sqrt(chord) : chord;
+      const double gap = spacing == KnotSpacing::Uniform       ? 1.0
+                         : spacing == KnotSpacing::Centripetal ? std::sqrt(chord)
+                                                               : chord;
       gaps[static_cast<std::size_t>(k)] += gap / lines;
     }
   }
   for (int k = 0; k < segments; ++k) {
     if (!(gaps[static_cast<std::size_t>(k)] > 0.0)) {
-      throw UsageError(std::string("spline surface: grid ") + direction + " lines " + std::to_string(k) + " and " +
-                       std::to_string((k + 1) % count) + " coincide everywhere");
+      throw UsageError(std::string("spline surface: grid ") + direction + " lines " +
+                       std::to_string(k) + " and " + std::to_string((k + 1) % count) +
+                       " coincide everywhere");
     }
   }
   return gaps;
@@ -40,36 +43,51 @@ std::vector<double> averaged_gaps(const std::vector<Vec3>& points, int lines, in
 double bernstein(int i, double t) {
   const double s = 1.0 - t;
   switch (i) {
-    case 0: return s * s * s;
-    case 1: return 3.0 * s * s * t;
-    case 2: return 3.0 * s * t * t;
-    default: return t * t * t;
+    case 0:
+      return s * s * s;
+    case 1:
+      return 3.0 * s * s * t;
+    case 2:
+      return 3.0 * s * t * t;
+    default:
+      return t * t * t;
   }
 }
 
 double bernstein_derivative(int i, double t) {
   const double s = 1.0 - t;
   switch (i) {
-    case 0: return -3.0 * s * s;
-    case 1: return 3.0 * s * s - 6.0 * s * t;
-    case 2: return 6.0 * s * t - 3.0 * t * t;
-    default: return 3.0 * t * t;
+    case 0:
+      return -3.0 * s * s;
+    case 1:
+      return 3.0 * s * s - 6.0 * s * t;
+    case 2:
+      return 6.0 * s * t - 3.0 * t * t;
+    default:
+      return 3.0 * t * t;
   }
 }
 
 }  // namespace
 
-BicubicSurface::BicubicSurface(std::vector<Vec3> points, int rows, int cols, bool closed_u, bool closed_v,
-                               KnotSpacing spacing)
-    : points_(std::move(points)), rows_(rows), cols_(cols), closed_u_(closed_u), closed_v_(closed_v) {
+BicubicSurface::BicubicSurface(std::vector<Vec3> points, int rows, int cols, bool closed_u,
+                               bool closed_v, KnotSpacing spacing)
+    : points_(std::move(points)),
+      rows_(rows),
+      cols_(cols),
+      closed_u_(closed_u),
+      closed_v_(closed_v) {
   if (cols_ < (closed_u_ ? 3 : 2) || rows_ < (closed_v_ ? 3 : 2)) {
-    throw UsageError("spline surface grid of " + std::to_string(rows_) + " × " + std::to_string(cols_) + " points is too small");
+    throw UsageError("spline surface grid of " + std::to_string(rows_) + " × " +
+                     std::to_string(cols_) + " points is too small");
   }
   if (points_.size() != static_cast<std::size_t>(rows_) * static_cast<std::size_t>(cols_)) {
-    throw UsageError("spline surface grid has " + std::to_string(points_.size()) + " points, expected rows × columns");
+    throw UsageError("spline surface grid has " + std::to_string(points_.size()) +
+                     " points, expected rows × columns");
   }
   for (std::size_t i = 0; i < points_.size(); ++i) {
-    if (!points_[i].allFinite()) throw UsageError("spline surface grid point " + std::to_string(i) + " is not finite");
+    if (!points_[i].allFinite())
+      throw UsageError("spline surface grid point " + std::to_string(i) + " is not finite");
   }
   gaps_u_ = averaged_gaps(points_, rows_, cols_, closed_u_, spacing, true, "column");
   gaps_v_ = averaged_gaps(points_, cols_, rows_, closed_v_, spacing, false, "row");
@@ -85,9 +103,12 @@ BicubicSurface::BicubicSurface(std::vector<Vec3> points, int rows, int cols, boo
   net_.assign(static_cast<std::size_t>(net_rows * net_cols_), Vec3::Zero());
   for (int c = 0; c < net_cols_; ++c) {
     std::vector<Vec3> column(static_cast<std::size_t>(rows_));
-    for (int r = 0; r < rows_; ++r) column[static_cast<std::size_t>(r)] = row_nets[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)];
+    for (int r = 0; r < rows_; ++r)
+      column[static_cast<std::size_t>(r)] =
+          row_nets[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)];
     const std::vector<Vec3> column_net = catmull_rom_bezier_net(column, gaps_v_, closed_v_);
-    for (int r = 0; r < net_rows; ++r) net_[static_cast<std::size_t>(r * net_cols_ + c)] = column_net[static_cast<std::size_t>(r)];
+    for (int r = 0; r < net_rows; ++r)
+      net_[static_cast<std::size_t>(r * net_cols_ + c)] = column_net[static_cast<std::size_t>(r)];
   }
 }
 
@@ -122,9 +143,15 @@ Vec3 BicubicSurface::evaluate(const Local& at, int du, int dv) const {
   return sum;
 }
 
-Vec3 BicubicSurface::point(double u, double v) const { return evaluate(locate(u, v), 0, 0); }
-Vec3 BicubicSurface::derivative_u(double u, double v) const { return evaluate(locate(u, v), 1, 0); }
-Vec3 BicubicSurface::derivative_v(double u, double v) const { return evaluate(locate(u, v), 0, 1); }
+Vec3 BicubicSurface::point(double u, double v) const {
+  return evaluate(locate(u, v), 0, 0);
+}
+Vec3 BicubicSurface::derivative_u(double u, double v) const {
+  return evaluate(locate(u, v), 1, 0);
+}
+Vec3 BicubicSurface::derivative_v(double u, double v) const {
+  return evaluate(locate(u, v), 0, 1);
+}
 
 Vec3 BicubicSurface::normal(double u, double v) const {
   const double scale = 1.0 + point(u, v).norm();
@@ -143,11 +170,14 @@ Vec3 BicubicSurface::normal(double u, double v) const {
 std::array<Vec3, 16> BicubicSurface::patch(int pu, int pv) const {
   std::array<Vec3, 16> control;
   for (int b = 0; b < 4; ++b)
-    for (int a = 0; a < 4; ++a) control[static_cast<std::size_t>(a + 4 * b)] = net_[static_cast<std::size_t>((3 * pv + b) * net_cols_ + 3 * pu + a)];
+    for (int a = 0; a < 4; ++a)
+      control[static_cast<std::size_t>(a + 4 * b)] =
+          net_[static_cast<std::size_t>((3 * pv + b) * net_cols_ + 3 * pu + a)];
   return control;
 }
 
-SurfaceSamples sample_surface(const BicubicSurface& surface, const SurfaceTessellation& tessellation) {
+SurfaceSamples sample_surface(const BicubicSurface& surface,
+                              const SurfaceTessellation& tessellation) {
   if (tessellation.u_steps_per_patch < 1 || tessellation.v_steps_per_patch < 1) {
     throw UsageError("surface tessellation needs at least one step per patch");
   }
@@ -181,7 +211,8 @@ std::vector<Triangle> sample_grid_triangles(int rows, int columns, bool closed_u
     const int r1 = (r + 1) % rows;
     for (int c = 0; c < cells_u; ++c) {
       const int c1 = (c + 1) % columns;
-      const int p00 = r * columns + c, p01 = r * columns + c1, p10 = r1 * columns + c, p11 = r1 * columns + c1;
+      const int p00 = r * columns + c, p01 = r * columns + c1, p10 = r1 * columns + c,
+                p11 = r1 * columns + c1;
       triangles.push_back({p00, p01, p10});
       triangles.push_back({p01, p11, p10});
     }
@@ -192,7 +223,8 @@ std::vector<Triangle> sample_grid_triangles(int rows, int columns, bool closed_u
 SurfaceMesh tessellate(const BicubicSurface& surface, const SurfaceTessellation& tessellation) {
   SurfaceSamples samples = sample_surface(surface, tessellation);
   SurfaceMesh mesh;
-  mesh.triangles = sample_grid_triangles(samples.rows, samples.columns, surface.closed_u(), surface.closed_v());
+  mesh.triangles =
+      sample_grid_triangles(samples.rows, samples.columns, surface.closed_u(), surface.closed_v());
   mesh.vertices = std::move(samples.positions);
   mesh.normals = std::move(samples.normals);
   mesh.uvs = std::move(samples.uvs);

@@ -74,8 +74,8 @@ struct SurfaceTessellation {
 /// The samples of a surface on a regular grid in patch coordinates. A closed direction shares
 /// its seam: it has patches·steps samples, an open one patches·steps + 1.
 struct SurfaceSamples {
-  int columns = 0;  ///< samples along u
-  int rows = 0;     ///< samples along v
+  int columns = 0;              ///< samples along u
+  int rows = 0;                 ///< samples along v
   std::vector<Vec3> positions;  ///< rows × columns, row-major
   std::vector<Vec3> normals;    ///< unit, along S_u × S_v
   std::vector<Vec2> uvs;        ///< (u / patches_u, v / patches_v) ∈ [0, 1]²
@@ -83,7 +83,8 @@ struct SurfaceSamples {
 };
 
 /// Samples `surface`. Throws UsageError for steps < 1.
-SurfaceSamples sample_surface(const BicubicSurface& surface, const SurfaceTessellation& tessellation);
+SurfaceSamples sample_surface(const BicubicSurface& surface,
+                              const SurfaceTessellation& tessellation);
 
 /// Triangles over the sample grid (two per cell, wrapping in closed directions), counter-
 /// clockwise around S_u × S_v. Vertices, normals and UVs are the samples; in a closed direction

@@ -7,7 +7,6 @@
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
-#include <CGAL/Polygon_mesh_processing/repair_self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
 #include <CGAL/Surface_mesh.h>
@@ -115,18 +114,12 @@ SurfaceRepairReport repair_closed_surface(core::SurfaceMesh& surface, const std:
   if (!CGAL::is_closed(mesh)) {
     throw core::ValidationError("the surface has holes that could not be closed", {what, "", ""});
   }
-  if (PMP::does_self_intersect<CGAL::Parallel_if_available_tag>(mesh)) {
-    report.self_intersections_removed = true;
-    PMP::experimental::remove_self_intersections(mesh);
-    mesh.collect_garbage();
-    const std::size_t remaining = count_self_intersections(mesh);
-    if (remaining > 0 || !CGAL::is_closed(mesh)) {
-      throw core::ValidationError(
-          remaining > 0 ? "the surface intersects itself (" + std::to_string(remaining) +
-                              " pairs of triangles cross) and local repair could not separate them"
-                        : "removing the surface's self-intersections opened holes",
-          {what, "", ""});
-    }
+  // Self-intersections are refused, not repaired (see the header): callers that can make the
+  // surface another way (label_surface: a larger decimation budget) do so.
+  if (const std::size_t pairs = count_self_intersections(mesh); pairs > 0) {
+    throw core::ValidationError(
+        "the surface intersects itself (" + std::to_string(pairs) + " pairs of triangles cross)",
+        {what, "", ""});
   }
   const auto faces_before = oriented_faces(mesh);
   PMP::orient_to_bound_a_volume(mesh);

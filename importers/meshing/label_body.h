@@ -16,15 +16,32 @@
 
 namespace viscera::importers {
 
+/// Where the visual surface comes from (issue 20 §2).
+enum class VisualSurfaceSource {
+  /// The tets' boundary (tet_boundary_surface.h): no extra work, exact embedding, Mesh_3's
+  /// boundary resolution.
+  TetBoundary,
+  /// The label's own contour (label_surface.h): flying edges, smoothing, decimation to
+  /// surface.target_triangles and repair, on a thread beside Mesh_3, then embedded.
+  LabelContour,
+};
+
 /// Options of the whole pipeline; `tets.label` also selects the surface's label.
 struct LabelBodyOptions {
+  /// The library keeps the contour (callers such as the studio offer its triangle budget);
+  /// `viscera mesh tets` defaults to the tets' boundary (--surface).
+  VisualSurfaceSource visual_surface = VisualSurfaceSource::LabelContour;
   LabelSurfaceOptions surface;
   LabelTetMeshingOptions tets;
   core::TetQualityOptions quality;
-  /// Extract the visual surface on a thread of its own while Mesh_3 runs (both are
-  /// deterministic, so the result is the same; on 2 cores sequential Mesh_3 beside the surface
-  /// uses both).
+  /// LabelContour: extract the visual surface on a thread of its own while Mesh_3 runs (both
+  /// are deterministic, so the result is the same; on 2 cores sequential Mesh_3 beside the
+  /// surface uses both).
   bool concurrent_surface = true;
+  /// Wall-clock budget of the whole pipeline, s (0: none). When it runs out every stage stops
+  /// at its next cancellation point and mesh_label_body throws core::ValidationError naming the
+  /// stage and the budget (a Progress the caller passed is then cancelled too).
+  double time_limit_seconds = 0.0;
 };
 
 /// A body made from a label map.
@@ -35,11 +52,12 @@ struct LabelBody {
   core::TetQualityReport quality;
   ResolvedTetCriteria criteria;  ///< Mesh_3 criteria used, m
   /// Wall-clock seconds per stage: "surface", "tets", "embedding", "quality", "total", and the
-  /// surface's steps as "surface.contour" … (stages overlap with concurrent_surface).
+  /// contour's steps as "surface.contour" … (stages overlap with concurrent_surface).
   std::map<std::string, double> seconds;
 };
 
-/// Runs the pipeline on `labels`. Throws as label_surface() and mesh_label_map().
+/// Runs the pipeline on `labels`. Throws as label_surface() and mesh_label_map(), and
+/// core::ValidationError when options.time_limit_seconds runs out.
 LabelBody mesh_label_body(const core::LabelMap& labels, const LabelBodyOptions& options,
                           const std::string& what,
                           core::Progress& progress = core::Progress::none());

@@ -24,6 +24,9 @@ struct Mesh3Input {
   double facet_size_mm = 1.0;
   double facet_distance_mm = 0.5;
   bool exude = true;
+  /// Exudation stops once every tet's smallest dihedral angle reaches this, degrees (0: CGAL's
+  /// default, improve the worst angle as far as it goes).
+  double exude_sliver_bound_degrees = 0.0;
   int threads = 1;
   unsigned seed = 1;
   /// Set (from another thread) to stop refinement early; the output is then incomplete.

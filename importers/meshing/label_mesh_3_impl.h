@@ -94,7 +94,10 @@ Mesh3Output run_mesh_3(const Mesh3Input& input) {
   C3t3 c3t3 = CGAL::make_mesh_3<C3t3>(domain, criteria, params::no_perturb(), params::no_exude(),
                                       params::no_lloyd(), params::no_odt(), options);
   const bool stopped = input.stop != nullptr && input.stop->load();
-  if (input.exude && !stopped) CGAL::exude_mesh_3(c3t3, params::time_limit = 0);
+  // No time limit: the result must not depend on the machine's speed.
+  if (input.exude && !stopped)
+    CGAL::exude_mesh_3(c3t3, params::time_limit = 0,
+                       params::sliver_bound = input.exude_sliver_bound_degrees);
 
   const Triangulation& triangulation = c3t3.triangulation();
   const auto point_of = triangulation.geom_traits().construct_point_3_object();

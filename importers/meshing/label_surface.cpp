@@ -1,6 +1,9 @@
 #include "importers/meshing/label_surface.h"
 
+#include <vtkAlgorithm.h>
+#include <vtkCallbackCommand.h>
 #include <vtkCellArray.h>
+#include <vtkCommand.h>
 #include <vtkDiscreteFlyingEdges3D.h>
 #include <vtkImageData.h>
 #include <vtkPoints.h>
@@ -66,6 +69,21 @@ core::SurfaceMesh to_world(vtkPolyData& polydata, const core::LabelMap& labels,
   return mesh;
 }
 
+/// Runs `filter` so that a cancellation of `progress` stops it at its next progress report
+/// (VTK's AbortExecute), then throws CancelledError.
+void update_cancellable(vtkAlgorithm& filter, core::Progress& progress) {
+  auto observer = vtkSmartPointer<vtkCallbackCommand>::New();
+  observer->SetClientData(&progress);
+  observer->SetCallback([](vtkObject* caller, unsigned long, void* client, void*) {
+    if (static_cast<core::Progress*>(client)->cancelled())
+      static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
+  });
+  const unsigned long tag = filter.AddObserver(vtkCommand::ProgressEvent, observer);
+  filter.Update();
+  filter.RemoveObserver(tag);
+  progress.check_cancelled();
+}
+
 /// Seconds since `start`, and restarts it.
 double lap(std::chrono::steady_clock::time_point& start) {
   const auto now = std::chrono::steady_clock::now();
@@ -96,7 +114,7 @@ LabelSurface label_surface(const core::LabelMap& labels, int label,
   contour->ComputeNormalsOff();
   contour->ComputeGradientsOff();
   contour->ComputeScalarsOff();
-  contour->Update();
+  update_cancellable(*contour, progress);
   vtkSmartPointer<vtkPolyData> surface = contour->GetOutput();
   result.extracted_triangles = static_cast<std::size_t>(surface->GetNumberOfPolys());
   result.seconds["contour"] = lap(clock);
@@ -111,27 +129,30 @@ LabelSurface label_surface(const core::LabelMap& labels, int label,
     smoother->FeatureEdgeSmoothingOff();
     smoother->NonManifoldSmoothingOn();
     smoother->NormalizeCoordinatesOn();
-    smoother->Update();
+    update_cancellable(*smoother, progress);
     surface = smoother->GetOutput();
   }
   result.seconds["smoothing"] = lap(clock);
   progress.step();
 
-  // Quadric decimation does not guard against folds: when it leaves self-intersections that
-  // local repair cannot remove, decimate again to twice the budget (the smoothed surface itself
-  // is the last resort).
+  // Quadric decimation does not guard against folds and strong smoothing can fold a thin part:
+  // when repair refuses a surface (it intersects itself), decimate again to twice the budget,
+  // then keep the smoothed surface whole, and last the unsmoothed contour (marching cubes of a
+  // padded binary image, which never intersects itself).
   const vtkSmartPointer<vtkPolyData> smoothed = surface;
   std::size_t budget = options.target_triangles;
+  bool smoothing = options.smoothing_iterations > 0;
   for (;;) {
-    const bool decimating = budget > 0 && budget < result.extracted_triangles;
-    surface = smoothed;
+    progress.check_cancelled();
+    const bool decimating = smoothing && budget > 0 && budget < result.extracted_triangles;
+    surface = smoothing ? smoothed : vtkSmartPointer<vtkPolyData>(contour->GetOutput());
     if (decimating) {
       auto decimate = vtkSmartPointer<vtkQuadricDecimation>::New();
       decimate->SetInputData(smoothed);
       decimate->SetTargetReduction(1.0 - static_cast<double>(budget) /
                                              static_cast<double>(result.extracted_triangles));
       decimate->VolumePreservationOn();
-      decimate->Update();
+      update_cancellable(*decimate, progress);
       surface = decimate->GetOutput();
     }
     result.seconds["decimation"] += lap(clock);
@@ -142,14 +163,18 @@ LabelSurface label_surface(const core::LabelMap& labels, int label,
       break;
     } catch (const core::ValidationError& e) {
       result.seconds["repair"] += lap(clock);
-      if (!decimating) {
+      if (decimating) {
+        ++result.decimation_retries;
+        budget *= 2;
+      } else if (smoothing) {
+        smoothing = false;
+        result.smoothing_dropped = true;
+      } else {
         throw core::ValidationError(e.reason(),
                                     {what, "",
                                      label == 0 ? std::string("surface of all labels")
                                                 : "surface of label " + std::to_string(label)});
       }
-      ++result.decimation_retries;
-      budget *= 2;
     }
   }
   progress.step();

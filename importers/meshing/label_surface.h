@@ -24,8 +24,9 @@ struct LabelSurfaceOptions {
   /// voxel staircase and keeps features a few voxels wide, Slicer's "0.5" smoothing factor).
   double pass_band = 0.01;
   /// Triangle budget for quadric decimation; 0 or more than flying edges gives = no decimation.
-  /// Doubled (LabelSurface::decimation_retries) while decimation leaves self-intersections
-  /// that repair cannot remove.
+  /// Doubled (LabelSurface::decimation_retries) while the decimated surface intersects itself;
+  /// a smoothed surface that intersects itself undecimated gives way to the unsmoothed contour
+  /// (LabelSurface::smoothing_dropped).
   std::size_t target_triangles = 0;
 };
 
@@ -38,6 +39,9 @@ struct LabelSurface {
   /// Times the triangle budget was doubled because decimation left self-intersections that
   /// local repair could not remove.
   std::size_t decimation_retries = 0;
+  /// The smoothed surface intersected itself even undecimated, so the unsmoothed contour is
+  /// used.
+  bool smoothing_dropped = false;
   /// Wall-clock seconds per step: "contour", "smoothing", "decimation", "repair".
   std::map<std::string, double> seconds;
 };

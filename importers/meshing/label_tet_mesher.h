@@ -22,16 +22,21 @@ struct LabelTetMeshingOptions {
   /// Upper bound of the tets' circumradius, m. 0 = from `target_tets`.
   double cell_size = 0.0;
   /// Approximate tet count used when cell_size is 0: the cell size is chosen from the labelled
-  /// volume (about 0.17·s³ per tet at the default criteria), never below 1.5 voxel spacings.
+  /// volume (about 0.2·s³ per tet at the default criteria), never below 1.5 voxel spacings.
   std::size_t target_tets = 150000;
   std::map<int, double> label_cell_size;  ///< per-label cell size, m (overrides cell_size)
   double cell_radius_edge_ratio = 3.0;    ///< upper bound of circumradius / shortest edge
   double facet_angle_degrees = 30.0;      ///< lower bound of the boundary facets' angles
   double facet_size = 0.0;                ///< upper bound of facet circumradius, m; 0 = cell size
   /// Upper bound of the distance between a facet's circumcentre and the labels' boundary, m;
-  /// 0 = half the smallest voxel spacing.
+  /// 0 = a sixth of the facet size, kept between half and one smallest voxel spacing (the
+  /// boundary is not refined below what its facets resolve, nor below the voxel staircase).
   double facet_distance = 0.0;
   bool exude = true;  ///< sliver exudation after refinement (no time limit: deterministic)
+  /// Exudation works on tets whose smallest dihedral angle is below this, degrees; 0 lets it
+  /// improve the worst angle as far as it goes (on CGAL's liver: 21 s instead of 1 s for 130k
+  /// tets, issue 20).
+  double exude_sliver_bound_degrees = 12.0;
   int threads = 1;    ///< > 1: CGAL::Parallel_tag on TBB with this many threads
   unsigned seed = 1;  ///< Mesh_3's random generator (initial boundary points)
 };

@@ -19,6 +19,7 @@
 #include "core/error.h"
 #include "importers/volume/dicom_series.h"
 #include "importers/volume/format_readers.h"
+#include "importers/volume/gdcm_parse_guard.h"
 #include "importers/volume/volume_geometry.h"
 
 namespace viscera::importers::detail {
@@ -367,7 +368,7 @@ LoadedVolume read_dicom(const fs::path& path, const VolumeReadOptions& options) 
   LoadedVolume loaded;
   loaded.format = "DICOM";
   if (fs::is_directory(path)) {
-    auto series = dicom_series_in(path);
+    auto series = dicom_series_in(path, loaded.skipped_files);
     for (std::size_t s = 1; s < series.size(); ++s)
       loaded.other_series.push_back(summarize(series[s]));
     if (series.front().size() == 1) {
@@ -378,6 +379,8 @@ LoadedVolume read_dicom(const fs::path& path, const VolumeReadOptions& options) 
     }
     return loaded;
   }
+  if (!gdcm_parses_without_abort({path}).front())
+    throw core::InputError(kGdcmAbortReason, {path.string(), "", ""});
   DicomHeader header;
   if (!read_dicom_header(path, header)) {
     throw core::InputError(

@@ -13,6 +13,7 @@
 
 #include "core/error.h"
 #include "importers/volume/format_readers.h"
+#include "importers/volume/gdcm_parse_guard.h"
 
 namespace viscera::importers::detail {
 namespace {
@@ -122,20 +123,29 @@ bool read_dicom_header(const fs::path& file, DicomHeader& header) {
   return true;
 }
 
-std::vector<std::vector<DicomHeader>> dicom_series_in(const fs::path& folder) {
+std::vector<std::vector<DicomHeader>> dicom_series_in(const fs::path& folder,
+                                                      std::vector<SkippedFile>& skipped) {
   gdcm::Directory directory;
   directory.Load(folder.string(), true);
-  std::vector<std::string> files = directory.GetFilenames();
-  std::sort(files.begin(), files.end());
+  std::vector<std::string> names = directory.GetFilenames();
+  std::sort(names.begin(), names.end());
+  const std::vector<fs::path> files(names.begin(), names.end());
+  const std::vector<bool> parses = gdcm_parses_without_abort(files);
   std::map<std::string, std::vector<DicomHeader>> by_uid;
-  for (const auto& file : files) {
+  for (std::size_t f = 0; f < files.size(); ++f) {
+    if (!parses[f]) {
+      skipped.push_back({files[f], kGdcmAbortReason});
+      continue;
+    }
     DicomHeader header;
-    if (read_dicom_header(file, header)) by_uid[header.series_uid].push_back(std::move(header));
+    if (read_dicom_header(files[f], header)) by_uid[header.series_uid].push_back(std::move(header));
   }
   if (by_uid.empty()) {
-    throw core::InputError(
-        "folder holds no DICOM image (" + std::to_string(files.size()) + " files looked at)",
-        {folder.string(), "", ""});
+    const std::string damaged =
+        skipped.empty() ? "" : ", " + std::to_string(skipped.size()) + " of them damaged";
+    throw core::InputError("folder holds no DICOM image (" + std::to_string(files.size()) +
+                               " files looked at" + damaged + ")",
+                           {folder.string(), "", ""});
   }
   std::vector<std::vector<DicomHeader>> series;
   for (auto& [uid, headers] : by_uid)

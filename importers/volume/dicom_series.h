@@ -31,9 +31,11 @@ struct DicomHeader {
 bool read_dicom_header(const std::filesystem::path& file, DicomHeader& header);
 
 /// The image files of `folder` and its sub-folders grouped by Series Instance UID, the series
-/// with the most files first (ties by UID, so the choice is deterministic). Throws
+/// with the most files first (ties by UID, so the choice is deterministic). Files whose parse
+/// aborts GDCM (gdcm_parse_guard.h) are left out and listed in `skipped`. Throws
 /// core::InputError naming the folder when it holds no DICOM image.
-std::vector<std::vector<DicomHeader>> dicom_series_in(const std::filesystem::path& folder);
+std::vector<std::vector<DicomHeader>> dicom_series_in(const std::filesystem::path& folder,
+                                                      std::vector<SkippedFile>& skipped);
 
 /// A summary of a series for LoadedVolume::other_series.
 DicomSeriesSummary summarize(const std::vector<DicomHeader>& series);

@@ -7,6 +7,8 @@
 // and LPS spellings); without them, "spacings".
 #include <zlib.h>
 
+#include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <map>
@@ -210,7 +212,15 @@ LoadedVolume read_nrrd(const fs::path& path, const VolumeReadOptions& options) {
     loaded.files.push_back(data_path);
   }
   if (const auto skip = header.fields.find("byte skip"); skip != header.fields.end()) {
-    const long bytes = std::stol(skip->second);
+    long bytes = 0;
+    const char* first = skip->second.c_str();
+    char* end = nullptr;
+    errno = 0;
+    bytes = std::strtol(first, &end, 10);
+    if (end == first || *end != '\0' || errno == ERANGE) {
+      throw core::InputError(
+          "header field \"byte skip: " + skip->second + "\" is not a whole number", {file, "", ""});
+    }
     if (bytes < 0) throw core::InputError("\"byte skip: -1\" is not supported", {file, "", ""});
     if (!gzip) offset += static_cast<std::uint64_t>(bytes);
   }

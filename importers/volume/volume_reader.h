@@ -46,6 +46,12 @@ struct DicomSeriesSummary {
   int files = 0;
 };
 
+/// A file of a DICOM folder that was not read, and why.
+struct SkippedFile {
+  std::filesystem::path file;
+  std::string reason;
+};
+
 /// A volume read from disk and where it came from.
 struct LoadedVolume {
   core::ImageVolume volume;
@@ -53,6 +59,7 @@ struct LoadedVolume {
   std::vector<std::filesystem::path> files;      ///< the files whose voxels were read
   std::vector<DicomSeriesSummary> other_series;  ///< DICOM series in the folder not read
   std::vector<std::string> notes;                ///< e.g. "first of 4 time points read"
+  std::vector<SkippedFile> skipped_files;        ///< DICOM files of a folder left out, with why
 };
 
 /// Names of the formats read_volume() understands, for help texts.

@@ -11,6 +11,7 @@
 #include <memory>
 #include <optional>
 
+#include "core/cli/command_line.h"
 #include "core/error.h"
 #include "core/package/scenario_package.h"
 #include "simulator/app/live_inputs.h"
@@ -22,7 +23,6 @@
 #include "simulator/session/manual_control.h"
 #include "simulator/session/session_trace.h"
 #include "simulator/view/view_session.h"
-#include "studio/cli/command_line.h"
 
 namespace {
 

@@ -24,15 +24,19 @@ class TriangleGrid {
     for (std::size_t t = 0; t < surface.faces.size(); ++t) {
       const auto& f = surface.faces[t];
       core::BoundingBox box;
-      for (const int v : f) box.add(surface.positions[v]);
-      if ((box.max.array() < region.min.array()).any() || (box.min.array() > region.max.array()).any()) continue;
+      for (const int v : f)
+        box.add(surface.positions[v]);
+      if ((box.max.array() < region.min.array()).any() ||
+          (box.min.array() > region.max.array()).any())
+        continue;
       kept.push_back(static_cast<int>(t));
       edge_sum += (surface.positions[f[1]] - surface.positions[f[0]]).norm();
     }
     cell_ = kept.empty() ? 1.0 : std::max(edge_sum / static_cast<double>(kept.size()), 1e-9);
     for (const int t : kept) {
       core::BoundingBox box;
-      for (const int v : surface.faces[t]) box.add(surface.positions[v]);
+      for (const int v : surface.faces[t])
+        box.add(surface.positions[v]);
       visit_cells(box, [&](const Key& key) { cells_[key].push_back(t); });
     }
   }
@@ -44,7 +48,8 @@ class TriangleGrid {
     box.add(q);
     std::vector<int> found;
     visit_cells(box, [&](const Key& key) {
-      if (const auto it = cells_.find(key); it != cells_.end()) found.insert(found.end(), it->second.begin(), it->second.end());
+      if (const auto it = cells_.find(key); it != cells_.end())
+        found.insert(found.end(), it->second.begin(), it->second.end());
     });
     std::sort(found.begin(), found.end());
     found.erase(std::unique(found.begin(), found.end()), found.end());
@@ -60,7 +65,8 @@ class TriangleGrid {
     const auto hi = (box.max / cell_).array().floor().cast<std::int64_t>();
     for (std::int64_t k = lo[2]; k <= hi[2]; ++k)
       for (std::int64_t j = lo[1]; j <= hi[1]; ++j)
-        for (std::int64_t i = lo[0]; i <= hi[0]; ++i) visit(Key{i, j, k});
+        for (std::int64_t i = lo[0]; i <= hi[0]; ++i)
+          visit(Key{i, j, k});
   }
 
   double cell_ = 1.0;
@@ -69,14 +75,16 @@ class TriangleGrid {
 
 }  // namespace
 
-VertexAdjacency VertexAdjacency::from_edges(std::size_t vertex_count, std::span<const std::array<int, 2>> edges) {
+VertexAdjacency VertexAdjacency::from_edges(std::size_t vertex_count,
+                                            std::span<const std::array<int, 2>> edges) {
   VertexAdjacency adjacency;
   adjacency.offsets.assign(vertex_count + 1, 0);
   for (const auto& [a, b] : edges) {
     ++adjacency.offsets[a + 1];
     ++adjacency.offsets[b + 1];
   }
-  for (std::size_t v = 0; v < vertex_count; ++v) adjacency.offsets[v + 1] += adjacency.offsets[v];
+  for (std::size_t v = 0; v < vertex_count; ++v)
+    adjacency.offsets[v + 1] += adjacency.offsets[v];
   adjacency.neighbours.resize(adjacency.offsets.back());
   std::vector<int> fill(adjacency.offsets.begin(), adjacency.offsets.end() - 1);
   for (const auto& [a, b] : edges) {
@@ -84,7 +92,8 @@ VertexAdjacency VertexAdjacency::from_edges(std::size_t vertex_count, std::span<
     adjacency.neighbours[fill[b]++] = a;
   }
   for (std::size_t v = 0; v < vertex_count; ++v) {
-    std::sort(adjacency.neighbours.begin() + adjacency.offsets[v], adjacency.neighbours.begin() + adjacency.offsets[v + 1]);
+    std::sort(adjacency.neighbours.begin() + adjacency.offsets[v],
+              adjacency.neighbours.begin() + adjacency.offsets[v + 1]);
   }
   return adjacency;
 }
@@ -107,10 +116,13 @@ double segment_triangle_intersection(const core::Vec3& p, const core::Vec3& q, c
   return (t >= 0.0 && t <= 1.0) ? t : -1.0;
 }
 
-std::vector<PointPenetration> penetration_depths(std::span<const core::Vec3> x, const VertexAdjacency& adjacency,
-                                                 std::span<const int> colliding, const PenetratedSurface& surface) {
+std::vector<PointPenetration> penetration_depths(std::span<const core::Vec3> x,
+                                                 const VertexAdjacency& adjacency,
+                                                 std::span<const int> colliding,
+                                                 const PenetratedSurface& surface) {
   std::vector<char> is_colliding(x.size(), 0), processed(x.size(), 0);
-  for (const int p : colliding) is_colliding[p] = 1;
+  for (const int p : colliding)
+    is_colliding[p] = 1;
   std::vector<double> depth(x.size(), 0.0);
   std::vector<core::Vec3> direction(x.size(), core::Vec3::Zero());
   std::vector<PointPenetration> result;
@@ -185,7 +197,8 @@ std::vector<PointPenetration> penetration_depths(std::span<const core::Vec3> x, 
     }
     layer = std::move(next);
   }
-  std::sort(result.begin(), result.end(), [](const auto& l, const auto& r) { return l.point < r.point; });
+  std::sort(result.begin(), result.end(),
+            [](const auto& l, const auto& r) { return l.point < r.point; });
   return result;
 }
 

@@ -19,7 +19,8 @@ struct VertexAdjacency {
   std::vector<int> neighbours;
 
   /// From undirected edges over `vertex_count` vertices; neighbours sorted ascending.
-  static VertexAdjacency from_edges(std::size_t vertex_count, std::span<const std::array<int, 2>> edges);
+  static VertexAdjacency from_edges(std::size_t vertex_count,
+                                    std::span<const std::array<int, 2>> edges);
   std::span<const int> of(int v) const {
     return {neighbours.data() + offsets[v], static_cast<std::size_t>(offsets[v + 1] - offsets[v])};
   }
@@ -27,8 +28,8 @@ struct VertexAdjacency {
 
 /// The closed, outward-oriented surface of the penetrated body at its current positions.
 struct PenetratedSurface {
-  std::span<const core::Vec3> positions;   ///< m
-  std::span<const core::Triangle> faces;   ///< outward
+  std::span<const core::Vec3> positions;  ///< m
+  std::span<const core::Triangle> faces;  ///< outward
 };
 
 /// Depth in m and unit direction out of the penetrated body for one colliding point: moving the

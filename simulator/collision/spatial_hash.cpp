@@ -13,7 +13,8 @@ SpatialHash::SpatialHash(double cell_size, std::size_t table_size)
       table_size_(table_size),
       reduce_factor_(table_size > 0 ? ~std::uint64_t{0} / table_size + 1 : 0) {
   if (!(cell_size > 0.0)) throw core::UsageError("spatial hash cell size must be positive");
-  if (table_size == 0 || table_size > 0xFFFFFFFFU) throw core::UsageError("spatial hash needs 1 to 2^32 - 1 buckets");
+  if (table_size == 0 || table_size > 0xFFFFFFFFU)
+    throw core::UsageError("spatial hash needs 1 to 2^32 - 1 buckets");
 }
 
 std::uint32_t SpatialHash::reduce(std::uint32_t x) const {
@@ -24,7 +25,8 @@ std::uint32_t SpatialHash::reduce(std::uint32_t x) const {
 
 std::size_t SpatialHash::hash(std::int64_t i, std::int64_t j, std::int64_t k) const {
   // The primes of Teschner et al. 2003. Unsigned arithmetic wraps instead of overflowing.
-  const std::uint32_t h = (static_cast<std::uint32_t>(i) * 73856093U) ^ (static_cast<std::uint32_t>(j) * 19349663U) ^
+  const std::uint32_t h = (static_cast<std::uint32_t>(i) * 73856093U) ^
+                          (static_cast<std::uint32_t>(j) * 19349663U) ^
                           (static_cast<std::uint32_t>(k) * 83492791U);
   return reduce(h);
 }
@@ -33,10 +35,12 @@ std::int64_t SpatialHash::cell_of(double coordinate) const {
   return static_cast<std::int64_t>(std::floor(coordinate * inverse_cell_size_));
 }
 
-std::vector<VertexInTet> SpatialHash::detect(std::span<const CollisionBodyView> bodies, bool self_collisions) {
+std::vector<VertexInTet> SpatialHash::detect(std::span<const CollisionBodyView> bodies,
+                                             bool self_collisions) {
   // Without self-collisions, the vertices of a body matter only if another body has tets.
   std::size_t bodies_with_tets = 0;
-  for (const auto& body : bodies) bodies_with_tets += body.tets.empty() ? 0 : 1;
+  for (const auto& body : bodies)
+    bodies_with_tets += body.tets.empty() ? 0 : 1;
   const auto needs_hashing = [&](std::size_t b) {
     return self_collisions || bodies_with_tets > (bodies[b].tets.empty() ? 0U : 1U);
   };
@@ -52,7 +56,8 @@ std::vector<VertexInTet> SpatialHash::detect(std::span<const CollisionBodyView> 
     if (bodies[b].tets.empty()) continue;
     for (std::size_t v = 0; v < bodies[b].positions.size(); ++v) {
       const auto& p = bodies[b].positions[v];
-      cells_[first_cell_[b] + v] = {static_cast<std::int32_t>(cell_of(p.x())), static_cast<std::int32_t>(cell_of(p.y())),
+      cells_[first_cell_[b] + v] = {static_cast<std::int32_t>(cell_of(p.x())),
+                                    static_cast<std::int32_t>(cell_of(p.y())),
                                     static_cast<std::int32_t>(cell_of(p.z()))};
     }
   }
@@ -65,12 +70,14 @@ std::vector<VertexInTet> SpatialHash::detect(std::span<const CollisionBodyView> 
     last_tested_[b].assign(bodies[b].positions.size(), -1);
     if (!needs_hashing(b)) continue;
     for (const auto& p : bodies[b].positions) {
-      const auto bucket = static_cast<std::uint32_t>(hash(cell_of(p.x()), cell_of(p.y()), cell_of(p.z())));
+      const auto bucket =
+          static_cast<std::uint32_t>(hash(cell_of(p.x()), cell_of(p.y()), cell_of(p.z())));
       vertex_bucket_.push_back(bucket);
       ++bucket_start_[bucket + 1];
     }
   }
-  for (std::size_t h = 0; h < table_size_; ++h) bucket_start_[h + 1] += bucket_start_[h];
+  for (std::size_t h = 0; h < table_size_; ++h)
+    bucket_start_[h + 1] += bucket_start_[h];
   entries_.resize(vertex_bucket_.size());
   {
     std::vector<std::uint32_t> fill(bucket_start_.begin(), bucket_start_.end() - 1);
@@ -88,13 +95,16 @@ std::vector<VertexInTet> SpatialHash::detect(std::span<const CollisionBodyView> 
   // nearly every tet.
   std::vector<core::BoundingBox> body_boxes(bodies.size());
   for (std::size_t b = 0; b < bodies.size(); ++b) {
-    for (const auto& p : bodies[b].positions) body_boxes[b].add(p);
+    for (const auto& p : bodies[b].positions)
+      body_boxes[b].add(p);
   }
   const auto may_hold_others = [&](std::size_t tb, const core::Vec3& lo, const core::Vec3& hi) {
     if (self_collisions) return true;
     for (std::size_t b = 0; b < bodies.size(); ++b) {
       if (b == tb || body_boxes[b].empty()) continue;
-      if ((hi.array() >= body_boxes[b].min.array()).all() && (lo.array() <= body_boxes[b].max.array()).all()) return true;
+      if ((hi.array() >= body_boxes[b].min.array()).all() &&
+          (lo.array() <= body_boxes[b].max.array()).all())
+        return true;
     }
     return false;
   };
@@ -158,10 +168,12 @@ std::vector<VertexInTet> SpatialHash::detect(std::span<const CollisionBodyView> 
             }
       }
       for (const auto& [p, vb, v] : candidates) {
-        if (p.x() < lo.x() || p.x() > hi.x() || p.y() < lo.y() || p.y() > hi.y() || p.z() < lo.z() || p.z() > hi.z()) {
+        if (p.x() < lo.x() || p.x() > hi.x() || p.y() < lo.y() || p.y() > hi.y() ||
+            p.z() < lo.z() || p.z() > hi.z()) {
           continue;
         }
-        if (vb == static_cast<int>(tb) && (!self_collisions || v == tet[0] || v == tet[1] || v == tet[2] || v == tet[3])) {
+        if (vb == static_cast<int>(tb) &&
+            (!self_collisions || v == tet[0] || v == tet[1] || v == tet[2] || v == tet[3])) {
           continue;
         }
         const core::Vec3 ap = p - a;
@@ -177,7 +189,8 @@ std::vector<VertexInTet> SpatialHash::detect(std::span<const CollisionBodyView> 
     }
   }
   std::sort(contacts.begin(), contacts.end(), [](const VertexInTet& l, const VertexInTet& r) {
-    return std::tie(l.vertex_body, l.vertex, l.tet_body, l.tet) < std::tie(r.vertex_body, r.vertex, r.tet_body, r.tet);
+    return std::tie(l.vertex_body, l.vertex, l.tet_body, l.tet) <
+           std::tie(r.vertex_body, r.vertex, r.tet_body, r.tet);
   });
   return contacts;
 }

@@ -18,7 +18,7 @@ namespace viscera::sim {
 
 /// The deformed state of one body as the collision query sees it.
 struct CollisionBodyView {
-  std::span<const core::Vec3> positions;         ///< m
+  std::span<const core::Vec3> positions;  ///< m
   std::span<const core::Tetrahedron> tets;
 };
 
@@ -63,12 +63,14 @@ class SpatialHash {
   double inverse_cell_size_;
   std::size_t table_size_;
   std::uint64_t reduce_factor_;
-  std::vector<std::array<std::int32_t, 3>> cells_;      ///< scratch: cell of every vertex of a body with tets
-  std::vector<std::size_t> first_cell_;                 ///< per body: offset of its vertices in cells_
-  std::vector<std::uint32_t> bucket_start_;             ///< table_size_ + 1 offsets into entries_
-  std::vector<std::array<int, 2>> entries_;             ///< (body, vertex), grouped by bucket
-  std::vector<std::uint32_t> vertex_bucket_;            ///< scratch: bucket of each hashed vertex
-  std::vector<std::vector<std::int64_t>> last_tested_;  ///< per body and vertex: last cell range that listed it
+  std::vector<std::array<std::int32_t, 3>>
+      cells_;                                 ///< scratch: cell of every vertex of a body with tets
+  std::vector<std::size_t> first_cell_;       ///< per body: offset of its vertices in cells_
+  std::vector<std::uint32_t> bucket_start_;   ///< table_size_ + 1 offsets into entries_
+  std::vector<std::array<int, 2>> entries_;   ///< (body, vertex), grouped by bucket
+  std::vector<std::uint32_t> vertex_bucket_;  ///< scratch: bucket of each hashed vertex
+  std::vector<std::vector<std::int64_t>>
+      last_tested_;  ///< per body and vertex: last cell range that listed it
 };
 
 /// Mean length in m of the tetrahedral edges of `bodies` (each edge counted once per tet that

@@ -8,25 +8,24 @@ namespace viscera::sim {
 
 AgentTissueTerm::AgentTissueTerm(std::shared_ptr<const BodyModel> model,
                                  const SimulationState& state, core::CellTissueSpec spec,
-                                 double time_step)
+                                 double time_step, const std::string& where)
     : BodyTerm(std::move(model)), spec_(std::move(spec)), time_step_(time_step) {
-  const core::ErrorLocation where{"", "", spec_.object};
   if (!(time_step_ > 0.0))
     throw core::UsageError("the cell tissue of \"" + spec_.object + "\" needs a positive step");
   if (spec_.cell_types.size() != this->model().mesh.nodes.size()) {
     throw core::InputError("the cell tissue of \"" + spec_.object + "\" gives " +
                                std::to_string(spec_.cell_types.size()) + " cell types for " +
                                std::to_string(this->model().mesh.nodes.size()) + " cells",
-                           where);
+                           {"", where + "/cell_types", spec_.object});
   }
   for (std::size_t i = 0; i < spec_.cell_types.size(); ++i) {
     const int t = spec_.cell_types[i];
     if (t < 0 || t >= static_cast<int>(spec_.types.size())) {
-      throw core::InputError("the cell tissue of \"" + spec_.object + "\": cell " +
-                                 std::to_string(i) + " has cell type " + std::to_string(t) +
-                                 ", which is not one of its " + std::to_string(spec_.types.size()) +
+      throw core::InputError("the cell tissue of \"" + spec_.object + "\": cell type index " +
+                                 std::to_string(t) + " of cell " + std::to_string(i) +
+                                 " is not one of its " + std::to_string(spec_.types.size()) +
                                  " types",
-                             where);
+                             {"", where + "/cell_types/" + std::to_string(i), spec_.object});
     }
   }
   types_ = cell_types_of(spec_);

@@ -33,9 +33,11 @@ class AgentTissueTerm : public BodyTerm {
  public:
   /// The cells of `model` (kind CellAgent: mesh.nodes are the homes) with the types of `spec`;
   /// `time_step` s turns the per-step damping b into a viscous coefficient. Throws
-  /// core::InputError naming the object when spec.cell_types does not give every cell a type.
+  /// core::InputError naming the object and the place (`where`: the spec's JSON pointer in the
+  /// scenario, e.g. "/scenario/cell_tissues/0") when spec.cell_types does not give every cell
+  /// a type among spec.types.
   AgentTissueTerm(std::shared_ptr<const BodyModel> model, const SimulationState& state,
-                  core::CellTissueSpec spec, double time_step);
+                  core::CellTissueSpec spec, double time_step, const std::string& where = "");
 
   std::string name() const override { return "cell-agents " + model().name; }
   double energy(std::span<const Vec3> x) const override;

@@ -94,9 +94,11 @@ std::vector<std::unique_ptr<ForceTerm>> authored_terms(
   // The cell agents.
   for (const auto& model : models) {
     if (model->kind != BodyModelKind::CellAgent) continue;
-    for (const auto& spec : scenario.cell_tissues)
-      if (spec.object == model->name)
-        out.push_back(std::make_unique<AgentTissueTerm>(model, state, spec, time_step));
+    for (std::size_t t = 0; t < scenario.cell_tissues.size(); ++t)
+      if (scenario.cell_tissues[t].object == model->name)
+        out.push_back(
+            std::make_unique<AgentTissueTerm>(model, state, scenario.cell_tissues[t], time_step,
+                                              "/scenario/cell_tissues/" + std::to_string(t)));
   }
   // Active deformations on their targets.
   for (std::size_t d = 0; d < scenario.active_deformations.size(); ++d) {

@@ -2,8 +2,8 @@
 
 namespace viscera::sim {
 
-ClampedFeedback clamp_to_device(const core::Vec3& force, const core::Vec3& torque, const core::Vec3& tool_axis,
-                                const DeviceLimits& limits) {
+ClampedFeedback clamp_to_device(const core::Vec3& force, const core::Vec3& torque,
+                                const core::Vec3& tool_axis, const DeviceLimits& limits) {
   ClampedFeedback out;
   const double magnitude = force.norm();
   if (magnitude > limits.max_force) {

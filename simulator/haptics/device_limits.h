@@ -26,7 +26,7 @@ struct ClampedFeedback {
 
 /// Clamps `force` and `torque` to `limits`; roll is the torque component along the unit
 /// `tool_axis`, pitch and yaw the rest.
-ClampedFeedback clamp_to_device(const core::Vec3& force, const core::Vec3& torque, const core::Vec3& tool_axis,
-                                const DeviceLimits& limits = {});
+ClampedFeedback clamp_to_device(const core::Vec3& force, const core::Vec3& torque,
+                                const core::Vec3& tool_axis, const DeviceLimits& limits = {});
 
 }  // namespace viscera::sim

@@ -3,10 +3,12 @@
 /// force data exchanged over UDP with the device's low-level controller). All fields are
 /// little-endian; each packet ends with a CRC-32 of the bytes before it.
 ///
+// clang-format off
 /// | packet   | bytes | fields                                                                |
 /// |----------|-------|-----------------------------------------------------------------------|
 /// | pose     | 96    | magic "VSCD", version u16, kind u16 = 1, sequence u32, reserved u32, time ns u64, position 3×f64 (m), orientation quaternion w,x,y,z 4×f64, buttons u32, inflow valve f32, outflow valve f32 (0–1), crc32 |
 /// | feedback | 80    | magic "VSCD", version u16, kind u16 = 2, sequence u32, reserved u32, time ns u64, force 3×f64 (N), torque 3×f64 (N·m), flags u32, crc32 |
+// clang-format on
 
 #include <array>
 #include <cstdint>
@@ -26,10 +28,10 @@ inline constexpr std::size_t kFeedbackPacketBytes = 80;
 struct DevicePose {
   std::uint32_t sequence = 0;
   std::uint64_t time_ns = 0;
-  core::Vec3 position = core::Vec3::Zero();         ///< m
-  std::array<double, 4> orientation{1, 0, 0, 0};    ///< unit quaternion w, x, y, z
+  core::Vec3 position = core::Vec3::Zero();       ///< m
+  std::array<double, 4> orientation{1, 0, 0, 0};  ///< unit quaternion w, x, y, z
   std::uint32_t buttons = 0;
-  float inflow_valve = 0.0F;                        ///< 0 closed … 1 open
+  float inflow_valve = 0.0F;  ///< 0 closed … 1 open
   float outflow_valve = 0.0F;
 
   bool operator==(const DevicePose&) const = default;

@@ -35,7 +35,8 @@ class RigidInstrument {
   static RigidInstrument shaft(double length, int count, double stiffness);
 
   /// Moves every point's proxy for the new pose against `surface` at `positions`.
-  void update(const InstrumentPose& pose, const ProxySurface& surface, std::span<const core::Vec3> positions);
+  void update(const InstrumentPose& pose, const ProxySurface& surface,
+              std::span<const core::Vec3> positions);
   /// Places every proxy at its point for `pose` with no contact.
   void reset(const InstrumentPose& pose);
 

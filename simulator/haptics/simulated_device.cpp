@@ -10,7 +10,9 @@ bool SimulatedDevice::send(const DevicePose& pose) {
   return socket_.send_to(bridge_, bytes);
 }
 
-bool SimulatedDevice::send_raw(std::span<const std::uint8_t> bytes) { return socket_.send_to(bridge_, bytes); }
+bool SimulatedDevice::send_raw(std::span<const std::uint8_t> bytes) {
+  return socket_.send_to(bridge_, bytes);
+}
 
 std::optional<DeviceFeedback> SimulatedDevice::receive(int timeout_ms) {
   UdpEndpoint from;

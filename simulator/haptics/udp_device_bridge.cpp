@@ -2,7 +2,8 @@
 
 namespace viscera::sim {
 
-UdpDeviceBridge::UdpDeviceBridge(const BridgeOptions& options) : socket_(options.bind_address, options.port) {}
+UdpDeviceBridge::UdpDeviceBridge(const BridgeOptions& options)
+    : socket_(options.bind_address, options.port) {}
 
 std::optional<DevicePose> UdpDeviceBridge::poll(int timeout_ms) {
   std::optional<DevicePose> newest;

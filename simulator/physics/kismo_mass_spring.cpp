@@ -4,11 +4,13 @@
 
 namespace viscera::sim {
 
-std::array<double, 3> spring_coefficients_from_cubic(const std::array<double, 3>& c, double cross_section) {
+std::array<double, 3> spring_coefficients_from_cubic(const std::array<double, 3>& c,
+                                                     double cross_section) {
   return {c[0] * cross_section, c[1] * cross_section, c[2] * cross_section};
 }
 
-double add_cubic_spring_forces(std::span<const core::Vec3> x, const CubicSprings& springs, std::span<core::Vec3> f) {
+double add_cubic_spring_forces(std::span<const core::Vec3> x, const CubicSprings& springs,
+                               std::span<core::Vec3> f) {
   double energy = 0.0;
   for (std::size_t s = 0; s < springs.knots.size(); ++s) {
     const auto [i, j] = springs.knots[s];
@@ -19,7 +21,8 @@ double add_cubic_spring_forces(std::span<const core::Vec3> x, const CubicSprings
     const double e = (length - l0) / l0;
     const auto& k = springs.coefficients[s];
     const double magnitude = k[0] * e + k[1] * e * std::abs(e) + k[2] * e * e * e;
-    const core::Vec3 pull = (magnitude / length) * d;  // along the spring, towards each other when stretched
+    const core::Vec3 pull =
+        (magnitude / length) * d;  // along the spring, towards each other when stretched
     f[i] += pull;
     f[j] -= pull;
     const double a = std::abs(e);
@@ -28,8 +31,8 @@ double add_cubic_spring_forces(std::span<const core::Vec3> x, const CubicSprings
   return energy;
 }
 
-void add_spring_damping_forces(std::span<const core::Vec3> x, std::span<const core::Vec3> v, const CubicSprings& springs,
-                               std::span<core::Vec3> f) {
+void add_spring_damping_forces(std::span<const core::Vec3> x, std::span<const core::Vec3> v,
+                               const CubicSprings& springs, std::span<core::Vec3> f) {
   for (std::size_t s = 0; s < springs.damping.size(); ++s) {
     const auto [i, j] = springs.knots[s];
     const core::Vec3 d = x[j] - x[i];

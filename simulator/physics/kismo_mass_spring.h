@@ -20,14 +20,15 @@ namespace viscera::sim {
 /// quadratic term odd, so compression pushes as hard as the same stretch pulls.
 struct CubicSprings {
   std::vector<std::array<int, 2>> knots;
-  std::vector<double> rest_length;               ///< l0 in m
+  std::vector<double> rest_length;                  ///< l0 in m
   std::vector<std::array<double, 3>> coefficients;  ///< k1, k2, k3 in N
   std::vector<double> damping;  ///< N·s/m of each spring's damping element, or empty for none
 };
 
 /// Spring coefficients from a stress-strain cubic σ(ε) = c1 ε + c2 ε² + c3 ε³ (Pa, seed 001
 /// §3.2) for a spring that stands for `cross_section` m² of tissue: k_n = c_n · cross_section.
-std::array<double, 3> spring_coefficients_from_cubic(const std::array<double, 3>& stress_cubic, double cross_section);
+std::array<double, 3> spring_coefficients_from_cubic(const std::array<double, 3>& stress_cubic,
+                                                     double cross_section);
 
 /// Adds the spring forces to `forces` and returns the stored energy in J,
 /// E = l0 (k1 ε²/2 + k2 |ε|³/3 + k3 ε⁴/4) per spring.
@@ -36,8 +37,9 @@ double add_cubic_spring_forces(std::span<const core::Vec3> positions, const Cubi
 
 /// Adds the forces of the springs' damping elements (seed 001: "virtual springs and damping
 /// elements"): −c (v_j − v_i)·d̂ d̂ on j and the opposite on i, with velocities in m/s.
-void add_spring_damping_forces(std::span<const core::Vec3> positions, std::span<const core::Vec3> velocities,
-                               const CubicSprings& springs, std::span<core::Vec3> forces);
+void add_spring_damping_forces(std::span<const core::Vec3> positions,
+                               std::span<const core::Vec3> velocities, const CubicSprings& springs,
+                               std::span<core::Vec3> forces);
 
 /// Per-knot parameters of a net.
 struct KnotParameters {
@@ -48,7 +50,8 @@ struct KnotParameters {
 
 /// One step of eq. 2–3 with the forces already in `forces` (springs and external) plus
 /// gravity `g` (m/s²). Held axes keep position and get zero velocity.
-void kismo_step(std::span<core::Vec3> positions, std::span<core::Vec3> velocities, std::span<const core::Vec3> forces,
-                const KnotParameters& knots, const core::Vec3& gravity, double h);
+void kismo_step(std::span<core::Vec3> positions, std::span<core::Vec3> velocities,
+                std::span<const core::Vec3> forces, const KnotParameters& knots,
+                const core::Vec3& gravity, double h);
 
 }  // namespace viscera::sim

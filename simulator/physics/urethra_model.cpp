@@ -10,23 +10,32 @@
 namespace viscera::sim {
 
 UrethraModel::UrethraModel(const UrethraParameters& parameters) : p_(parameters) {
-  if (p_.basic_sections < 2 || p_.points_per_section < 3) throw core::UsageError("urethra needs ≥ 2 sections of ≥ 3 points");
-  if (!(p_.radius > 0.0) || !(p_.endoscope_radius >= p_.radius) || !(p_.length > 0.0) || !(p_.transition_length > 0.0)) {
-    throw core::UsageError("urethra radii, length and transition must be positive, endoscope ≥ lumen");
+  if (p_.basic_sections < 2 || p_.points_per_section < 3)
+    throw core::UsageError("urethra needs ≥ 2 sections of ≥ 3 points");
+  if (!(p_.radius > 0.0) || !(p_.endoscope_radius >= p_.radius) || !(p_.length > 0.0) ||
+      !(p_.transition_length > 0.0)) {
+    throw core::UsageError(
+        "urethra radii, length and transition must be positive, endoscope ≥ lumen");
   }
-  for (int j = 0; j < p_.basic_sections; ++j) section_z_.push_back(p_.length * j / (p_.basic_sections - 1));
+  for (int j = 0; j < p_.basic_sections; ++j)
+    section_z_.push_back(p_.length * j / (p_.basic_sections - 1));
 }
 
-core::Vec3 UrethraModel::centre_line(double z) const { return {0.0, p_.curvature * z * z, z}; }
+core::Vec3 UrethraModel::centre_line(double z) const {
+  return {0.0, p_.curvature * z * z, z};
+}
 
-core::Vec3 UrethraModel::tangent(double z) const { return core::Vec3(0.0, 2.0 * p_.curvature * z, 1.0).normalized(); }
+core::Vec3 UrethraModel::tangent(double z) const {
+  return core::Vec3(0.0, 2.0 * p_.curvature * z, 1.0).normalized();
+}
 
 double UrethraModel::widened_radius(double ahead) const {
   if (ahead <= 0.0) return p_.endoscope_radius;
   if (ahead >= p_.transition_length) return p_.radius;
   // Half a cosine wave: tangent-continuous with the endoscope at the tip and with the
   // undeformed lumen at the end of the moving deformation (seed 002 §3.2).
-  return p_.radius + (p_.endoscope_radius - p_.radius) * 0.5 * (1.0 + std::cos(std::numbers::pi * ahead / p_.transition_length));
+  return p_.radius + (p_.endoscope_radius - p_.radius) * 0.5 *
+                         (1.0 + std::cos(std::numbers::pi * ahead / p_.transition_length));
 }
 
 double UrethraModel::insertion_fraction(double tip_z) const {
@@ -42,7 +51,8 @@ core::Vec3 shaft_axis(double pitch, double yaw) {
 
 /// `v` turned about the x axis by `angle` rad.
 core::Vec3 turned_about_x(const core::Vec3& v, double angle) {
-  return {v.x(), std::cos(angle) * v.y() - std::sin(angle) * v.z(), std::sin(angle) * v.y() + std::cos(angle) * v.z()};
+  return {v.x(), std::cos(angle) * v.y() - std::sin(angle) * v.z(),
+          std::sin(angle) * v.y() + std::cos(angle) * v.z()};
 }
 
 }  // namespace
@@ -57,8 +67,8 @@ std::vector<UrethraSection> UrethraModel::lattice(double tip_z) const {
 std::vector<UrethraSection> UrethraModel::lattice(const EndoscopeState& e) const {
   const double tip_z = e.tip.z();
   const core::Vec3 axis = shaft_axis(e.pitch, e.yaw);
-  const double offset = e.tip.y() - centre_line(tip_z).y();              // dy
-  const double tilt = e.pitch - std::atan(2.0 * p_.curvature * tip_z);    // dθx
+  const double offset = e.tip.y() - centre_line(tip_z).y();             // dy
+  const double tilt = e.pitch - std::atan(2.0 * p_.curvature * tip_z);  // dθx
   std::vector<double> zs = section_z_;
   constexpr int kMovingSections = 10;  // seed 002: ten subsections
   for (int k = 1; k <= kMovingSections; ++k) {
@@ -68,8 +78,8 @@ std::vector<UrethraSection> UrethraModel::lattice(const EndoscopeState& e) const
   std::sort(zs.begin(), zs.end());
   // Basic sections beyond the moving deformation, counted to share out offset and tilt.
   const double downstream_from = tip_z + p_.transition_length;
-  const auto downstream = static_cast<int>(std::count_if(section_z_.begin(), section_z_.end(),
-                                                         [&](double z) { return z >= downstream_from; }));
+  const auto downstream = static_cast<int>(std::count_if(
+      section_z_.begin(), section_z_.end(), [&](double z) { return z >= downstream_from; }));
   int downstream_index = 0;
   std::vector<UrethraSection> sections;
   for (const double z : zs) {
@@ -81,7 +91,8 @@ std::vector<UrethraSection> UrethraModel::lattice(const EndoscopeState& e) const
       s.normal = axis;
     } else if (z < downstream_from) {
       // The moving deformation blends from the shaft to the undeformed tube.
-      const double blend = 0.5 * (1.0 + std::cos(std::numbers::pi * (z - tip_z) / p_.transition_length));
+      const double blend =
+          0.5 * (1.0 + std::cos(std::numbers::pi * (z - tip_z) / p_.transition_length));
       s.centre = centre_line(z) + core::Vec3(0.0, offset, 0.0);
       s.normal = (blend * axis + (1.0 - blend) * turned_about_x(tangent(z), tilt)).normalized();
     } else {
@@ -89,7 +100,8 @@ std::vector<UrethraSection> UrethraModel::lattice(const EndoscopeState& e) const
       const bool basic = std::find(section_z_.begin(), section_z_.end(), z) != section_z_.end();
       const int k = basic ? ++downstream_index : std::max(1, downstream_index);
       const double share = downstream > 0 ? static_cast<double>(downstream - k) / downstream : 0.0;
-      const double turn = downstream > 0 ? tilt * static_cast<double>(downstream - k + 1) / downstream : 0.0;
+      const double turn =
+          downstream > 0 ? tilt * static_cast<double>(downstream - k + 1) / downstream : 0.0;
       s.centre = centre_line(z) + core::Vec3(0.0, offset * share, 0.0);
       s.normal = turned_about_x(tangent(z), turn);
     }
@@ -112,8 +124,10 @@ core::SurfaceMesh UrethraModel::surface(double tip_z, int around, int along) con
   return surface(on_line, around, along);
 }
 
-core::SurfaceMesh UrethraModel::surface(const EndoscopeState& endoscope, int around, int along) const {
-  if (around < 1 || along < 1) throw core::UsageError("urethra surface needs at least one sample per segment");
+core::SurfaceMesh UrethraModel::surface(const EndoscopeState& endoscope, int around,
+                                        int along) const {
+  if (around < 1 || along < 1)
+    throw core::UsageError("urethra surface needs at least one sample per segment");
   const auto sections = lattice(endoscope);
   // Rings: each section's points interpolated around the lumen.
   std::vector<std::vector<core::Vec3>> rings;
@@ -121,7 +135,8 @@ core::SurfaceMesh UrethraModel::surface(const EndoscopeState& endoscope, int aro
     const core::CatmullRomSpline ring(section.points, core::KnotSpacing::ChordLength, true);
     std::vector<core::Vec3> samples;
     for (int s = 0; s < ring.segments(); ++s)
-      for (int k = 0; k < around; ++k) samples.push_back(ring.evaluate(s, static_cast<double>(k) / around));
+      for (int k = 0; k < around; ++k)
+        samples.push_back(ring.evaluate(s, static_cast<double>(k) / around));
     rings.push_back(std::move(samples));
   }
   // Along the tube: one open curve per ring position through the successive rings.
@@ -129,7 +144,8 @@ core::SurfaceMesh UrethraModel::surface(const EndoscopeState& endoscope, int aro
   std::vector<std::vector<core::Vec3>> rows;  // rows[r][c]
   for (std::size_t c = 0; c < columns; ++c) {
     std::vector<core::Vec3> through;
-    for (const auto& r : rings) through.push_back(r[c]);
+    for (const auto& r : rings)
+      through.push_back(r[c]);
     const core::CatmullRomSpline line(through, core::KnotSpacing::ChordLength, false);
     std::size_t r = 0;
     for (int s = 0; s < line.segments(); ++s) {
@@ -143,10 +159,13 @@ core::SurfaceMesh UrethraModel::surface(const EndoscopeState& endoscope, int aro
   for (std::size_t r = 0; r < rows.size(); ++r) {
     for (std::size_t c = 0; c < columns; ++c) {
       mesh.vertices.push_back(rows[r][c]);
-      mesh.uvs.emplace_back(static_cast<double>(c) / columns, static_cast<double>(r) / (rows.size() - 1));
+      mesh.uvs.emplace_back(static_cast<double>(c) / columns,
+                            static_cast<double>(r) / (rows.size() - 1));
     }
   }
-  const auto index = [columns](std::size_t r, std::size_t c) { return static_cast<int>(r * columns + c % columns); };
+  const auto index = [columns](std::size_t r, std::size_t c) {
+    return static_cast<int>(r * columns + c % columns);
+  };
   for (std::size_t r = 0; r + 1 < rows.size(); ++r) {
     for (std::size_t c = 0; c < columns; ++c) {
       // Ring points run counter-clockwise about +z, rows run along +z: this winding faces out.
@@ -174,7 +193,8 @@ UrethraFeedback UrethraModel::feedback(const EndoscopeState& e) const {
     const double spring_force = springs * p_.spring_stiffness * stretch;
     out.normal_force += spring_force;
     if (ahead > 0.0) {
-      const double slope = (p_.endoscope_radius - p_.radius) * 0.5 * std::numbers::pi / p_.transition_length *
+      const double slope = (p_.endoscope_radius - p_.radius) * 0.5 * std::numbers::pi /
+                           p_.transition_length *
                            std::sin(std::numbers::pi * ahead / p_.transition_length);
       out.wall_resistance -= spring_force * slope / std::sqrt(1.0 + slope * slope);
     }
@@ -191,7 +211,8 @@ UrethraFeedback UrethraModel::feedback(const EndoscopeState& e) const {
   out.viscous_friction = -p_.viscous_friction * axial_speed;
   out.torque_z -= p_.viscous_torque_friction * e.spin_rate;
 
-  const double along_axis = out.coulomb_friction + out.viscous_friction + out.wall_resistance;  // eq. 6
+  const double along_axis =
+      out.coulomb_friction + out.viscous_friction + out.wall_resistance;  // eq. 6
   out.force = along_axis * axis;
   out.force.x() = 0.0;  // only the y–z projections are fed to the device (seed 002 §5.1)
 
@@ -203,8 +224,9 @@ UrethraFeedback UrethraModel::feedback(const EndoscopeState& e) const {
   const core::Vec3 bladder = centre_line(p_.length);
   const double run = tip_z - bladder.z();
   if (std::abs(run) > 1e-12) {
-    const double reference = std::atan((p_.curvature * tip_z * tip_z - bladder.y()) / run);  // eq. 9
-    const double actual = std::atan((e.tip.y() - bladder.y()) / run);                     // eq. 10
+    const double reference =
+        std::atan((p_.curvature * tip_z * tip_z - bladder.y()) / run);  // eq. 9
+    const double actual = std::atan((e.tip.y() - bladder.y()) / run);   // eq. 10
     out.torque_x -= p_.bladder_rotational_stiffness * (actual - reference);
   }
   out.torque_y = -tip_stiffness * e.yaw;

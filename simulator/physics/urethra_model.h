@@ -17,23 +17,24 @@ namespace viscera::sim {
 
 /// Geometry and tissue parameters. Lengths in m, stiffness in N/m, angles in rad.
 struct UrethraParameters {
-  double curvature = 13.0;            ///< a in y = a z², 1/m (seed 002: 0.13 per cm)
-  double length = 0.16;               ///< m along z to the bladder entrance
-  double radius = 0.001;              ///< undeformed lumen radius, m
-  double endoscope_radius = 0.004;    ///< m (seed 002: four times the urethra's)
-  int points_per_section = 9;         ///< n
-  int basic_sections = 26;            ///< w
-  double transition_length = 0.012;   ///< m of the moving deformation ahead of the tip (ten subsections)
-  double spring_stiffness = 15.0;     ///< k of each of the n − 1 wall springs per section, N/m
-  double free_length = 0.04;          ///< m of urethra outside the body, where torques vanish
-  double friction = 0.3;              ///< μ
-  double viscous_friction = 2.0;      ///< b_V, N·s/m
-  double viscous_torque_friction = 2e-4;  ///< b_ω, N·m·s
-  double tip_rotational_stiffness = 0.05; ///< N·m/rad at full insertion, for Tx (part 1) and Ty
+  double curvature = 13.0;          ///< a in y = a z², 1/m (seed 002: 0.13 per cm)
+  double length = 0.16;             ///< m along z to the bladder entrance
+  double radius = 0.001;            ///< undeformed lumen radius, m
+  double endoscope_radius = 0.004;  ///< m (seed 002: four times the urethra's)
+  int points_per_section = 9;       ///< n
+  int basic_sections = 26;          ///< w
+  double transition_length =
+      0.012;  ///< m of the moving deformation ahead of the tip (ten subsections)
+  double spring_stiffness = 15.0;  ///< k of each of the n − 1 wall springs per section, N/m
+  double free_length = 0.04;       ///< m of urethra outside the body, where torques vanish
+  double friction = 0.3;           ///< μ
+  double viscous_friction = 2.0;   ///< b_V, N·s/m
+  double viscous_torque_friction = 2e-4;   ///< b_ω, N·m·s
+  double tip_rotational_stiffness = 0.05;  ///< N·m/rad at full insertion, for Tx (part 1) and Ty
   double bladder_rotational_stiffness = 0.02;  ///< N·m/rad of the spring at the bladder entrance
-  double break_force = 4.0;           ///< N along the axis beyond which tissue tears
-  double break_torque = 0.08;         ///< N·m beyond which tissue tears
-  double warning_fraction = 0.8;      ///< warn from this fraction of a break limit
+  double break_force = 4.0;                    ///< N along the axis beyond which tissue tears
+  double break_torque = 0.08;                  ///< N·m beyond which tissue tears
+  double warning_fraction = 0.8;               ///< warn from this fraction of a break limit
 };
 
 /// The endoscope as the device reports it.
@@ -47,11 +48,11 @@ struct EndoscopeState {
 
 /// Forces and torques on the endoscope (seed 002 eq. 6–13) and what the trainee is shown.
 struct UrethraFeedback {
-  double normal_force = 0.0;        ///< N, the wall springs pressing on the shaft
-  double coulomb_friction = 0.0;    ///< F1 along the axis, N (negative = against insertion)
-  double viscous_friction = 0.0;    ///< F2 along the axis, N
-  double wall_resistance = 0.0;     ///< F3 along the axis, N
-  core::Vec3 force = core::Vec3::Zero();   ///< F_re = F1 + F2 + F3 along the axis (y, z), N
+  double normal_force = 0.0;              ///< N, the wall springs pressing on the shaft
+  double coulomb_friction = 0.0;          ///< F1 along the axis, N (negative = against insertion)
+  double viscous_friction = 0.0;          ///< F2 along the axis, N
+  double wall_resistance = 0.0;           ///< F3 along the axis, N
+  core::Vec3 force = core::Vec3::Zero();  ///< F_re = F1 + F2 + F3 along the axis (y, z), N
   double torque_x = 0.0, torque_y = 0.0, torque_z = 0.0;  ///< N·m
   /// Bars of seed 002 Fig. 11 as fractions of the break limits: green Tx, blue Ty, yellow Tz,
   /// red F_re.

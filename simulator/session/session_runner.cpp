@@ -327,8 +327,7 @@ void SessionRunner::step_world() {
     // Whatever the physics reported, the state says where it went wrong.
     const long long step = world_.steps() + 1;
     const double time = static_cast<double>(step) * world_.time_step();
-    if (const auto fault = find_state_fault(world_))
-      throw simulation_error(*fault, step, time);
+    if (const auto fault = find_state_fault(world_)) throw simulation_error(*fault, step, time);
     throw simulation_error(e.reason(), tissue_ != nullptr ? tissue_->name() : std::string(), step,
                            time);
   }

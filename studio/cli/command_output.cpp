@@ -5,9 +5,13 @@
 
 namespace viscera::cli {
 
-void print_json(const nlohmann::json& json) { std::cout << json.dump(2) << '\n'; }
+void print_json(const nlohmann::json& json) {
+  std::cout << json.dump(2) << '\n';
+}
 
-void print_text(const std::string& text) { std::cout << text; }
+void print_text(const std::string& text) {
+  std::cout << text;
+}
 
 std::string human_bytes(std::uint64_t bytes) {
   static constexpr const char* kUnits[] = {"B", "KiB", "MiB", "GiB", "TiB"};

@@ -10,6 +10,8 @@
 #include "studio/cli/mpi_ranks.h"
 #include "studio/cli/terminal_progress.h"
 #include "templates/generator/batch_index.h"
+#include "templates/generator/batch_journal.h"
+#include "templates/generator/batch_share.h"
 #include "templates/variability/parameter_distribution.h"
 
 namespace viscera::cli {
@@ -64,7 +66,10 @@ std::vector<core::VariabilityRule> batch_rules(const templates::ScenarioTemplate
   return rules;
 }
 
-void report(const nlohmann::json& index, const fs::path& folder, bool json, bool partial) {
+/// Prints what the run wrote; `generated` and `kept` count this run's patients (kept: finished
+/// by an interrupted run of the same batch).
+void report(const nlohmann::json& index, const fs::path& folder, bool json, bool partial,
+            std::size_t generated, std::size_t kept) {
   const fs::path where = fs::absolute(folder).lexically_normal();
   if (json) {
     nlohmann::json out = {{"folder", where.string()},
@@ -72,7 +77,9 @@ void report(const nlohmann::json& index, const fs::path& folder, bool json, bool
                           {"seed", index.at("seed")},
                           {"count", index.at("count")},
                           {"patients", index.at("patients").size()},
-                          {"partial", partial}};
+                          {"partial", partial},
+                          {"generated", generated},
+                          {"kept", kept}};
     if (index.contains("redraws")) out["redraws"] = index.at("redraws");
     if (index.contains("diversity")) {
       out["distinct_parameter_sets"] = index.at("diversity").at("distinct_parameter_sets");
@@ -88,7 +95,10 @@ void report(const nlohmann::json& index, const fs::path& folder, bool json, bool
   out << "wrote " << index.at("patients").size() << " validated "
       << index.at("template").get<std::string>() << " patients (" << redraws
       << " invalid draws redrawn) and " << (partial ? "a partial index" : "index.json") << " to "
-      << where.string() << "\n";
+      << where.string();
+  if (kept > 0)
+    out << " (" << kept << " kept from an interrupted run, " << generated << " generated)";
+  out << "\n";
   print_text(out.str());
 }
 
@@ -96,6 +106,8 @@ void report(const nlohmann::json& index, const fs::path& folder, bool json, bool
 /// same on every rank.
 int generate(const GenerateOptions& o) {
   MpiRanks ranks;
+  // Collective, so before anything that may throw on one rank only.
+  MpiSharedCounter counter(ranks);
   const fs::path folder = o.output;
   nlohmann::json payload;
   nlohmann::json header;
@@ -110,17 +122,21 @@ int generate(const GenerateOptions& o) {
     header = templates::batch_header(generator, o.count);
     const auto indices = shard ? templates::shard_indices(o.count, shard->first, shard->second)
                                : templates::shard_indices(o.count, 0, 1);
-    // Each rank takes every size()-th patient of the share: disjoint, and all ranks get a
-    // spread of the batch.
-    std::vector<std::uint64_t> mine;
-    for (std::size_t j = static_cast<std::size_t>(ranks.rank()); j < indices.size();
-         j += static_cast<std::size_t>(ranks.size()))
-      mine.push_back(indices[j]);
+    // Patients a previous run of the same batch finished are kept (resume after a kill).
+    const templates::BatchJournal journal(folder, header);
+    // Ranks take the next patient of the share from a counter on rank 0 when they are free:
+    // patients differ in cost (redraws), so a fixed split leaves one rank waiting.
+    const templates::NextPosition next = [&counter]() -> std::optional<std::size_t> {
+      return static_cast<std::size_t>(counter.fetch_and_increment());
+    };
     TerminalProgress bar;
+    const templates::ShareResult share =
+        templates::generate_patients(generator, o.count, indices, next, folder, &journal,
+                                     ranks.rank() == 0 ? bar.progress() : core::Progress::none());
     payload = {{"ok", true},
-               {"records", templates::generate_share(
-                               generator, o.count, mine, folder,
-                               ranks.rank() == 0 ? bar.progress() : core::Progress::none())}};
+               {"records", share.records},
+               {"generated", share.generated},
+               {"kept", share.kept}};
   } catch (const std::exception& e) {
     payload = {
         {"ok", false}, {"error", e.what()}, {"exit", static_cast<int>(core::exit_code_for(e))}};
@@ -130,6 +146,7 @@ int generate(const GenerateOptions& o) {
   if (ranks.rank() == 0) {
     try {
       nlohmann::json records = nlohmann::json::array();
+      std::size_t generated = 0, kept = 0;
       for (std::size_t r = 0; r < parts.size(); ++r) {
         const nlohmann::json part = nlohmann::json::parse(parts[r]);
         if (!part.at("ok").get<bool>()) {
@@ -140,6 +157,8 @@ int generate(const GenerateOptions& o) {
         }
         for (const auto& record : part.at("records"))
           records.push_back(record);
+        generated += part.at("generated").get<std::size_t>();
+        kept += part.at("kept").get<std::size_t>();
       }
       if (code == 0) {
         if (shard) {
@@ -153,11 +172,12 @@ int generate(const GenerateOptions& o) {
           partial["patients"] = sorted;
           templates::write_json_atomically(
               partial, folder / templates::shard_index_name(shard->first, shard->second));
-          report(partial, folder, o.json, true);
+          report(partial, folder, o.json, true, generated, kept);
         } else {
           const nlohmann::json index = templates::assemble_index(header, records, folder);
           templates::write_json_atomically(index, folder / "index.json");
-          report(index, folder, o.json, false);
+          templates::BatchJournal::remove(folder);
+          report(index, folder, o.json, false, generated, kept);
         }
       }
     } catch (const std::exception& e) {
@@ -170,7 +190,7 @@ int generate(const GenerateOptions& o) {
 
 int merge(const GenerateOptions& o) {
   const nlohmann::json index = templates::merge_shards(o.merge);
-  report(index, o.merge, o.json, false);
+  report(index, o.merge, o.json, false, 0, 0);
   return 0;
 }
 

@@ -5,7 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <iostream>
 
-#include "studio/cli/command_line.h"
+#include "core/cli/command_line.h"
 #include "studio/cli/export_commands.h"
 #include "studio/cli/generate_commands.h"
 #include "studio/cli/library_commands.h"

@@ -29,7 +29,6 @@ nlohmann::json repair_json(const importers::SurfaceRepairReport& r) {
   return {{"merged_vertices", r.merged_vertices},
           {"split_non_manifold_vertices", r.split_non_manifold_vertices},
           {"filled_holes", r.filled_holes},
-          {"self_intersections_removed", r.self_intersections_removed},
           {"reoriented", r.reoriented}};
 }
 
@@ -100,6 +99,7 @@ void run(const SurfaceCommandOptions& o) {
                     {"area_m2", area},
                     {"volume_m3", volume},
                     {"decimation_retries", s.decimation_retries},
+                    {"smoothing_dropped", s.smoothing_dropped},
                     {"repair", repair_json(s.repair)}});
     text += "  label " + std::to_string(s.label) + " (" + label_name(labels, s.label) +
             "): " + std::to_string(s.mesh.triangles.size()) + " triangles, area " +

@@ -26,10 +26,12 @@ struct TetsCommandOptions {
   std::string input, output, units = "m";
   int label = 0;
   double cell_size = 0.0, facet_size = 0.0, facet_distance = 0.0, facet_angle = 30.0;
-  double radius_edge_ratio = 3.0, grading = 0.0;
+  double radius_edge_ratio = 3.0, grading = 0.0, sliver_bound = 12.0;
   std::size_t tets = 150000, triangles = 50000;
   std::vector<std::string> label_sizes;
   int threads = 1;
+  double time_limit = 300.0;
+  std::string surface_source = "tets";
   bool no_exude = false, no_optimize = false, no_surface = false, json = false;
 };
 
@@ -109,8 +111,13 @@ void run_tets(const TetsCommandOptions& o) {
     options.tets.facet_size = o.facet_size;
     options.tets.facet_distance = o.facet_distance;
     options.tets.exude = !o.no_exude;
+    options.tets.exude_sliver_bound_degrees = o.sliver_bound;
     options.tets.threads = o.threads;
     options.surface.target_triangles = o.triangles;
+    options.time_limit_seconds = o.time_limit;
+    options.visual_surface = o.surface_source == "contour"
+                                 ? importers::VisualSurfaceSource::LabelContour
+                                 : importers::VisualSurfaceSource::TetBoundary;
     importers::LabelBody made =
         importers::mesh_label_body(labels, options, o.input, bar.progress());
     body = std::move(made.body);
@@ -124,7 +131,9 @@ void run_tets(const TetsCommandOptions& o) {
                 {"facet_distance_m", made.criteria.facet_distance},
                 {"facet_angle_degrees", o.facet_angle},
                 {"cell_radius_edge_ratio", o.radius_edge_ratio},
-                {"threads", o.threads}};
+                {"exude_sliver_bound_degrees", o.no_exude ? 0.0 : o.sliver_bound},
+                {"threads", o.threads},
+                {"visual_surface", o.surface_source}};
   } else {
     surface = importers::read_mesh(o.input, importers::length_unit_from_string(o.units));
     core::TetMeshingOptions options;
@@ -217,12 +226,27 @@ void add_mesh_tets_commands(CLI::App& mesh) {
                    "Label map: largest cell radius-edge ratio")
       ->capture_default_str();
   tets->add_flag("--no-exude", o->no_exude, "Label map: skip sliver exudation");
+  tets->add_option("--exude-bound", o->sliver_bound,
+                   "Label map: exudation works on tets whose smallest dihedral angle is below "
+                   "this, degrees (0: as far as it goes, slow)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 89.0));
   tets->add_option("--threads", o->threads,
                    "Label map: > 1 runs Mesh_3 in parallel (faster, not bit-reproducible)")
       ->capture_default_str()
       ->check(CLI::Range(1, 256));
-  tets->add_option("--triangles", o->triangles, "Label map: visual surface triangle budget")
+  tets->add_option("--surface", o->surface_source,
+                   "Label map: visual surface from the tets' boundary (tets: fast, Mesh_3's "
+                   "boundary resolution) or the label's smoothed, decimated contour (contour)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"tets", "contour"}));
+  tets->add_option("--triangles", o->triangles,
+                   "Label map, --surface contour: visual surface triangle budget")
       ->capture_default_str();
+  tets->add_option("--time-limit", o->time_limit,
+                   "Label map: give up (exit 4, nothing written) after this many seconds; 0: never")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
   tets->add_option("--grading", o->grading, "Surface: size-field grading distance, m (gmsh)");
   tets->add_flag("--no-optimize", o->no_optimize, "Surface: skip gmsh's optimisation");
   tets->add_option("--units", o->units, "Surface: unit of the input file (m, cm, mm)")

@@ -3,6 +3,7 @@
 #include <mpi.h>
 
 #include <cstdlib>
+#include <cstring>
 
 #include "core/error.h"
 
@@ -64,6 +65,43 @@ std::vector<std::string> MpiRanks::gather(const std::string& text) const {
 int MpiRanks::broadcast(int value) const {
   if (size_ > 1) check(MPI_Bcast(&value, 1, MPI_INT, 0, MPI_COMM_WORLD), "MPI_Bcast");
   return value;
+}
+
+MpiSharedCounter::MpiSharedCounter(const MpiRanks& ranks) : shared_(ranks.size() > 1) {
+  if (!shared_) return;
+  static_assert(sizeof(MPI_Win) <= sizeof(void*));
+  MPI_Win window = MPI_WIN_NULL;
+  const MPI_Aint bytes = ranks.rank() == 0 ? static_cast<MPI_Aint>(sizeof(std::uint64_t)) : 0;
+  check(MPI_Win_allocate(bytes, static_cast<int>(sizeof(std::uint64_t)), MPI_INFO_NULL,
+                         MPI_COMM_WORLD, &base_, &window),
+        "MPI_Win_allocate");
+  if (ranks.rank() == 0) {
+    check(MPI_Win_lock(MPI_LOCK_EXCLUSIVE, 0, 0, window), "MPI_Win_lock");
+    *base_ = 0;
+    check(MPI_Win_unlock(0, window), "MPI_Win_unlock");
+  }
+  std::memcpy(&window_, &window, sizeof window);
+  // Nobody takes from the counter before rank 0 has set it.
+  check(MPI_Barrier(MPI_COMM_WORLD), "MPI_Barrier");
+}
+
+MpiSharedCounter::~MpiSharedCounter() {
+  if (!shared_) return;
+  MPI_Win window = MPI_WIN_NULL;
+  std::memcpy(&window, &window_, sizeof window);
+  MPI_Win_free(&window);
+}
+
+std::uint64_t MpiSharedCounter::fetch_and_increment() {
+  if (!shared_) return local_++;
+  MPI_Win window = MPI_WIN_NULL;
+  std::memcpy(&window, &window_, sizeof window);
+  const std::uint64_t one = 1;
+  std::uint64_t before = 0;
+  check(MPI_Win_lock(MPI_LOCK_SHARED, 0, 0, window), "MPI_Win_lock");
+  check(MPI_Fetch_and_op(&one, &before, MPI_UINT64_T, 0, 0, MPI_SUM, window), "MPI_Fetch_and_op");
+  check(MPI_Win_unlock(0, window), "MPI_Win_unlock");
+  return before;
 }
 
 }  // namespace viscera::cli

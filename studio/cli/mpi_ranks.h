@@ -3,6 +3,7 @@
 /// disjoint share of the batch and rank 0 gathers the records; started without a launcher the
 /// program is one rank and MPI is not initialised at all, so the same binary runs anywhere.
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,27 @@ class MpiRanks {
   bool initialised_ = false;
   int rank_ = 0;
   int size_ = 1;
+};
+
+/// A counter held by rank 0 that every rank increments atomically, for handing out work
+/// dynamically: MPI one-sided MPI_Fetch_and_op under a shared lock on a window of rank 0
+/// (passive target: rank 0 need not call MPI while the others take from it). Collective:
+/// construct and destroy it on every rank. With one rank it is a plain counter.
+class MpiSharedCounter {
+ public:
+  explicit MpiSharedCounter(const MpiRanks& ranks);
+  ~MpiSharedCounter();
+  MpiSharedCounter(const MpiSharedCounter&) = delete;
+  MpiSharedCounter& operator=(const MpiSharedCounter&) = delete;
+
+  /// The counter's value before this call's increment: 0, 1, 2, … over all ranks, each once.
+  std::uint64_t fetch_and_increment();
+
+ private:
+  bool shared_ = false;
+  std::uint64_t local_ = 0;
+  std::uint64_t* base_ = nullptr;
+  void* window_ = nullptr;  ///< MPI_Win (an opaque pointer in OpenMPI and MPICH alike)
 };
 
 }  // namespace viscera::cli

@@ -11,12 +11,18 @@ namespace viscera::cli {
 namespace {
 
 nlohmann::json summary_to_json(const core::PackageSummary& s) {
-  return {{"format", s.format},           {"version", s.version},
-          {"name", s.name},               {"procedure", s.procedure},
-          {"template", s.template_name},  {"seed", s.seed},
-          {"objects", s.object_count},    {"surface_triangles", s.surface_triangles},
-          {"body_nodes", s.body_nodes},   {"body_tets", s.body_tets},
-          {"files", s.file_count},        {"bytes", s.total_bytes}};
+  return {{"format", s.format},
+          {"version", s.version},
+          {"name", s.name},
+          {"procedure", s.procedure},
+          {"template", s.template_name},
+          {"seed", s.seed},
+          {"objects", s.object_count},
+          {"surface_triangles", s.surface_triangles},
+          {"body_nodes", s.body_nodes},
+          {"body_tets", s.body_tets},
+          {"files", s.file_count},
+          {"bytes", s.total_bytes}};
 }
 
 void show_info(const std::string& path, bool json) {
@@ -43,7 +49,8 @@ int validate(const std::string& path, bool json) {
   if (json) {
     nlohmann::json list = nlohmann::json::array();
     for (const auto& issue : issues) {
-      list.push_back({{"file", issue.file}, {"pointer", issue.json_pointer}, {"message", issue.message}});
+      list.push_back(
+          {{"file", issue.file}, {"pointer", issue.json_pointer}, {"message", issue.message}});
     }
     print_json({{"package", path}, {"valid", issues.empty()}, {"issues", list}});
   } else if (issues.empty()) {
@@ -74,7 +81,8 @@ void add_package_commands(CLI::App& app, int& exit_code) {
 
   auto* check = app.add_subcommand("validate", "Check a package: schema, references, checksums");
   auto check_options = std::make_shared<Options>();
-  check->add_option("package", check_options->input, "Package (.vscene folder or .vscz)")->required();
+  check->add_option("package", check_options->input, "Package (.vscene folder or .vscz)")
+      ->required();
   check->add_flag("--json", check_options->json, "Print JSON");
   check->callback([check_options, &exit_code] {
     exit_code = validate(check_options->input, check_options->json);

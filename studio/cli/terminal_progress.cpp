@@ -20,8 +20,8 @@ void TerminalProgress::draw(double fraction, const std::string& stage) {
   const int filled = static_cast<int>(fraction * kWidth + 0.5);
   std::string bar(static_cast<std::size_t>(filled), '#');
   bar.append(static_cast<std::size_t>(kWidth - filled), '.');
-  std::fprintf(stderr, "\r[%s] %3d%%  %-40.40s", bar.c_str(), static_cast<int>(fraction * 100.0 + 0.5),
-               stage.c_str());
+  std::fprintf(stderr, "\r[%s] %3d%%  %-40.40s", bar.c_str(),
+               static_cast<int>(fraction * 100.0 + 0.5), stage.c_str());
   std::fflush(stderr);
   drawn_ = true;
 }

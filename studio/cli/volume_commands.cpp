@@ -47,6 +47,9 @@ nlohmann::json describe(const importers::LoadedVolume& loaded, const std::string
                       {"modality", s.modality},
                       {"files", s.files}});
   }
+  nlohmann::json skipped = nlohmann::json::array();
+  for (const auto& s : loaded.skipped_files)
+    skipped.push_back({{"file", s.file.string()}, {"reason", s.reason}});
   return {{"input", std::filesystem::absolute(input).lexically_normal().string()},
           {"format", loaded.format},
           {"files", loaded.files.size()},
@@ -57,7 +60,8 @@ nlohmann::json describe(const importers::LoadedVolume& loaded, const std::string
           {"scalar_type", core::scalar_type_name(v.scalar_type)},
           {"value_range", {lo, hi}},
           {"notes", loaded.notes},
-          {"other_series", others}};
+          {"other_series", others},
+          {"skipped_files", skipped}};
 }
 
 std::string text_of(const nlohmann::json& info) {
@@ -85,6 +89,10 @@ std::string text_of(const nlohmann::json& info) {
     out << "  other series  " << s["uid"].get<std::string>() << " "
         << s["modality"].get<std::string>() << " \"" << s["description"].get<std::string>()
         << "\" (" << s["files"] << " files)\n";
+  }
+  for (const auto& s : info["skipped_files"]) {
+    out << "  skipped       " << s["file"].get<std::string>() << ": "
+        << s["reason"].get<std::string>() << "\n";
   }
   return out.str();
 }

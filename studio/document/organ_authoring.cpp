@@ -44,7 +44,65 @@ double mean_knot_spacing(const core::TetMesh& body) {
   return edges == 0 ? 0.0 : sum / static_cast<double>(edges);
 }
 
+/// The point of triangle abc closest to p (Ericson, Real-Time Collision Detection §5.1.5).
+core::Vec3 closest_on_triangle(const core::Vec3& p, const core::Vec3& a, const core::Vec3& b,
+                               const core::Vec3& c) {
+  const core::Vec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0.0 && d2 <= 0.0) return a;
+  const core::Vec3 bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0.0 && d4 <= d3) return b;
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return a + d1 / (d1 - d3) * ab;
+  const core::Vec3 cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0.0 && d5 <= d6) return c;
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return a + d2 / (d2 - d6) * ac;
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0)
+    return b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b);
+  const double denominator = 1.0 / (va + vb + vc);
+  return a + ab * (vb * denominator) + ac * (vc * denominator);
+}
+
 }  // namespace
+
+std::string wall_side_of(const std::string& kind) {
+  if (kind == "myoma-subserosal") return "serosa";
+  if (kind == "polyp" || kind == "myoma-submucosal" || kind == "myoma-pedunculated")
+    return "cavity";
+  throw core::UsageError(
+      "a pathology placed on a wall is polyp, myoma-submucosal, myoma-pedunculated or "
+      "myoma-subserosal, not \"" +
+      kind + "\"");
+}
+
+std::optional<core::Vec3> snap_to_wall_side(const core::SurfaceMesh& surface,
+                                            const core::Vec3& point, const std::string& side) {
+  const auto region = surface.vertex_attributes.find("cavity");
+  if (region == surface.vertex_attributes.end() || region->second.size() != surface.vertices.size())
+    return std::nullopt;
+  // Cavity wall: vertices marked 1 (2 is the cervical canal); serosa: the outside, 0.
+  const double wanted = side == "cavity" ? 1.0 : 0.0;
+  std::optional<core::Vec3> best;
+  double best_distance = 0.0;
+  for (const auto& tri : surface.triangles) {
+    if (region->second[static_cast<std::size_t>(tri[0])] != wanted ||
+        region->second[static_cast<std::size_t>(tri[1])] != wanted ||
+        region->second[static_cast<std::size_t>(tri[2])] != wanted)
+      continue;
+    const core::Vec3 q = closest_on_triangle(point, surface.vertices[tri[0]],
+                                             surface.vertices[tri[1]], surface.vertices[tri[2]]);
+    const double distance = (q - point).squaredNorm();
+    if (!best || distance < best_distance) {
+      best = q;
+      best_distance = distance;
+    }
+  }
+  return best;
+}
 
 TexturedObject bake_object_texture(const core::Scenario& scenario, const std::string& object_id,
                                    const TextureRequest& request, core::Progress& progress) {
@@ -66,7 +124,9 @@ TexturedObject bake_object_texture(const core::Scenario& scenario, const std::st
 core::VesselTree grow_organ_vessels(const core::Scenario& scenario, const std::string& object_id,
                                     const VesselRequest& request, core::Progress& progress) {
   const core::SceneObject& organ = object_of(scenario, object_id);
-  const templates::SurfaceMeshDomain domain(organ.surface, object_id + " surface");
+  // A baked texture cuts the surface at its seams; the domain needs it closed (as validation).
+  const templates::SurfaceMeshDomain domain(textures::welded_surface(organ.surface),
+                                            object_id + " surface");
   std::string id = object_id + "-vessels";
   for (int n = 2; std::any_of(scenario.vessel_trees.begin(), scenario.vessel_trees.end(),
                               [&](const auto& t) { return t.id == id; });
@@ -120,11 +180,20 @@ PathologyParts build_pathology_at(const core::Scenario& scenario, const std::str
     throw core::UsageError("object \"" + host_id + "\" has no body to attach a pathology to");
   if (!(size > 0.0) || !std::isfinite(size))
     throw core::UsageError("a pathology's size must be a positive length in m");
+  const std::string side = wall_side_of(kind);
   progress.begin_stage("shaping the " + kind, 3);
-  const templates::SurfaceQueries tissue(host.surface, host_id + " surface");
+  // A baked texture cuts the surface at its seams: the queries need the closed surface, as the
+  // variant validation uses (textures::welded_surface keeps the "cavity" marks).
+  const core::SurfaceMesh wall = textures::welded_surface(host.surface);
+  const templates::SurfaceQueries tissue(wall, host_id + " surface");
+  // Intracavitary lesions sit on the cavity side of the wall, subserosal ones on the outside,
+  // wherever on the organ the click landed (a hollow organ marks its cavity wall).
+  const core::Vec3 site = snap_to_wall_side(wall, point, side).value_or(point);
+  // A subserosal myoma is shaped as a sessile one: bulging out of the wall along its normal.
+  const std::string shape_kind = kind == "myoma-subserosal" ? "myoma-submucosal" : kind;
   core::Vec3 hang = -core::Vec3::UnitZ();
   for (const auto& mark : scenario.landmarks) {
-    if (mark.id == "cervix-internal-os") hang = mark.position - point;
+    if (mark.id == "cervix-internal-os") hang = mark.position - site;
   }
   templates::PathologyRequest shape_request;
   shape_request.edge_length = std::clamp(0.25 * size, 0.0015, 0.003);
@@ -156,7 +225,8 @@ PathologyParts build_pathology_at(const core::Scenario& scenario, const std::str
   std::optional<templates::PlacedPathology> placed;
   core::Scenario copy;
   for (int attempt = 0; attempt < 20 && !placed; ++attempt) {
-    placed = templates::shape_pathology_at(tissue, point, kind, size, hang, shape_request, rng);
+    placed =
+        templates::shape_pathology_at(tissue, site, shape_kind, size, hang, shape_request, rng);
     if (!placed) continue;
     copy = scenario;
     if (parts.material) copy.materials[material_id] = *parts.material;

@@ -60,9 +60,22 @@ core::VesselTree grow_organ_vessels(const core::Scenario& scenario, const std::s
                                     const VesselRequest& request,
                                     core::Progress& progress = core::Progress::none());
 
-/// Kinds a click can place on an organ wall (templates::shape_pathology_at).
+/// Kinds a click can place on an organ wall (templates::shape_pathology_at). Polyps, submucosal
+/// and pedunculated myomas grow into the cavity; a subserosal myoma bulges out of the serosa.
 inline constexpr const char* kWallPathologyKinds[] = {"polyp", "myoma-submucosal",
-                                                      "myoma-pedunculated"};
+                                                      "myoma-pedunculated", "myoma-subserosal"};
+
+/// Which side of a hollow organ's wall a pathology of `kind` belongs on: "cavity" for
+/// intracavitary kinds (polyp, myoma-submucosal, myoma-pedunculated), "serosa" for
+/// myoma-subserosal. Throws core::UsageError for any other kind.
+std::string wall_side_of(const std::string& kind);
+
+/// The point of `surface`'s `side` ("cavity": triangles whose vertices the "cavity" vertex
+/// attribute marks 1, as the hysteroscopy template marks the cavity wall; "serosa": marked 0)
+/// nearest to `point`, m. Nothing when the surface has no such marks (a solid organ: the wall
+/// where the user clicked is the only wall).
+std::optional<core::Vec3> snap_to_wall_side(const core::SurfaceMesh& surface,
+                                            const core::Vec3& point, const std::string& side);
 
 /// A pathology as the scenario holds it: its object (a gmsh tet body, attached at its base),
 /// the material to add when the scenario lacks it, its record and its connection to the host.
@@ -74,11 +87,13 @@ struct PathologyParts {
 };
 
 /// Shapes a pathology of `kind` and `size` m at the wall point of object `host_id` nearest to
-/// `point` (m), as the hysteroscopy template does, fills it with tets and connects its base to
-/// the host's nearest knots. Stalks lean towards the scenario's "cervix-internal-os" landmark,
-/// else down (−z). Material "myoma" or "endometrium" (the scenario's, else the shipped tissue).
-/// Throws core::UsageError for an unknown host or kind, core::InputError when the shape finds
-/// no room there in 20 draws of `seed`'s generator.
+/// `point` (m) on the side of the wall where that kind grows (snap_to_wall_side; a click on
+/// the outside of the uterus seats a polyp on the cavity wall beneath), on the host's welded
+/// surface (a baked, seam-split surface works), as the hysteroscopy template does, fills it with
+/// tets and connects its base to the host's nearest knots. Stalks lean towards the scenario's
+/// "cervix-internal-os" landmark, else down (−z). Material "myoma" or "endometrium" (the
+/// scenario's, else the shipped tissue). Throws core::UsageError for an unknown host or kind,
+/// core::InputError when the shape finds no room there in 20 draws of `seed`'s generator.
 PathologyParts build_pathology_at(const core::Scenario& scenario, const std::string& host_id,
                                   const core::Vec3& point, const std::string& kind, double size,
                                   std::uint64_t seed = 1,

@@ -1,9 +1,14 @@
 #include "studio/document/scenario_document.h"
 
+#include <algorithm>
+#include <fstream>
+
 #include "core/error.h"
 #include "core/package/scenario_package.h"
+#include "core/package/zip_archive.h"
 #include "exporters/scenario_exporter.h"
 #include "studio/document/model_objects.h"
+#include "studio/document/view_state.h"
 
 namespace viscera::studio {
 
@@ -12,6 +17,22 @@ DocumentContent read_document_content(const std::filesystem::path& path, core::P
   content.scenario = core::read_package(path, progress);
   content.files = exporters::read_package_textures(path, content.scenario);
   content.files.merge(read_package_models(path, content.scenario));
+  // The studio's view state (visibility, opacity), when the package has one.
+  if (std::filesystem::is_directory(path)) {
+    std::ifstream in(path / kViewStateFile, std::ios::binary);
+    if (in) content.files[kViewStateFile].assign(std::istreambuf_iterator<char>(in), {});
+  } else {
+    const core::ZipLimits limits{core::kMaxZipEntryBytes, core::kMaxPackageBytes};
+    const std::vector<std::string> entries = core::checked_zip_entries(path, limits);
+    if (std::find(entries.begin(), entries.end(), kViewStateFile) != entries.end())
+      content.files[kViewStateFile] = core::read_zip_entry(path, kViewStateFile, limits);
+  }
+  try {
+    view_state_of(content.files);
+  } catch (const core::InputError& e) {
+    throw core::InputError(e.reason(),
+                           {(path / kViewStateFile).string(), e.location().json_pointer, ""});
+  }
   return content;
 }
 

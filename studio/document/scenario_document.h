@@ -38,7 +38,8 @@ void write_document_content(const DocumentContent& content, const std::filesyste
                             core::Progress& progress = core::Progress::none());
 
 /// What a change touched, so views can refresh only what they show.
-enum class ChangeKind { Everything, Objects, Materials };
+/// View: only the view state (view_state.h) changed — visibility and opacity.
+enum class ChangeKind { Everything, Objects, Materials, View };
 
 class ScenarioDocument : public QObject {
   Q_OBJECT

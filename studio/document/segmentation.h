@@ -13,6 +13,7 @@
 #include "core/progress.h"
 #include "core/scenario/material.h"
 #include "core/scenario/scene_object.h"
+#include "importers/meshing/label_tet_mesher.h"
 
 namespace viscera::studio {
 
@@ -68,11 +69,31 @@ struct OrganMeshRequest {
   std::string material = "liver";  ///< shipped material id when the scenario has none of that id
 };
 
+/// Passes of Mesh_3 organ_tet_criteria runs at most, and the relative tet-count error it stops at.
+inline constexpr int kOrganMeshPasses = 5;
+inline constexpr double kOrganMeshTolerance = 0.1;
+
+/// The Mesh_3 criteria that give about `request.target_tets` tets for the label (issue 23 §5:
+/// the count within ±20 %) when `request.cell_size` is 0: the cell size from the labelled
+/// volume (importers::resolve_tet_criteria), then up to kOrganMeshPasses runs of
+/// importers::mesh_label_map, each rescaling the cell size by the cube root of the count's
+/// ratio to the target, until it is within kOrganMeshTolerance; the closest run's criteria are
+/// returned and its count stored in `tets_found`. Facet size follows the cell size, facet
+/// distance a tenth of it (at least half a voxel), so the boundary does not set the count. With a
+/// cell size given, the request's criteria as they are. Throws as mesh_label_map.
+importers::LabelTetMeshingOptions organ_tet_criteria(const core::LabelMap& labels,
+                                                     const OrganMeshRequest& request,
+                                                     const std::string& what,
+                                                     core::Progress& progress,
+                                                     std::size_t* tets_found = nullptr);
+
 /// The organ object `id` meshed from `request.label` of `labels`: the closed visual surface
 /// (importers::label_surface), the tets filling the label (CGAL Mesh_3) with lumped masses from
 /// `material.density`, nothing fixed, and the surface embedded in the tets — ready for the
-/// simulator. Throws core::InputError for a label without voxels, core::ValidationError when
-/// meshing fails, core::CancelledError through `progress`. Runs on any thread.
+/// simulator. The tets follow organ_tet_criteria; `progress` gets one stage whose bar moves
+/// through every Mesh_3 pass and the body. Throws core::InputError for a label without voxels,
+/// core::ValidationError when meshing fails, core::CancelledError through `progress`. Runs on any
+/// thread.
 core::SceneObject build_organ_object(const core::LabelMap& labels, const OrganMeshRequest& request,
                                      const std::string& id, const core::Material& material,
                                      core::Progress& progress = core::Progress::none());

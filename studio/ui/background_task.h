@@ -14,7 +14,8 @@ class QWidget;
 namespace viscera::studio {
 
 /// Runs `work` on a worker thread and returns once it ended, processing events meanwhile (the
-/// dialog appears after `show_after_ms`). Returns the exception the work threw, or nullptr.
+/// dialog appears after `show_after_ms`; the user's input to anything but the dialog is dropped
+/// from the start, InputBlocker). Returns the exception the work threw, or nullptr.
 std::exception_ptr run_in_background(QWidget* parent, const QString& title,
                                      const std::function<void(core::Progress&)>& work,
                                      int show_after_ms = 400);

@@ -1,5 +1,7 @@
 #include "studio/ui/main_window.h"
 
+#include <QAction>
+#include <QActionGroup>
 #include <QCloseEvent>
 #include <QDockWidget>
 #include <QMessageBox>
@@ -13,7 +15,9 @@
 #include "core/materials/shipped_materials.h"
 #include "importers/volume/volume_reader.h"
 #include "studio/document/document_commands.h"
+#include "studio/document/view_state.h"
 #include "studio/ui/background_task.h"
+#include "studio/ui/display_panel.h"
 #include "studio/ui/material_panel.h"
 #include "studio/ui/organ_panels.h"
 #include "studio/ui/scene_tree.h"
@@ -44,11 +48,12 @@ MainWindow::MainWindow(MainWindowOptions options, QWidget* parent)
   connect(&document_, &ScenarioDocument::status_changed, this, &MainWindow::update_title);
   connect(view_, &SceneView::object_picked, this, &MainWindow::select_object);
   connect(tree_, &SceneTree::object_selected, this, &MainWindow::select_object);
-  connect(tree_, &SceneTree::visibility_changed, view_, &SceneView::set_object_visible);
+  connect(tree_, &SceneTree::visibility_changed, this,
+          [this](const QStringList& keys, bool visible) { set_visible(keys, visible); });
   connect(materials_, &MaterialPanel::edit_failed, this, &MainWindow::show_error);
   connect(&launcher_, &TrainingLauncher::finished, this, &MainWindow::show_training_result);
 
-  resize(1280, 800);
+  restore_layout();
   on_document_changed(ChangeKind::Everything, {});
   update_title();
 }
@@ -105,8 +110,8 @@ void MainWindow::build_docks() {
   connect(organ_panels_, &OrganPanels::failed, this, &MainWindow::show_error);
   connect(organ_panels_, &OrganPanels::select_requested, this, &MainWindow::select_object);
 
+  build_view_docks();
   build_asset_docks();
-  resizeDocks({tree_dock, material_dock}, {240, 320}, Qt::Horizontal);
 }
 
 void MainWindow::update_title() {
@@ -116,8 +121,21 @@ void MainWindow::update_title() {
 
 void MainWindow::on_document_changed(ChangeKind kind, const QString& /*id*/) {
   if (kind == ChangeKind::Materials) return;  // the panel follows by itself
+  // One view state for the tree, the 3D view and the package (issue 23 §4).
+  ViewState state;
+  try {
+    state = view_state_of(document_.files());
+  } catch (const std::exception& e) {
+    show_error(QString::fromUtf8(e.what()));
+  }
+  if (kind == ChangeKind::View) {
+    view_->apply_view_state(state);
+    tree_->apply_view_state(state);
+    display_->refresh();
+    return;
+  }
   view_->show_scenario(document_.scenario(), document_.files(), kind == ChangeKind::Everything);
-  tree_->show_scenario(document_.scenario());
+  tree_->show_scenario(document_.scenario(), state);
   select_object(view_->selected_object());
 }
 
@@ -126,6 +144,7 @@ void MainWindow::select_object(const QString& id) {
   tree_->select_object(view_->selected_object());
   materials_->show_object(view_->selected_object());
   organ_panels_->show_object(view_->selected_object());
+  display_->show_object(view_->selected_object());
 }
 
 void MainWindow::show_error(const QString& message) {
@@ -223,9 +242,15 @@ void MainWindow::show_image_volume(const core::ImageVolume& volume) {
   slices_->set_volume(volume);
   segmentation_->set_volume(volume);
   volume_rendering_->set_volume(volume);
+  // The transfer function the data asks for (a label image coloured by label, not as CT).
+  const QString preset = QString::fromStdString(volume_rendering_->preset_for_data());
+  volume_rendering_->apply_preset(preset.toStdString());
+  for (QAction* action : preset_actions_->actions())
+    action->setChecked(action->text() == preset);
   slice_dock_->show();
   view_->set_image_planes(
       {slices_->plane_in_3d(0), slices_->plane_in_3d(1), slices_->plane_in_3d(2)});
+  set_slice_planes_shown(true);
   view_->reset_camera();
   view_->render();
 }
@@ -353,6 +378,7 @@ void MainWindow::closeEvent(QCloseEvent* event) {
   launcher_.stop();
   autosave_->wait();
   autosave_->discard();
+  save_layout();
   event->accept();
 }
 

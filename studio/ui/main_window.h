@@ -6,6 +6,7 @@
 /// a one-line message and leave the document as it was. Long work runs off the UI thread.
 
 #include <QMainWindow>
+#include <QStringList>
 #include <array>
 #include <filesystem>
 #include <functional>
@@ -20,6 +21,9 @@
 #include "studio/document/variant_batch.h"
 #include "studio/ui/training_launcher.h"
 
+class QAction;
+class QActionGroup;
+class QDockWidget;
 class QMenu;
 class QPlainTextEdit;
 
@@ -35,6 +39,7 @@ class SliceViews;
 class SceneView;
 class VariantsGallery;
 class LibraryBrowser;
+class DisplayPanel;
 
 /// Where the window keeps its recovery copy and how often it writes it.
 struct MainWindowOptions {
@@ -92,6 +97,24 @@ class MainWindow : public QMainWindow {
   bool create_primitive(const PrimitiveRequest& request);
   /// Selects an object in the tree, the 3D view and the material panel.
   void select_object(const QString& id);
+
+  // Seeing inside and one visibility model (issue 23 §2, §4; main_window_view.cpp).
+  DisplayPanel* display_panel() const { return display_; }
+  /// Shows or hides objects and vessel trees (visibility keys, view_state.h) as one undoable
+  /// view-state command; SceneTree::kImageVolumeKey shows or hides the image volume's slice
+  /// planes (not part of the document). False after an error.
+  bool set_visible(const QStringList& keys, bool visible);
+  /// Object `id`'s opacity in [0.05, 1], undoable (a slider drag is one step).
+  bool set_object_opacity(const QString& id, double opacity);
+  /// File ▸ Close: after offering to save, an empty untitled document and no image volume.
+  /// False when the user cancels.
+  bool close_document();
+  /// Removes the image volume: slice views, planes, volume rendering and segmentation.
+  void close_image_volume();
+  bool has_image_volume() const;
+  /// Shows or hides the image volume's three slice planes in the 3D view.
+  void set_slice_planes_shown(bool shown);
+  bool slice_planes_shown() const;
   /// Exports to a temporary package and starts the headless simulator, its instrument driven by
   /// `script` (empty: none); its report appears in the report dock when it ends
   /// (training_finished()).
@@ -133,6 +156,7 @@ class MainWindow : public QMainWindow {
 
  protected:
   void closeEvent(QCloseEvent* event) override;
+  void showEvent(QShowEvent* event) override;
 
  private:
   void build_menus();
@@ -149,6 +173,12 @@ class MainWindow : public QMainWindow {
   void show_image_volume(const core::ImageVolume& volume);
   void build_volume_views();
   void build_volume_menu(QMenu* view);
+  void build_view_docks();  // main_window_view.cpp: the display dock
+  void build_view_menu_items(QMenu* file, QMenu* view);
+  /// Restores the window geometry and dock layout of the last session (QSettings), else sizes
+  /// the window to most of the screen with the 3D view the largest pane.
+  void restore_layout();
+  void save_layout() const;
   bool ask_save_as();
   /// Exports the document for the next training session; false after showing the error.
   bool export_session_package();
@@ -175,6 +205,10 @@ class MainWindow : public QMainWindow {
   VariantsGallery* variants_ = nullptr;
   class QDockWidget* variants_dock_ = nullptr;
   LibraryBrowser* library_ = nullptr;
+  DisplayPanel* display_ = nullptr;
+  std::array<QDockWidget*, 2> first_layout_docks_{nullptr,
+                                                  nullptr};  ///< left, right: sized on show
+  class QAction* slice_planes_action_ = nullptr;
   std::function<void(const QString&)> error_handler_;
 };
 

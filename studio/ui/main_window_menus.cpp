@@ -60,6 +60,9 @@ void MainWindow::build_menus() {
   file->addAction(tr("Save &as…"), this, [this] { ask_save_as(); })
       ->setShortcut(QKeySequence::SaveAs);
   file->addSeparator();
+  QMenu* view = menuBar()->addMenu(tr("&View"));  // filled below, after Training
+  build_view_menu_items(file, view);
+  file->addSeparator();
   file->addAction(tr("&Quit"), this, &QWidget::close)->setShortcut(QKeySequence::Quit);
 
   QMenu* edit = menuBar()->addMenu(tr("&Edit"));
@@ -104,6 +107,13 @@ void MainWindow::build_menus() {
         tr("Label maps (*.vti *.nii *.nii.gz *.mha *.mhd *.nrrd);;All files (*)"));
     if (!path.isEmpty()) segmentation_->load_label_map(path.toStdString());
   });
+  QAction* undo_step =
+      segmentation_->history()->createUndoAction(this, tr("&Undo segmentation step"));
+  undo_step->setShortcut(QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_Z));
+  segment->addAction(undo_step);
+  segment->addAction(
+      segmentation_->history()->createRedoAction(this, tr("&Redo segmentation step")));
+  segment->addSeparator();
   segment->addAction(tr("&Mesh organ"), this,
                      [this] { segmentation_->mesh_segmentation(segmentation_->mesh_request()); });
 
@@ -125,7 +135,8 @@ void MainWindow::build_menus() {
   });
   training->addAction(tr("&Stop session"), this, [this] { launcher_.stop(); });
 
-  QMenu* view = menuBar()->addMenu(tr("&View"));
+  menuBar()->removeAction(view->menuAction());
+  menuBar()->addMenu(view);
   view->addAction(tr("&Reset camera"), this,
                   [this] { view_->show_scenario(document_.scenario(), document_.files(), true); });
   build_volume_menu(view);

@@ -28,8 +28,13 @@ MaterialPanel::MaterialPanel(ScenarioDocument& document, QWidget* parent)
     : QWidget(parent), document_(document) {
   auto* layout = new QVBoxLayout(this);
   object_label_ = new QLabel(this);
+  object_label_->setWordWrap(true);
   layout->addWidget(object_label_);
-  auto* form = new QFormLayout;
+  // Hidden with nothing selected: a material that belongs to nothing, with zeros that look like
+  // data, would mislead (issue 23 §6).
+  editors_box_ = new QWidget(this);
+  auto* form = new QFormLayout(editors_box_);
+  form->setContentsMargins(0, 0, 0, 0);
   picker_ = new QComboBox(this);
   form->addRow(tr("Material"), picker_);
   for (const MaterialField field : kFields) {
@@ -47,7 +52,7 @@ MaterialPanel::MaterialPanel(ScenarioDocument& document, QWidget* parent)
               if (!updating_) edit_field(field, value);
             });
   }
-  layout->addLayout(form);
+  layout->addWidget(editors_box_);
   source_label_ = new QLabel(this);
   source_label_->setWordWrap(true);
   layout->addWidget(source_label_);
@@ -70,7 +75,8 @@ void MaterialPanel::refresh() {
       object_id_.isEmpty() ? nullptr : document_.scenario().find_object(object_id_.toStdString());
   if (object == nullptr) object_id_.clear();
   setEnabled(object != nullptr);
-  object_label_->setText(object == nullptr ? tr("Select an object to edit its material.")
+  editors_box_->setVisible(object != nullptr);
+  object_label_->setText(object == nullptr ? tr("Select an object to see and edit its material.")
                                            : tr("<b>%1</b>").arg(q(object->name)));
   picker_->clear();
   const auto& materials = document_.scenario().materials;

@@ -22,7 +22,8 @@ class MaterialPanel : public QWidget {
  public:
   MaterialPanel(ScenarioDocument& document, QWidget* parent = nullptr);
 
-  /// Shows the material of object `id` (empty: nothing selected, the panel is disabled).
+  /// Shows the material of object `id` (empty: nothing selected; the panel then says "Select an
+  /// object" and shows no material and no numbers).
   void show_object(const QString& id);
   /// Picks entry `material_id` (scenario material or shipped tissue) as if the user chose it.
   /// Returns false when no object is shown or the id is unknown.
@@ -31,6 +32,8 @@ class MaterialPanel : public QWidget {
   bool edit_field(MaterialField field, double value);
 
   QComboBox* picker() const { return picker_; }
+  /// The picker and the parameter editors (hidden with nothing selected).
+  QWidget* editors_box() const { return editors_box_; }
   QDoubleSpinBox* field_editor(MaterialField field) const { return editors_.at(field); }
 
  signals:
@@ -45,6 +48,7 @@ class MaterialPanel : public QWidget {
   QString object_id_;
   bool updating_ = false;
   QLabel* object_label_ = nullptr;
+  QWidget* editors_box_ = nullptr;
   QComboBox* picker_ = nullptr;
   QLabel* source_label_ = nullptr;
   std::map<MaterialField, QDoubleSpinBox*> editors_;

@@ -23,6 +23,10 @@ PathologyPanel::PathologyPanel(ScenarioDocument& document, QWidget* parent)
   kind_->addItem(tr("Polyp"), QStringLiteral("polyp"));
   kind_->addItem(tr("Submucosal myoma"), QStringLiteral("myoma-submucosal"));
   kind_->addItem(tr("Pedunculated myoma"), QStringLiteral("myoma-pedunculated"));
+  kind_->addItem(tr("Subserosal myoma"), QStringLiteral("myoma-subserosal"));
+  kind_->setToolTip(
+      tr("Polyps and submucosal or pedunculated myomas are seated on the cavity "
+         "wall nearest to the click; subserosal myomas on the outer wall"));
   form->addRow(tr("Kind"), kind_);
   size_mm_ = new QDoubleSpinBox(this);
   size_mm_->setRange(2.0, 60.0);

@@ -7,6 +7,7 @@
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkImageData.h>
 #include <vtkPNGReader.h>
+#include <vtkPlaneCollection.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -17,6 +18,7 @@
 #include <vtkTexture.h>
 
 #include <QMouseEvent>
+#include <algorithm>
 #include <cmath>
 
 #include "core/package/vtk_mesh_io.h"
@@ -93,6 +95,11 @@ SceneView::SceneView(QWidget* parent) : QVTKOpenGLNativeWidget(parent) {
   renderer_->SetBackground2(0.42, 0.46, 0.54);
   renderer_->GradientBackgroundOn();
   window->AddRenderer(renderer_);
+  // Translucent organs over opaque pathologies need ordered blending.
+  window->SetAlphaBitPlanes(1);
+  renderer_->SetUseDepthPeeling(1);
+  renderer_->SetMaximumNumberOfPeels(8);
+  clip_plane_ = vtkSmartPointer<vtkPlane>::New();
 }
 
 void SceneView::show_scenario(const core::Scenario& scenario, const PackageFiles& files,
@@ -100,6 +107,7 @@ void SceneView::show_scenario(const core::Scenario& scenario, const PackageFiles
   for (const auto& [id, actor] : actors_)
     renderer_->RemoveActor(actor);
   actors_.clear();
+  clipped_.clear();
   for (const auto& object : scenario.objects) {
     if (object.surface.triangles.empty()) continue;
     auto polydata = vtkSmartPointer<vtkPolyData>::New();
@@ -118,24 +126,152 @@ void SceneView::show_scenario(const core::Scenario& scenario, const PackageFiles
     }
     actor->GetProperty()->SetSpecular(0.25);
     actor->GetProperty()->SetSpecularPower(20.0);
+    // The inside of a wall cut open by the clipping plane: the tissue colour, darker.
+    auto inside = vtkSmartPointer<vtkProperty>::New();
+    inside->SetColor(0.55 * colour[0], 0.55 * colour[1], 0.55 * colour[2]);
+    inside->SetSpecular(0.0);
+    actor->SetBackfaceProperty(inside);
     const QString id = QString::fromStdString(object.id);
-    actor->SetVisibility(!hidden_[id]);
     renderer_->AddActor(actor);
     actors_[id] = actor;
+    if (object.role == core::ObjectRole::Organ || object.role == core::ObjectRole::Vessel)
+      clipped_.insert(id);
   }
-  for (const auto& actor : vessel_actors_)
+  for (const auto& [id, actor] : vessel_actors_)
     renderer_->RemoveActor(actor);
   vessel_actors_.clear();
   for (const auto& tree : scenario.vessel_trees) {
     if (auto actor = vessel_tree_actor(tree)) {
       renderer_->AddActor(actor);
-      vessel_actors_.push_back(actor);
+      vessel_actors_[QString::fromStdString(tree.id)] = actor;
     }
   }
+  ViewState state;
+  try {
+    state = view_state_of(files);
+  } catch (const std::exception&) {
+    // Checked when the package was opened; a document never holds a bad one.
+  }
   if (!actors_.contains(selected_)) selected_.clear();
-  update_outline();
+  update_clipping();
   if (frame) reset_camera();
+  apply_view_state(state);
+}
+
+void SceneView::apply_view_state(const ViewState& state) {
+  for (const auto& [id, actor] : actors_) {
+    actor->SetVisibility(state.visible(id.toStdString()));
+    actor->GetProperty()->SetOpacity(state.opacity_of(id.toStdString()));
+  }
+  for (const auto& [id, actor] : vessel_actors_)
+    actor->SetVisibility(state.visible(vessel_tree_key(id.toStdString())));
+  update_outline();
   render();
+}
+
+double SceneView::object_opacity(const QString& id) const {
+  const auto actor = actors_.find(id);
+  return actor == actors_.end() ? 0.0 : actor->second->GetProperty()->GetOpacity();
+}
+
+bool SceneView::vessel_tree_visible(const QString& tree_id) const {
+  const auto actor = vessel_actors_.find(tree_id);
+  return actor != vessel_actors_.end() && actor->second->GetVisibility() != 0;
+}
+
+void SceneView::set_clip_plane(const core::Vec3& origin, const core::Vec3& normal) {
+  const core::Vec3 n = normal.normalized();
+  clip_plane_->SetOrigin(origin.x(), origin.y(), origin.z());
+  clip_plane_->SetNormal(n.x(), n.y(), n.z());
+  update_clipping();
+  render();
+}
+
+void SceneView::set_clip_across(int axis, double fraction, bool keep_low) {
+  double box[6] = {1, -1, 1, -1, 1, -1};
+  bool any = false;
+  for (const auto& [id, actor] : actors_) {
+    const double* b = actor->GetMapper()->GetBounds();
+    for (int k = 0; k < 3; ++k) {
+      box[2 * k] = any ? std::min(box[2 * k], b[2 * k]) : b[2 * k];
+      box[2 * k + 1] = any ? std::max(box[2 * k + 1], b[2 * k + 1]) : b[2 * k + 1];
+    }
+    any = true;
+  }
+  if (!any) return;
+  const int a = std::clamp(axis, 0, 2);
+  core::Vec3 origin(0.5 * (box[0] + box[1]), 0.5 * (box[2] + box[3]), 0.5 * (box[4] + box[5]));
+  origin[a] = box[2 * a] + std::clamp(fraction, 0.0, 1.0) * (box[2 * a + 1] - box[2 * a]);
+  core::Vec3 normal = core::Vec3::Zero();
+  normal[a] = keep_low ? -1.0 : 1.0;
+  set_clip_plane(origin, normal);
+}
+
+void SceneView::set_clipping(bool on) {
+  clipping_ = on;
+  update_clipping();
+  render();
+}
+
+void SceneView::update_clipping() {
+  const auto clip = [this](vtkActor* actor) {
+    vtkMapper* mapper = actor->GetMapper();
+    mapper->RemoveAllClippingPlanes();
+    if (clipping_) mapper->AddClippingPlane(clip_plane_);
+  };
+  for (const auto& [id, actor] : actors_) {
+    if (clipped_.contains(id)) {
+      clip(actor);
+    } else {
+      actor->GetMapper()->RemoveAllClippingPlanes();
+    }
+  }
+  for (const auto& [id, actor] : vessel_actors_)
+    clip(actor);
+}
+
+bool SceneView::view_from_cervix(const core::Scenario& scenario) {
+  const core::Landmark* internal = nullptr;
+  const core::Landmark* fundus = nullptr;
+  for (const auto& mark : scenario.landmarks) {
+    if (mark.id == "cervix-internal-os") internal = &mark;
+    if (mark.id == "fundus") fundus = &mark;
+  }
+  if (internal == nullptr) return false;
+  // The cavity's centre: the mean of the host surface's vertices marked as cavity wall.
+  core::Vec3 target = core::Vec3::Zero();
+  int count = 0;
+  if (const core::SceneObject* host = scenario.find_object(internal->object)) {
+    const auto cavity = host->surface.vertex_attributes.find("cavity");
+    if (cavity != host->surface.vertex_attributes.end()) {
+      for (std::size_t v = 0; v < cavity->second.size(); ++v) {
+        if (cavity->second[v] == 1.0) {
+          target += host->surface.vertices[v];
+          ++count;
+        }
+      }
+    }
+  }
+  if (count > 0) {
+    target /= count;
+  } else if (fundus != nullptr) {
+    target = fundus->position;
+  } else {
+    return false;
+  }
+  const core::Vec3 eye = internal->position;
+  const core::Vec3 axis = (target - eye).normalized();
+  core::Vec3 up = core::Vec3::UnitY() - core::Vec3::UnitY().dot(axis) * axis;
+  if (up.norm() < 1e-6) up = axis.unitOrthogonal();
+  vtkCamera* camera = renderer_->GetActiveCamera();
+  camera->SetPosition(eye.x(), eye.y(), eye.z());
+  camera->SetFocalPoint(target.x(), target.y(), target.z());
+  camera->SetViewUp(up.x(), up.y(), up.z());
+  camera->SetViewAngle(70.0);
+  renderer_->ResetCameraClippingRange();
+  camera->SetClippingRange(1e-4, 0.5);
+  render();
+  return true;
 }
 
 void SceneView::set_image_planes(const std::vector<vtkProp3D*>& planes) {
@@ -155,6 +291,7 @@ void SceneView::reset_camera() {
   vtkCamera* camera = renderer_->GetActiveCamera();
   const double* focal = camera->GetFocalPoint();
   const double distance = camera->GetDistance();
+  camera->SetViewAngle(30.0);
   const double direction[3] = {0.45, -0.8, 0.4};
   const double length = std::sqrt(0.45 * 0.45 + 0.8 * 0.8 + 0.4 * 0.4);
   camera->SetPosition(focal[0] + distance * direction[0] / length,
@@ -165,15 +302,6 @@ void SceneView::reset_camera() {
 }
 
 void SceneView::render() {
-  renderWindow()->Render();
-  update();
-}
-
-void SceneView::set_object_visible(const QString& id, bool visible) {
-  hidden_[id] = !visible;
-  const auto actor = actors_.find(id);
-  if (actor != actors_.end()) actor->second->SetVisibility(visible);
-  update_outline();
   renderWindow()->Render();
   update();
 }

@@ -1,13 +1,16 @@
 #include "studio/ui/segmentation_panel.h"
 
+#include <QAction>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QGridLayout>
 #include <QGroupBox>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSpinBox>
+#include <QToolButton>
 #include <QVBoxLayout>
 #include <cctype>
 #include <cmath>
@@ -71,6 +74,30 @@ core::LabelMap labels_from_volume(const core::ImageVolume& volume, const std::st
   return labels;
 }
 
+/// One segmentation step (threshold, growing, opening, …): the label maps before and after.
+/// The first redo is the step the panel already made.
+class LabelStepCommand : public QUndoCommand {
+ public:
+  LabelStepCommand(std::function<void(const core::LabelMap&)> apply, core::LabelMap before,
+                   core::LabelMap after, const QString& text)
+      : apply_(std::move(apply)), before_(std::move(before)), after_(std::move(after)) {
+    setText(text);
+  }
+  void redo() override {
+    if (first_) {
+      first_ = false;
+      return;
+    }
+    apply_(after_);
+  }
+  void undo() override { apply_(before_); }
+
+ private:
+  std::function<void(const core::LabelMap&)> apply_;
+  core::LabelMap before_, after_;
+  bool first_ = true;
+};
+
 }  // namespace
 
 SegmentationPanel::SegmentationPanel(ScenarioDocument& document, QWidget* parent)
@@ -79,6 +106,17 @@ SegmentationPanel::SegmentationPanel(ScenarioDocument& document, QWidget* parent
   status_ = new QLabel(this);
   status_->setWordWrap(true);
   layout->addWidget(status_);
+  auto* steps = new QHBoxLayout;
+  QAction* undo = history_.createUndoAction(this, tr("Undo step"));
+  QAction* redo = history_.createRedoAction(this, tr("Redo step"));
+  for (QAction* action : {undo, redo}) {
+    auto* button = new QToolButton(this);
+    button->setDefaultAction(action);
+    button->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    steps->addWidget(button);
+  }
+  steps->addStretch(1);
+  layout->addLayout(steps);
 
   auto* threshold = new QGroupBox(tr("Threshold"), this);
   auto* threshold_form = new QFormLayout(threshold);
@@ -129,10 +167,14 @@ SegmentationPanel::SegmentationPanel(ScenarioDocument& document, QWidget* parent
   auto* mesh = new QGroupBox(tr("Mesh organ"), this);
   auto* mesh_form = new QFormLayout(mesh);
   mesh_label_ = count_box(mesh, 1, 65535, 1);
+  mesh_label_->setToolTip(tr("Follows the label last thresholded or grown"));
   cell_size_mm_ = number_box(mesh, 0.0, 500.0, 0.0, 1);
   cell_size_mm_->setSpecialValueText(tr("from the tet count"));
   cell_size_mm_->setSuffix(tr(" mm"));
   target_tets_ = count_box(mesh, 100, 5'000'000, 5000);
+  target_tets_->setToolTip(
+      tr("Tetrahedra wanted; the cell size is searched until the count is "
+         "within 10 %% (a few Mesh_3 passes)"));
   triangles_ = count_box(mesh, 100, 5'000'000, 4000);
   name_ = new QLineEdit(mesh);
   name_->setPlaceholderText(tr("Organ"));
@@ -152,6 +194,7 @@ SegmentationPanel::SegmentationPanel(ScenarioDocument& document, QWidget* parent
 
 void SegmentationPanel::set_volume(const core::ImageVolume& volume) {
   segmentation_.set_volume(volume);
+  history_.clear();
   seed_.reset();
   seed_label_->setText(tr("Click a slice view to place the seed"));
   update_status();
@@ -178,15 +221,40 @@ bool SegmentationPanel::run(const QString& title,
 bool SegmentationPanel::edit(const QString& title, const std::function<void()>& change) {
   // Every Segmentation edit computes its result before it changes the labels, so a failed one
   // leaves them as they were; the modal progress dialog keeps the user out meanwhile.
+  core::LabelMap before = segmentation_.labels();
   if (!run(title, [&](core::Progress&) { change(); })) return false;
+  if (!(segmentation_.labels() == before)) {
+    history_.push(new LabelStepCommand(
+        [this](const core::LabelMap& labels) {
+          segmentation_.set_labels(labels, "the segmentation history");
+          update_status();
+          emit labels_changed();
+        },
+        std::move(before), segmentation_.labels(), title));
+  }
   update_status();
   emit labels_changed();
   return true;
 }
 
+bool SegmentationPanel::undo_step() {
+  if (!history_.canUndo()) return false;
+  history_.undo();
+  return true;
+}
+
+bool SegmentationPanel::redo_step() {
+  if (!history_.canRedo()) return false;
+  history_.redo();
+  return true;
+}
+
 bool SegmentationPanel::segment_threshold(double lower, double upper, int label) {
-  return edit(tr("Thresholding"),
-              [&] { segmentation_.threshold(lower, upper, static_cast<std::uint16_t>(label)); });
+  if (!edit(tr("Thresholding"),
+            [&] { segmentation_.threshold(lower, upper, static_cast<std::uint16_t>(label)); }))
+    return false;
+  mesh_label_->setValue(label);  // Mesh organ meshes the label just made
+  return true;
 }
 
 void SegmentationPanel::set_seed(const core::Vec3& point) {
@@ -199,8 +267,11 @@ void SegmentationPanel::set_seed(const core::Vec3& point) {
 }
 
 bool SegmentationPanel::grow_region_at(const core::Vec3& point, double tolerance, int label) {
-  return edit(tr("Growing a region"),
-              [&] { segmentation_.grow_at(point, tolerance, static_cast<std::uint16_t>(label)); });
+  if (!edit(tr("Growing a region"),
+            [&] { segmentation_.grow_at(point, tolerance, static_cast<std::uint16_t>(label)); }))
+    return false;
+  mesh_label_->setValue(label);  // Mesh organ meshes the label just grown
+  return true;
 }
 
 bool SegmentationPanel::grow_from_seed() {

@@ -7,6 +7,7 @@
 /// one undoable command. Every button is also a public function; each returns false after
 /// reporting its error, leaving labels and document as they were.
 
+#include <QUndoStack>
 #include <QWidget>
 #include <functional>
 #include <optional>
@@ -55,8 +56,15 @@ class SegmentationPanel : public QWidget {
   /// Meshes `request.label` into a new organ object off the UI thread and adds it to the
   /// document (one undo step); returns its id, or an empty string after an error or Cancel.
   QString mesh_segmentation(const OrganMeshRequest& request);
-  /// The request from the panel's fields.
+  /// The request from the panel's fields. Its label is the one last thresholded or grown
+  /// (the user may change it).
   OrganMeshRequest mesh_request() const;
+
+  /// The segmentation steps (issue 23 §5): each successful edit of the labels is one step;
+  /// undo restores the label map before it byte for byte. Cleared with a new volume.
+  QUndoStack* history() { return &history_; }
+  bool undo_step();
+  bool redo_step();
 
  signals:
   /// The label map changed (overlays redraw).
@@ -73,6 +81,7 @@ class SegmentationPanel : public QWidget {
 
   ScenarioDocument& document_;
   Segmentation segmentation_;
+  QUndoStack history_;
   std::optional<core::Vec3> seed_;
   std::function<void(const QString&)> error_handler_;
   QLabel* status_ = nullptr;

@@ -6,6 +6,10 @@
 #include <vtkSmartVolumeMapper.h>
 #include <vtkVolumeProperty.h>
 
+#include <algorithm>
+#include <cmath>
+#include <set>
+
 #include "core/image/image_volume_io.h"
 
 namespace viscera::studio {
@@ -33,6 +37,7 @@ const std::vector<VolumePreset>& volume_presets() {
        true,
        {{0.0, 0.0, 0.0, 0.0}, {0.3, 0.55, 0.4, 0.3}, {0.7, 0.9, 0.75, 0.6}, {1.0, 1.0, 0.85, 0.7}},
        {{0.0, 0.0}, {0.1, 0.0}, {0.5, 0.3}, {1.0, 0.8}}},
+      {"Labels", false, {}, {}},
   };
   return presets;
 }
@@ -51,6 +56,65 @@ VolumeRendering::VolumeRendering() {
   apply(volume_presets().front());
 }
 
+namespace {
+
+/// Label colours: warm first, then well separated hues.
+constexpr std::array<std::array<double, 3>, 8> kLabelPalette = {{{0.92, 0.30, 0.25},
+                                                                 {0.35, 0.75, 0.35},
+                                                                 {0.30, 0.50, 0.95},
+                                                                 {0.95, 0.80, 0.30},
+                                                                 {0.75, 0.40, 0.85},
+                                                                 {0.30, 0.80, 0.80},
+                                                                 {0.95, 0.55, 0.20},
+                                                                 {0.60, 0.60, 0.60}}};
+
+}  // namespace
+
+std::string VolumeRendering::preset_for_data() const {
+  if (image_ == nullptr) return "CT soft tissue";
+  if (whole_numbers_ && !distinct_.empty() && distinct_.size() <= 64 && distinct_.front() >= 0.0)
+    return "Labels";
+  if (range_[0] < -200.0) return "CT soft tissue";
+  return "MR default";
+}
+
+void VolumeRendering::apply_labels() {
+  preset_ = "Labels";
+  auto colour = vtkSmartPointer<vtkColorTransferFunction>::New();
+  auto opacity = vtkSmartPointer<vtkPiecewiseFunction>::New();
+  colour->AddRGBPoint(0.0, 0.0, 0.0, 0.0);
+  opacity->AddPoint(0.0, 0.0);
+  std::size_t index = 0;
+  const bool labels = whole_numbers_ && distinct_.size() <= 64;
+  for (const double value : distinct_) {
+    if (value == 0.0 || !labels) continue;
+    const auto& c = kLabelPalette[index++ % kLabelPalette.size()];
+    // A plateau of one colour and opacity around each label value.
+    colour->AddRGBPoint(value - 0.49, c[0], c[1], c[2]);
+    colour->AddRGBPoint(value + 0.49, c[0], c[1], c[2]);
+    opacity->AddPoint(value - 0.5, 0.0);
+    opacity->AddPoint(value - 0.49, 0.5);
+    opacity->AddPoint(value + 0.49, 0.5);
+    opacity->AddPoint(value + 0.5, 0.0);
+  }
+  if (index == 0) {  // not a label image: a warm ramp over the range
+    colour->AddRGBPoint(range_[1], kLabelPalette[0][0], kLabelPalette[0][1], kLabelPalette[0][2]);
+    opacity->AddPoint(range_[0] + 0.1 * (range_[1] - range_[0]), 0.0);
+    opacity->AddPoint(range_[1], 0.6);
+  }
+  volume_->GetProperty()->SetColor(colour);
+  volume_->GetProperty()->SetScalarOpacity(opacity);
+  volume_->GetProperty()->SetInterpolationTypeToNearest();
+  double spacing = 0.001;
+  if (image_ != nullptr) spacing = image_->GetSpacing()[0];
+  volume_->GetProperty()->SetScalarOpacityUnitDistance(spacing);
+}
+
+void VolumeRendering::clear() {
+  image_ = nullptr;
+  volume_->SetVisibility(false);
+}
+
 void VolumeRendering::set_volume(const core::ImageVolume& volume) {
   // As in the slice views: the image keeps index geometry, origin and direction go into the
   // prop's user matrix.
@@ -60,6 +124,13 @@ void VolumeRendering::set_volume(const core::ImageVolume& volume) {
   image_ = vtkSmartPointer<vtkImageData>::New();
   core::volume_to_image_data(local, *image_);
   image_->GetScalarRange(range_.data());
+  // Whole-number voxels and their distinct values (a label image has a few).
+  whole_numbers_ = volume.scalar_type != core::ScalarType::Float32 &&
+                   volume.scalar_type != core::ScalarType::Float64;
+  std::set<double> values;
+  for (std::size_t v = 0; v < volume.voxel_count() && whole_numbers_ && values.size() <= 256; ++v)
+    values.insert(volume.value(v));
+  distinct_.assign(values.begin(), values.end());
   auto matrix = vtkSmartPointer<vtkMatrix4x4>::New();
   for (int r = 0; r < 3; ++r) {
     for (int c = 0; c < 3; ++c)
@@ -83,6 +154,10 @@ std::string VolumeRendering::last_render_mode() const {
 }
 
 bool VolumeRendering::apply_preset(const std::string& name) {
+  if (name == "Labels") {
+    apply_labels();
+    return true;
+  }
   for (const auto& preset : volume_presets()) {
     if (preset.name == name) {
       apply(preset);
@@ -94,6 +169,7 @@ bool VolumeRendering::apply_preset(const std::string& name) {
 
 void VolumeRendering::apply(const VolumePreset& preset) {
   preset_ = preset.name;
+  volume_->GetProperty()->SetInterpolationTypeToLinear();
   const double low = preset.normalised ? range_[0] : 0.0;
   const double scale = preset.normalised ? std::max(range_[1] - range_[0], 1e-12) : 1.0;
   auto colour = vtkSmartPointer<vtkColorTransferFunction>::New();

@@ -10,6 +10,10 @@
 ///   "CT bone" (HU): transparent below 150 HU, 0.2 at 300 HU, 0.85 from 1000 HU; ivory;
 ///   "MR default" (normalised intensity t = (v − min) / (max − min) over the volume's range,
 ///     MR having no absolute scale): transparent below t = 0.1, 0.3 at 0.5, 0.8 at 1; warm grey.
+///   "Labels" (issue 23 §5): a label image coloured by label — each distinct non-zero value its
+///     own colour from a fixed palette at opacity 0.5, 0 transparent, nearest-voxel sampling so
+///     labels do not blend.
+/// preset_for_data() picks one from the data when a volume is opened.
 /// Gradient-free (no shading) so the image depends only on the functions and the geometry.
 
 #include <vtkImageData.h>
@@ -33,7 +37,8 @@ struct VolumePreset {
   std::vector<std::array<double, 2>> opacity;
 };
 
-/// "CT soft tissue", "CT bone", "MR default", in that order.
+/// "CT soft tissue", "CT bone", "MR default", "Labels", in that order ("Labels" has no fixed
+/// functions: they come from the volume's label values).
 const std::vector<VolumePreset>& volume_presets();
 
 /// The volume prop of one image volume, placed in the world by its origin and direction.
@@ -44,9 +49,17 @@ class VolumeRendering {
   /// Renders `volume` from now on (the preset stays).
   void set_volume(const core::ImageVolume& volume);
   bool has_volume() const { return image_ != nullptr; }
+  /// Forgets the volume (File ▸ Close image volume); the prop should be hidden.
+  void clear();
   /// Applies a preset by name; returns false for an unknown name.
   bool apply_preset(const std::string& name);
   const std::string& preset() const { return preset_; }
+  /// The preset the data asks for: "Labels" for whole-number voxels of at most 64 distinct
+  /// values (a label image), "CT soft tissue" when values reach below −200 (Hounsfield units),
+  /// else "MR default". "CT soft tissue" without a volume.
+  std::string preset_for_data() const;
+  /// The distinct voxel values of a whole-number volume (at most 257 collected), ascending.
+  const std::vector<double>& distinct_values() const { return distinct_; }
   /// The ray caster of the last render: "GPU", "CPU" or "none" (not rendered yet, or no
   /// supported path).
   std::string last_render_mode() const;
@@ -55,11 +68,14 @@ class VolumeRendering {
 
  private:
   void apply(const VolumePreset& preset);
+  void apply_labels();
 
   vtkSmartPointer<vtkImageData> image_;
   vtkSmartPointer<vtkVolume> volume_;
   std::string preset_;
   std::array<double, 2> range_{0.0, 1.0};
+  std::vector<double> distinct_;
+  bool whole_numbers_ = false;
 };
 
 }  // namespace viscera::studio

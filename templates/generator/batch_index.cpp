@@ -1,12 +1,16 @@
 #include "templates/generator/batch_index.h"
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <atomic>
 #include <fstream>
 #include <regex>
 #include <set>
 #include <sstream>
 
 #include "core/error.h"
+#include "templates/generator/batch_journal.h"
 #include "templates/generator/diversity_summary.h"
 
 namespace viscera::templates {
@@ -114,7 +118,10 @@ std::vector<std::uint64_t> shard_indices(std::uint64_t count, std::uint64_t shar
 }
 
 void write_json_atomically(const nlohmann::json& json, const fs::path& path) {
-  const fs::path staged = path.string() + ".partial";
+  // A name of this process's own: ranks and array jobs may write the same file at once.
+  static std::atomic<unsigned> serial{0};
+  const fs::path staged = path.string() + ".partial-" + std::to_string(::getpid()) + "-" +
+                          std::to_string(serial.fetch_add(1));
   {
     std::ofstream out(staged, std::ios::binary | std::ios::trunc);
     out << json.dump(2) << "\n";
@@ -169,6 +176,7 @@ nlohmann::json merge_shards(const fs::path& folder) {
   write_json_atomically(index, folder / "index.json");
   for (const auto& file : files)
     fs::remove(file);
+  BatchJournal::remove(folder);
   return index;
 }
 

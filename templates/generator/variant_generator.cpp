@@ -8,6 +8,7 @@
 #include "core/package/scenario_package.h"
 #include "core/random.h"
 #include "core/version.h"
+#include "templates/generator/batch_share.h"
 #include "templates/generator/patient_seed.h"
 #include "templates/variability/parameter_distribution.h"
 
@@ -123,19 +124,9 @@ nlohmann::json patient_record(const GeneratedPatient& patient, const std::string
 nlohmann::json generate_share(const VariantGenerator& generator, std::uint64_t count,
                               const std::vector<std::uint64_t>& indices,
                               const std::filesystem::path& folder, core::Progress& progress) {
-  std::filesystem::create_directories(folder);
-  nlohmann::json records = nlohmann::json::array();
-  progress.begin_stage("generating " + generator.scenario_template().name() + " patients",
-                       static_cast<std::int64_t>(indices.size()));
-  for (const std::uint64_t k : indices) {
-    if (k >= count) throw core::UsageError("patient index beyond the batch");
-    const GeneratedPatient patient = generator.generate(k, progress);
-    const std::string package = patient_package_name(k, count);
-    core::write_package(patient.scenario, folder / package);
-    records.push_back(patient_record(patient, package));
-    progress.step();
-  }
-  return records;
+  return generate_patients(generator, count, indices, local_positions(indices.size()), folder,
+                           nullptr, progress)
+      .records;
 }
 
 }  // namespace viscera::templates

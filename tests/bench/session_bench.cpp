@@ -7,54 +7,24 @@
 
 #include <benchmark/benchmark.h>
 
-#include <fstream>
-#include <nlohmann/json.hpp>
-
 #include "simulator/session/headless_session.h"
 #include "simulator/session/instrument_input.h"
-#include "templates/template_catalog.h"
+#include "tests/bench/session_scripts.h"
 
 namespace {
 
+using viscera::bench::repeated;
+
 const viscera::core::Scenario& patient() {
-  static const viscera::core::Scenario scenario =
-      viscera::templates::build_from_template("hysteroscopy", {}, 1);
-  return scenario;
+  return viscera::bench::hysteroscopy_patient();
 }
-
-/// The script with its landmark places resolved on the patient.
 nlohmann::json script(const std::string& who) {
-  const std::string path =
-      std::string(VISCERA_SOURCE_DIR) + "/data/scripts/hysteroscopy-" + who + ".json";
-  std::ifstream in(path);
-  return viscera::sim::resolve_script_landmarks(nlohmann::json::parse(in), patient().landmarks,
-                                                path);
-}
-
-/// The script repeated back to back until `seconds`.
-nlohmann::json repeated(nlohmann::json tour, double seconds) {
-  const nlohmann::json once = tour["waypoints"];
-  const double length = once.back()["t"].get<double>() + 0.5;
-  nlohmann::json waypoints = nlohmann::json::array();
-  for (double offset = 0.0; offset < seconds; offset += length) {
-    for (auto point : once) {
-      point["t"] = point["t"].get<double>() + offset;
-      waypoints.push_back(point);
-    }
-  }
-  tour["waypoints"] = waypoints;
-  return tour;
+  return viscera::bench::hysteroscopy_script(who);
 }
 
 void run(benchmark::State& state, const nlohmann::json& json, double duration) {
   const auto input = viscera::sim::ScriptedTrajectory::from_json(json, "script", 30.0);
-  viscera::sim::HeadlessRunOptions options;
-  options.duration = duration;
-  options.instrument = &input;
-  options.instrument_body = input.body();
-  options.instrument_stiffness = input.stiffness();
-  options.force_warning = input.force_warning();
-  options.end_when_complete = false;  // the tour goes on after the procedure's tasks are done
+  const auto options = viscera::bench::scripted_run(input, duration);
   double simulated = 0.0, wall = 0.0;
   for (auto _ : state) {
     const auto report = viscera::sim::run_headless(patient(), options);

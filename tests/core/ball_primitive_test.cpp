@@ -15,7 +15,8 @@ using testing::is_watertight_and_outward;
 
 TEST(BallPrimitive, volume_and_area_converge_to_the_sphere) {
   const double r = 0.03;
-  const double sphere_volume = 4.0 / 3.0 * std::numbers::pi * r * r * r, sphere_area = 4.0 * std::numbers::pi * r * r;
+  const double sphere_volume = 4.0 / 3.0 * std::numbers::pi * r * r * r,
+               sphere_area = 4.0 * std::numbers::pi * r * r;
   double previous_volume_error = 1.0, previous_area_error = 1.0;
   for (int s = 1; s <= 6; ++s) {
     BallPrimitive ball = make_ball(Vec3(0.01, -0.02, 0.1), r, 1, s);
@@ -45,7 +46,8 @@ TEST(BallPrimitive, moved_control_point_is_interpolated_and_others_stay) {
   EXPECT_TRUE(is_watertight_and_outward(mesh));
   // Star-shaped about the centre still: every triangle faces away from it.
   for (const auto& t : mesh.triangles) {
-    const Vec3 n = (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]);
+    const Vec3 n = (mesh.vertices[t[1]] - mesh.vertices[t[0]])
+                       .cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]);
     EXPECT_GT(n.dot(mesh.vertices[t[0]] + mesh.vertices[t[1]] + mesh.vertices[t[2]]), 0.0);
   }
 }
@@ -60,7 +62,8 @@ TEST(BallPrimitive, reshapes_smoothly_and_in_proportion_to_the_move) {
     ball.control_points[7] += fraction * move;
     const SurfaceMesh mesh = tessellate_ball(ball);
     double largest = 0.0;
-    for (std::size_t v = 0; v < mesh.vertices.size(); ++v) largest = std::max(largest, (mesh.vertices[v] - rest_mesh.vertices[v]).norm());
+    for (std::size_t v = 0; v < mesh.vertices.size(); ++v)
+      largest = std::max(largest, (mesh.vertices[v] - rest_mesh.vertices[v]).norm());
     // The field is linear in the displacements: half the move, half the change; and no
     // vertex moves much further than the control point did.
     EXPECT_GE(largest, fraction * move.norm() - 1e-12);
@@ -83,9 +86,11 @@ TEST(BallPrimitive, reshapes_smoothly_and_in_proportion_to_the_move) {
 
 TEST(BallPrimitive, reproduces_a_moved_and_scaled_control_set_exactly) {
   BallPrimitive ball = make_ball(Vec3::Zero(), 0.02, 1, 3);
-  for (auto& p : ball.control_points) p = Vec3(0.1, 0.0, 0.05) + 1.5 * p;
+  for (auto& p : ball.control_points)
+    p = Vec3(0.1, 0.0, 0.05) + 1.5 * p;
   const BallShape shape(ball);
-  for (const Vec3& d : {Vec3(1, 0, 0), Vec3(0.3, -0.2, 0.9), Vec3(-1, -1, -1), Vec3(0.01, 0.7, -0.2)}) {
+  for (const Vec3& d :
+       {Vec3(1, 0, 0), Vec3(0.3, -0.2, 0.9), Vec3(-1, -1, -1), Vec3(0.01, 0.7, -0.2)}) {
     EXPECT_LT((shape.point(d) - (Vec3(0.1, 0.0, 0.05) + 0.03 * d.normalized())).norm(), 1e-12);
   }
 }

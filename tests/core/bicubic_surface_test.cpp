@@ -37,10 +37,13 @@ TEST(BicubicSurface, interpolates_every_grid_point) {
   const auto points = wavy_grid(5, 6);
   const BicubicSurface surface(points, 5, 6, false, false);
   for (int r = 0; r < 5; ++r)
-    for (int c = 0; c < 6; ++c) EXPECT_LT((surface.point(c, r) - points[static_cast<std::size_t>(r * 6 + c)]).norm(), 1e-13);
+    for (int c = 0; c < 6; ++c)
+      EXPECT_LT((surface.point(c, r) - points[static_cast<std::size_t>(r * 6 + c)]).norm(), 1e-13);
   const BicubicSurface tube(tube_grid(4, 8, 0.01, 0.05), 4, 8, true, false);
   for (int r = 0; r < 4; ++r)
-    for (int c = 0; c < 8; ++c) EXPECT_LT((tube.point(c, r) - tube.grid()[static_cast<std::size_t>(r * 8 + c)]).norm(), 1e-15);
+    for (int c = 0; c < 8; ++c)
+      EXPECT_LT((tube.point(c, r) - tube.grid()[static_cast<std::size_t>(r * 8 + c)]).norm(),
+                1e-15);
 }
 
 TEST(BicubicSurface, tangent_planes_are_continuous_across_patch_borders) {
@@ -51,10 +54,12 @@ TEST(BicubicSurface, tangent_planes_are_continuous_across_patch_borders) {
     for (int k = 0; k <= 20; ++k) {
       const double v = 4.0 * k / 20.0;
       // Across a u-border: derivatives in knot parameters agree on both sides (C1).
-      const Vec3 left = surface.derivative_u(border - eps, v), right = surface.derivative_u(border + eps, v);
+      const Vec3 left = surface.derivative_u(border - eps, v),
+                 right = surface.derivative_u(border + eps, v);
       worst = std::max(worst, (left - right).norm() / right.norm());
       const double u = 5.0 * k / 20.0;
-      const Vec3 below = surface.derivative_v(u, std::min(border, 3) - eps), above = surface.derivative_v(u, std::min(border, 3) + eps);
+      const Vec3 below = surface.derivative_v(u, std::min(border, 3) - eps),
+                 above = surface.derivative_v(u, std::min(border, 3) + eps);
       worst = std::max(worst, (below - above).norm() / above.norm());
     }
   }
@@ -71,7 +76,8 @@ TEST(BicubicSurface, closed_tube_is_seamless_and_near_its_circle) {
   }
   EXPECT_LT(worst, 0.01 * 2e-3);  // twelve points per ring give the circle to 0.2 %
   EXPECT_LT((tube.point(0.0, 0.5) - tube.point(12.0, 0.5)).norm(), 1e-15);
-  EXPECT_LT((tube.derivative_u(1e-9, 0.5) - tube.derivative_u(12.0 - 1e-9, 0.5)).norm(), 1e-6 * tube.derivative_u(0.0, 0.5).norm());
+  EXPECT_LT((tube.derivative_u(1e-9, 0.5) - tube.derivative_u(12.0 - 1e-9, 0.5)).norm(),
+            1e-6 * tube.derivative_u(0.0, 0.5).norm());
 }
 
 TEST(BicubicSurface, tessellation_has_requested_resolution_uvs_and_outward_normals) {
@@ -88,7 +94,8 @@ TEST(BicubicSurface, tessellation_has_requested_resolution_uvs_and_outward_norma
     EXPECT_GT(mesh.normals[i].dot(radial.normalized()), 0.99);
   }
   for (const auto& t : mesh.triangles) {
-    const Vec3 n = (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]);
+    const Vec3 n = (mesh.vertices[t[1]] - mesh.vertices[t[0]])
+                       .cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]);
     const Vec3 c = (mesh.vertices[t[0]] + mesh.vertices[t[1]] + mesh.vertices[t[2]]) / 3.0;
     EXPECT_GT(n.dot(Vec3(c.x(), c.y(), 0.0)), 0.0);
   }
@@ -97,9 +104,11 @@ TEST(BicubicSurface, tessellation_has_requested_resolution_uvs_and_outward_norma
   for (int r = 0; r < 6; ++r)
     for (int c = 0; c < 8; ++c) {
       const double a = 2.0 * std::numbers::pi * c / 8, b = 2.0 * std::numbers::pi * r / 6;
-      torus.emplace_back((0.05 + 0.01 * std::cos(a)) * std::cos(b), (0.05 + 0.01 * std::cos(a)) * std::sin(b), 0.01 * std::sin(a));
+      torus.emplace_back((0.05 + 0.01 * std::cos(a)) * std::cos(b),
+                         (0.05 + 0.01 * std::cos(a)) * std::sin(b), 0.01 * std::sin(a));
     }
-  EXPECT_TRUE(is_closed_and_consistently_oriented(tessellate(BicubicSurface(torus, 6, 8, true, true), {4, 4})));
+  EXPECT_TRUE(is_closed_and_consistently_oriented(
+      tessellate(BicubicSurface(torus, 6, 8, true, true), {4, 4})));
 }
 
 TEST(BicubicSurface, rejects_small_or_degenerate_grids) {

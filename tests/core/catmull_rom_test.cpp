@@ -12,12 +12,14 @@ namespace {
 class CatmullRom : public ::testing::TestWithParam<KnotSpacing> {};
 
 TEST_P(CatmullRom, interpolates_its_points_with_continuous_tangents) {
-  const std::vector<Vec3> points = {{0, 0, 0}, {1, 0.2, 0}, {1.5, 1.5, 0.3}, {3, 1.7, 0.1}, {3.2, 4, -1}};
+  const std::vector<Vec3> points = {
+      {0, 0, 0}, {1, 0.2, 0}, {1.5, 1.5, 0.3}, {3, 1.7, 0.1}, {3.2, 4, -1}};
   for (const bool closed : {false, true}) {
     const CatmullRomSpline spline(points, GetParam(), closed);
     for (int s = 0; s < spline.segments(); ++s) {
       EXPECT_TRUE(spline.evaluate(s, 0.0).isApprox(points[static_cast<std::size_t>(s)], 1e-15));
-      EXPECT_TRUE(spline.evaluate(s, 1.0).isApprox(points[static_cast<std::size_t>((s + 1) % points.size())], 1e-15));
+      EXPECT_TRUE(spline.evaluate(s, 1.0).isApprox(
+          points[static_cast<std::size_t>((s + 1) % points.size())], 1e-15));
       if (s + 1 < spline.segments()) {
         // Same direction on both sides of a joint; with knot-scaled Bézier handles the
         // derivatives with respect to the global knot parameter match too.
@@ -30,7 +32,8 @@ TEST_P(CatmullRom, interpolates_its_points_with_continuous_tangents) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Spacings, CatmullRom,
-                         ::testing::Values(KnotSpacing::Uniform, KnotSpacing::Centripetal, KnotSpacing::ChordLength));
+                         ::testing::Values(KnotSpacing::Uniform, KnotSpacing::Centripetal,
+                                           KnotSpacing::ChordLength));
 
 TEST(CatmullRomSpline, closed_chord_length_curve_through_a_circle_stays_near_it) {
   std::vector<Vec3> points;
@@ -42,9 +45,11 @@ TEST(CatmullRomSpline, closed_chord_length_curve_through_a_circle_stays_near_it)
   const CatmullRomSpline spline(points, KnotSpacing::ChordLength, true);
   double worst = 0.0;
   for (int s = 0; s < spline.segments(); ++s)
-    for (int k = 0; k <= 10; ++k) worst = std::max(worst, std::abs(spline.evaluate(s, k / 10.0).norm() - 1.0));
+    for (int k = 0; k <= 10; ++k)
+      worst = std::max(worst, std::abs(spline.evaluate(s, k / 10.0).norm() - 1.0));
   EXPECT_LT(worst, 0.01);  // eight points already give a circle to within 1 %
-  EXPECT_THROW(CatmullRomSpline({{0, 0, 0}, {0, 0, 0}}, KnotSpacing::ChordLength, false), UsageError);
+  EXPECT_THROW(CatmullRomSpline({{0, 0, 0}, {0, 0, 0}}, KnotSpacing::ChordLength, false),
+               UsageError);
 }
 
 }  // namespace

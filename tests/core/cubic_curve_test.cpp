@@ -10,7 +10,8 @@
 namespace viscera::core {
 namespace {
 
-const std::vector<Vec3> kPoints = {{0, 0, 0}, {1, 0.2, 0}, {1.5, 1.5, 0.3}, {3, 1.7, 0.1}, {3.2, 4, -1}, {2, 5, 0}};
+const std::vector<Vec3> kPoints = {{0, 0, 0},     {1, 0.2, 0},  {1.5, 1.5, 0.3},
+                                   {3, 1.7, 0.1}, {3.2, 4, -1}, {2, 5, 0}};
 
 /// Largest jump of the derivative with respect to the knot parameter across interior knots,
 /// relative to its size.
@@ -50,15 +51,18 @@ TEST_P(CatmullRomCurve, matches_the_existing_spline_segment_by_segment) {
     const CatmullRomSpline spline(kPoints, GetParam(), closed);
     for (int s = 0; s < curve.segments(); ++s) {
       const auto a = curve.bezier(s), b = spline.bezier(s);
-      for (int k = 0; k < 4; ++k) EXPECT_LT((a[static_cast<std::size_t>(k)] - b[static_cast<std::size_t>(k)]).norm(), 1e-12);
+      for (int k = 0; k < 4; ++k)
+        EXPECT_LT((a[static_cast<std::size_t>(k)] - b[static_cast<std::size_t>(k)]).norm(), 1e-12);
     }
   }
 }
 
 INSTANTIATE_TEST_SUITE_P(Spacings, CatmullRomCurve,
-                         ::testing::Values(KnotSpacing::Uniform, KnotSpacing::Centripetal, KnotSpacing::ChordLength));
+                         ::testing::Values(KnotSpacing::Uniform, KnotSpacing::Centripetal,
+                                           KnotSpacing::ChordLength));
 
-TEST(CatmullRomCurve, chord_length_knots_of_collinear_uneven_points_give_a_straight_line_at_unit_speed) {
+TEST(CatmullRomCurve,
+     chord_length_knots_of_collinear_uneven_points_give_a_straight_line_at_unit_speed) {
   const std::vector<Vec3> points = {{0, 0, 0}, {0.1, 0, 0}, {0.5, 0, 0}, {0.6, 0, 0}, {2, 0, 0}};
   const CubicCurve curve = catmull_rom_curve(points, KnotSpacing::ChordLength, false);
   EXPECT_DOUBLE_EQ(curve.parameter_end(), 2.0);
@@ -76,12 +80,15 @@ TEST(CubicBspline, is_twice_continuously_differentiable_and_clamps_its_ends) {
   for (int s = 1; s < curve.segments(); ++s) {
     const double t = curve.knot(s);
     EXPECT_LT((curve.derivative(t - 1e-12) - curve.derivative(t + 1e-12)).norm(), 1e-9);
-    EXPECT_LT((curve.second_derivative(t - 1e-12) - curve.second_derivative(t + 1e-12)).norm(), 1e-8);
+    EXPECT_LT((curve.second_derivative(t - 1e-12) - curve.second_derivative(t + 1e-12)).norm(),
+              1e-8);
   }
   // A closed B-spline of a square's corners is symmetric: its points lie inside the square.
-  const CubicCurve loop = cubic_bspline_curve({{1, 1, 0}, {-1, 1, 0}, {-1, -1, 0}, {1, -1, 0}}, true);
+  const CubicCurve loop =
+      cubic_bspline_curve({{1, 1, 0}, {-1, 1, 0}, {-1, -1, 0}, {1, -1, 0}}, true);
   EXPECT_EQ(loop.segments(), 4);
-  EXPECT_LT((loop.point(0.0) - Vec3(2.0 / 3.0, 2.0 / 3.0, 0.0)).norm(), 1e-14);  // (P3 + 4 P0 + P1) / 6
+  EXPECT_LT((loop.point(0.0) - Vec3(2.0 / 3.0, 2.0 / 3.0, 0.0)).norm(),
+            1e-14);  // (P3 + 4 P0 + P1) / 6
   EXPECT_LT((loop.point(0.0) - loop.point(4.0)).norm(), 1e-14);
 }
 
@@ -105,7 +112,9 @@ TEST(HermiteCurve, reproduces_a_cubic_polynomial_from_its_values_and_derivatives
 
 TEST(CubicCurve, rejects_bad_nets_and_coinciding_points) {
   EXPECT_THROW(CubicCurve({Vec3::Zero(), Vec3::UnitX()}, {1.0}, false), UsageError);
-  EXPECT_THROW(catmull_rom_curve({{0, 0, 0}, {0, 0, 0}, {1, 0, 0}}, KnotSpacing::ChordLength, false), UsageError);
+  EXPECT_THROW(
+      catmull_rom_curve({{0, 0, 0}, {0, 0, 0}, {1, 0, 0}}, KnotSpacing::ChordLength, false),
+      UsageError);
   EXPECT_THROW(cubic_bspline_curve({{0, 0, 0}, {1, 0, 0}}, true), UsageError);
 }
 

@@ -14,7 +14,8 @@ namespace {
 using testing::is_watertight_and_outward;
 
 TEST(FlatPrimitive, planar_slab_is_watertight_with_the_volume_of_its_box) {
-  const FlatPrimitive flat = make_flat(Vec3(0, 0, 0), Vec3(0.08, 0, 0), Vec3(0, 0.05, 0), 4, 5, 0.004);
+  const FlatPrimitive flat =
+      make_flat(Vec3(0, 0, 0), Vec3(0.08, 0, 0), Vec3(0, 0.05, 0), 4, 5, 0.004);
   const SurfaceMesh mesh = tessellate_flat(flat);
   EXPECT_TRUE(is_watertight_and_outward(mesh));
   EXPECT_NEAR(enclosed_volume(mesh), 0.08 * 0.05 * 0.004, 1e-12);
@@ -32,20 +33,27 @@ TEST(FlatPrimitive, open_sheet_passes_through_its_control_points_and_has_one_bor
   const int steps = flat.steps_per_patch, columns = 3 * steps + 1;
   for (int r = 0; r < 4; ++r)
     for (int c = 0; c < 4; ++c) {
-      EXPECT_LT((sheet.vertices[static_cast<std::size_t>(r * steps * columns + c * steps)] - flat.control_points[static_cast<std::size_t>(r * 4 + c)]).norm(), 1e-15);
+      EXPECT_LT((sheet.vertices[static_cast<std::size_t>(r * steps * columns + c * steps)] -
+                 flat.control_points[static_cast<std::size_t>(r * 4 + c)])
+                    .norm(),
+                1e-15);
     }
   // Border edges: the 4 · 3 · steps sample intervals around the sheet, each used once.
   std::map<std::pair<int, int>, int> uses;
   for (const auto& t : sheet.triangles)
-    for (int e = 0; e < 3; ++e) ++uses[std::minmax(t[e], t[(e + 1) % 3])];
+    for (int e = 0; e < 3; ++e)
+      ++uses[std::minmax(t[e], t[(e + 1) % 3])];
   int border = 0;
-  for (const auto& [edge, count] : uses) border += count == 1 ? 1 : 0;
+  for (const auto& [edge, count] : uses)
+    border += count == 1 ? 1 : 0;
   EXPECT_EQ(border, 4 * 3 * steps);
-  for (const auto& uv : sheet.uvs) EXPECT_TRUE(uv.minCoeff() >= 0.0 && uv.maxCoeff() <= 1.0);
+  for (const auto& uv : sheet.uvs)
+    EXPECT_TRUE(uv.minCoeff() >= 0.0 && uv.maxCoeff() <= 1.0);
 }
 
 TEST(FlatPrimitive, moving_a_control_point_reshapes_smoothly_and_stays_watertight) {
-  const FlatPrimitive rest = make_flat(Vec3(0, 0, 0), Vec3(0.1, 0, 0), Vec3(0, 0.1, 0), 5, 5, 0.003);
+  const FlatPrimitive rest =
+      make_flat(Vec3(0, 0, 0), Vec3(0.1, 0, 0), Vec3(0, 0.1, 0), 5, 5, 0.003);
   const SurfaceMesh rest_mesh = tessellate_flat(rest);
   double previous = 0.0;
   for (const double h : {0.005, 0.01, 0.02}) {
@@ -54,7 +62,8 @@ TEST(FlatPrimitive, moving_a_control_point_reshapes_smoothly_and_stays_watertigh
     const SurfaceMesh mesh = tessellate_flat(flat);
     EXPECT_TRUE(is_watertight_and_outward(mesh));
     double largest = 0.0;
-    for (std::size_t v = 0; v < mesh.vertices.size(); ++v) largest = std::max(largest, (mesh.vertices[v] - rest_mesh.vertices[v]).norm());
+    for (std::size_t v = 0; v < mesh.vertices.size(); ++v)
+      largest = std::max(largest, (mesh.vertices[v] - rest_mesh.vertices[v]).norm());
     EXPECT_GE(largest, h - 1e-12);
     EXPECT_LT(largest, 1.3 * h);
     if (previous > 0.0) {

@@ -39,7 +39,8 @@ TEST(ImageVolumeIo, vti_round_trip_keeps_geometry_and_voxels) {
   EXPECT_EQ(back.voxels, original.voxels);
   EXPECT_DOUBLE_EQ(back.value(3), -1000.0 + 3 * 37);
   // The world position of a voxel follows origin + direction · (spacing ∘ index).
-  EXPECT_TRUE(back.index_to_world(Vec3(1, 0, 0)).isApprox(original.origin + original.direction.col(0) * 0.0005));
+  EXPECT_TRUE(back.index_to_world(Vec3(1, 0, 0))
+                  .isApprox(original.origin + original.direction.col(0) * 0.0005));
 }
 
 TEST(ImageVolumeIo, label_map_round_trip_keeps_names) {

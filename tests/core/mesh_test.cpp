@@ -19,7 +19,8 @@ TetMesh unit_cube_as_five_tets() {
   TetMesh mesh;
   for (int k = 0; k < 2; ++k)
     for (int j = 0; j < 2; ++j)
-      for (int i = 0; i < 2; ++i) mesh.nodes.emplace_back(i, j, k);
+      for (int i = 0; i < 2; ++i)
+        mesh.nodes.emplace_back(i, j, k);
   // Corner indices: i + 2j + 4k. One central tet and four corner tets.
   mesh.tets = {{0, 1, 2, 4}, {1, 3, 2, 7}, {1, 4, 7, 5}, {2, 7, 4, 6}, {1, 2, 4, 7}};
   orient_tets_positively(mesh);
@@ -30,7 +31,8 @@ TetMesh unit_cube_as_five_tets() {
 TEST(TetMesh, five_tet_cube_has_unit_volume_and_closed_outward_boundary) {
   const TetMesh cube = unit_cube_as_five_tets();
   EXPECT_NEAR(total_volume(cube), 1.0, 1e-12);
-  for (std::size_t t = 0; t < cube.tets.size(); ++t) EXPECT_GT(signed_volume(cube, static_cast<int>(t)), 0.0);
+  for (std::size_t t = 0; t < cube.tets.size(); ++t)
+    EXPECT_GT(signed_volume(cube, static_cast<int>(t)), 0.0);
   EXPECT_EQ(cube.surface_faces.size(), 12u);
   SurfaceMesh boundary{cube.nodes, cube.surface_faces, {}, {}, {}};
   EXPECT_TRUE(is_closed_and_consistently_oriented(boundary));
@@ -70,7 +72,8 @@ TEST(Icosphere, is_closed_outward_and_converges_to_the_sphere) {
   }
   EXPECT_LT(previous_error, 0.01);
   const SurfaceMesh fine = make_icosphere(r, 4);
-  EXPECT_NEAR(surface_area(fine), 4.0 * std::numbers::pi * r * r, 0.01 * 4.0 * std::numbers::pi * r * r);
+  EXPECT_NEAR(surface_area(fine), 4.0 * std::numbers::pi * r * r,
+              0.01 * 4.0 * std::numbers::pi * r * r);
 }
 
 TEST(Icosphere, refuses_bad_arguments) {
@@ -84,11 +87,13 @@ TEST(TetMesher, fills_a_sphere_with_positive_tets_matching_its_enclosed_volume) 
   options.cell_size = 0.008;
   const TetMesh body = mesh_closed_surface(sphere, options);
   ASSERT_FALSE(body.tets.empty());
-  for (std::size_t t = 0; t < body.tets.size(); ++t) ASSERT_GT(signed_volume(body, static_cast<int>(t)), 0.0);
+  for (std::size_t t = 0; t < body.tets.size(); ++t)
+    ASSERT_GT(signed_volume(body, static_cast<int>(t)), 0.0);
   EXPECT_NEAR(total_volume(body), enclosed_volume(sphere), 1e-6 * enclosed_volume(sphere));
   EXPECT_EQ(body.surface_faces, sphere.triangles);
   // The surface vertices come first and unchanged.
-  for (std::size_t v = 0; v < sphere.vertices.size(); ++v) EXPECT_EQ(body.nodes[v], sphere.vertices[v]);
+  for (std::size_t v = 0; v < sphere.vertices.size(); ++v)
+    EXPECT_EQ(body.nodes[v], sphere.vertices[v]);
 }
 
 TEST(TetMesher, is_deterministic) {
@@ -122,7 +127,8 @@ TEST(SurfaceEmbedding, reproduces_points_inside_and_near_the_body) {
   }
   // Moving the body rigidly moves the embedded points with it.
   std::vector<Vec3> moved = body.nodes;
-  for (auto& n : moved) n += Vec3(0.01, -0.02, 0.005);
+  for (auto& n : moved)
+    n += Vec3(0.01, -0.02, 0.005);
   const auto shifted = embedded_positions(embedding, body.tets, moved);
   EXPECT_NEAR((shifted[5] - fine.vertices[5] - Vec3(0.01, -0.02, 0.005)).norm(), 0.0, 1e-12);
 }

@@ -30,8 +30,10 @@ int brute_nearest(const std::vector<Vec3>& points, const Vec3& p) {
 TEST(ObjectConnectivity, pairs_are_exactly_the_nearest_knots_within_the_distance) {
   Rng rng(7);
   std::vector<Vec3> a, b;
-  for (int i = 0; i < 400; ++i) a.emplace_back(rng.uniform(0, 0.05), rng.uniform(0, 0.05), rng.uniform(0, 0.01));
-  for (int j = 0; j < 150; ++j) b.emplace_back(rng.uniform(0, 0.05), rng.uniform(0, 0.05), rng.uniform(0.008, 0.02));
+  for (int i = 0; i < 400; ++i)
+    a.emplace_back(rng.uniform(0, 0.05), rng.uniform(0, 0.05), rng.uniform(0, 0.01));
+  for (int j = 0; j < 150; ++j)
+    b.emplace_back(rng.uniform(0, 0.05), rng.uniform(0, 0.05), rng.uniform(0.008, 0.02));
   const double within = 0.004;
   const auto pairs = nearest_knot_pairs(a, b, within);
   ASSERT_FALSE(pairs.empty());
@@ -39,7 +41,8 @@ TEST(ObjectConnectivity, pairs_are_exactly_the_nearest_knots_within_the_distance
   EXPECT_EQ(found.size(), pairs.size());
   for (const auto& [i, j] : pairs) {
     EXPECT_LT((a[static_cast<std::size_t>(i)] - b[static_cast<std::size_t>(j)]).norm(), within);
-    EXPECT_TRUE(brute_nearest(b, a[static_cast<std::size_t>(i)]) == j || brute_nearest(a, b[static_cast<std::size_t>(j)]) == i);
+    EXPECT_TRUE(brute_nearest(b, a[static_cast<std::size_t>(i)]) == j ||
+                brute_nearest(a, b[static_cast<std::size_t>(j)]) == i);
   }
   // And nothing is missed: every knot whose nearest partner is within reach is paired with it.
   for (std::size_t i = 0; i < a.size(); ++i) {
@@ -58,12 +61,14 @@ TEST(ObjectConnectivity, pairs_are_exactly_the_nearest_knots_within_the_distance
 
 Scenario two_touching_balls(double gap) {
   Scenario scenario;
-  for (const auto& [id, x] : {std::pair<std::string, double>{"uterus", 0.0}, {"ovary", 0.05 + gap}}) {
+  for (const auto& [id, x] :
+       {std::pair<std::string, double>{"uterus", 0.0}, {"ovary", 0.05 + gap}}) {
     SceneObject object;
     object.id = id;
     object.surface = tessellate_ball(make_ball(Vec3(x, 0, 0), 0.025, 0, 3));
     object.body_kind = BodyKind::MassSpring;
-    object.body = mass_spring_body(layered_mass_spring_net(object.surface, {1, 0.004, LayerMode::Offset}));
+    object.body =
+        mass_spring_body(layered_mass_spring_net(object.surface, {1, 0.004, LayerMode::Offset}));
     scenario.objects.push_back(object);
   }
   return scenario;

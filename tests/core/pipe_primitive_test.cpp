@@ -38,7 +38,8 @@ TEST(PipePrimitive, round_caps_add_a_sphere_and_a_taper_gives_a_frustum) {
   pipe.start_cap = pipe.end_cap = PipeCap::Round;
   const SurfaceMesh capsule = tessellate_pipe(pipe);
   EXPECT_TRUE(is_watertight_and_outward(capsule));
-  const double capsule_volume = std::numbers::pi * r * r * length + 4.0 / 3.0 * std::numbers::pi * r * r * r;
+  const double capsule_volume =
+      std::numbers::pi * r * r * length + 4.0 / 3.0 * std::numbers::pi * r * r * r;
   EXPECT_LT(std::abs(enclosed_volume(capsule) / capsule_volume - 1.0), 0.01);
 
   PipePrimitive cone;
@@ -47,7 +48,8 @@ TEST(PipePrimitive, round_caps_add_a_sphere_and_a_taper_gives_a_frustum) {
   cone.ring_segments = 48;
   const SurfaceMesh frustum = tessellate_pipe(cone);
   EXPECT_TRUE(is_watertight_and_outward(frustum));
-  const double frustum_volume = std::numbers::pi * length * (0.006 * 0.006 + 0.006 * 0.002 + 0.002 * 0.002) / 3.0;
+  const double frustum_volume =
+      std::numbers::pi * length * (0.006 * 0.006 + 0.006 * 0.002 + 0.002 * 0.002) / 3.0;
   EXPECT_LT(std::abs(enclosed_volume(frustum) / frustum_volume - 1.0), 0.01);
 }
 
@@ -75,7 +77,8 @@ TEST(PipePrimitive, moving_a_centre_point_moves_the_tube_through_it) {
   EXPECT_TRUE(is_watertight_and_outward(mesh));
   // The ring through the moved point: vertices at the radius from it.
   int on_ring = 0;
-  for (const auto& v : mesh.vertices) on_ring += std::abs((v - pipe.points[1]).norm() - 0.004) < 2e-4 ? 1 : 0;
+  for (const auto& v : mesh.vertices)
+    on_ring += std::abs((v - pipe.points[1]).norm() - 0.004) < 2e-4 ? 1 : 0;
   EXPECT_GE(on_ring, pipe.ring_segments / 2);
   // The tube wall (caps left open) has no crease: refining both directions twofold halves
   // its largest turn between neighbouring triangles.

@@ -18,7 +18,8 @@ TEST(Progress, reports_stage_fractions_in_order) {
     fractions.push_back(f);
   });
   progress.begin_stage("meshing", 4);
-  for (int i = 0; i < 4; ++i) progress.step();
+  for (int i = 0; i < 4; ++i)
+    progress.step();
   ASSERT_EQ(fractions.size(), 5u);
   EXPECT_EQ(fractions.front(), 0.0);
   EXPECT_EQ(fractions.back(), 1.0);
@@ -30,7 +31,8 @@ TEST(Progress, throttles_callbacks_to_one_per_permille) {
   int calls = 0;
   Progress progress([&](double, const std::string&) { ++calls; });
   progress.begin_stage("many", 1000000);
-  for (int i = 0; i < 1000000; ++i) progress.step();
+  for (int i = 0; i < 1000000; ++i)
+    progress.step();
   EXPECT_LE(calls, 1001 + 1);
 }
 
@@ -54,8 +56,10 @@ TEST(ExitCodes, follow_the_command_line_contract) {
 }
 
 TEST(Error, message_names_file_pointer_and_element_first) {
-  const ValidationError e("unknown material id \"myo\"", {"p.vscene/manifest.json", "/scenario/objects/3/material", ""});
-  EXPECT_STREQ(e.what(), "p.vscene/manifest.json: /scenario/objects/3/material: unknown material id \"myo\"");
+  const ValidationError e("unknown material id \"myo\"",
+                          {"p.vscene/manifest.json", "/scenario/objects/3/material", ""});
+  EXPECT_STREQ(e.what(),
+               "p.vscene/manifest.json: /scenario/objects/3/material: unknown material id \"myo\"");
   EXPECT_EQ(e.reason(), "unknown material id \"myo\"");
   EXPECT_EQ(e.location().json_pointer, "/scenario/objects/3/material");
 }

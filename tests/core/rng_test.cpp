@@ -14,7 +14,8 @@ namespace {
 
 TEST(Rng, same_seed_gives_identical_sequences) {
   Rng a(42), b(42);
-  for (int i = 0; i < 1000; ++i) ASSERT_EQ(a.next_u64(), b.next_u64());
+  for (int i = 0; i < 1000; ++i)
+    ASSERT_EQ(a.next_u64(), b.next_u64());
 }
 
 TEST(Rng, first_outputs_match_the_reference_xoshiro256starstar_seeded_by_splitmix64) {
@@ -54,7 +55,8 @@ TEST(Rng, uniform_int_covers_the_closed_range_evenly) {
     ASSERT_LE(v, 6);
     ++counts[v - 1];
   }
-  for (const int c : counts) EXPECT_NEAR(c, n / 6, n / 60);
+  for (const int c : counts)
+    EXPECT_NEAR(c, n / 6, n / 60);
   EXPECT_THROW(rng.uniform_int(5, 4), UsageError);
 }
 

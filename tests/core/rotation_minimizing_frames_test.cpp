@@ -14,13 +14,15 @@ std::vector<Vec3> helix_points(int n, double radius, double pitch) {
   std::vector<Vec3> points;
   for (int i = 0; i <= n; ++i) {
     const double a = 4.0 * std::numbers::pi * i / n;
-    points.emplace_back(radius * std::cos(a), radius * std::sin(a), pitch * a / (2.0 * std::numbers::pi));
+    points.emplace_back(radius * std::cos(a), radius * std::sin(a),
+                        pitch * a / (2.0 * std::numbers::pi));
   }
   return points;
 }
 
 TEST(RotationMinimizingFrames, stay_orthonormal_and_do_not_twist_about_the_tangent) {
-  const CubicCurve curve = catmull_rom_curve(helix_points(12, 0.01, 0.006), KnotSpacing::ChordLength, false);
+  const CubicCurve curve =
+      catmull_rom_curve(helix_points(12, 0.01, 0.006), KnotSpacing::ChordLength, false);
   const ArcLengthTable table(curve);
   const int n = 4000;
   const auto parameters = even_arc_length_parameters(table, n);
@@ -47,15 +49,18 @@ TEST(RotationMinimizingFrames, stay_orthonormal_and_do_not_twist_about_the_tange
   EXPECT_LT(mean_twist, 1e-3 * torsion);
   // Ten times fewer frames land on nearly the same last normal (the method is fourth order).
   std::vector<double> coarse;
-  for (std::size_t i = 0; i < parameters.size(); i += 10) coarse.push_back(parameters[i]);
+  for (std::size_t i = 0; i < parameters.size(); i += 10)
+    coarse.push_back(parameters[i]);
   const auto coarse_frames = rotation_minimizing_frames(curve, coarse, Vec3::UnitZ());
   EXPECT_LT((coarse_frames.back().normal - frames.back().normal).norm(), 1e-4);
 }
 
 TEST(RotationMinimizingFrames, keep_the_plane_normal_on_a_planar_curve_and_close_a_loop) {
-  const CubicCurve open = catmull_rom_curve({{0, 0, 0}, {1, 0.5, 0}, {2, -0.3, 0}, {3, 1, 0}}, KnotSpacing::ChordLength, false);
+  const CubicCurve open = catmull_rom_curve({{0, 0, 0}, {1, 0.5, 0}, {2, -0.3, 0}, {3, 1, 0}},
+                                            KnotSpacing::ChordLength, false);
   std::vector<double> parameters;
-  for (int k = 0; k <= 50; ++k) parameters.push_back(open.parameter_end() * k / 50);
+  for (int k = 0; k <= 50; ++k)
+    parameters.push_back(open.parameter_end() * k / 50);
   for (const auto& f : rotation_minimizing_frames(open, parameters, Vec3::UnitZ())) {
     EXPECT_LT((f.normal - Vec3::UnitZ()).norm(), 1e-12);
   }
@@ -68,7 +73,8 @@ TEST(RotationMinimizingFrames, keep_the_plane_normal_on_a_planar_curve_and_close
   }
   const CubicCurve loop = catmull_rom_curve(saddle, KnotSpacing::ChordLength, true);
   parameters.clear();
-  for (int k = 0; k <= 240; ++k) parameters.push_back(loop.parameter_end() * k / 240);
+  for (int k = 0; k <= 240; ++k)
+    parameters.push_back(loop.parameter_end() * k / 240);
   const auto frames = rotation_minimizing_frames(loop, parameters, Vec3::UnitZ(), true);
   EXPECT_LT((frames.back().normal - frames.front().normal).norm(), 1e-9);
 }

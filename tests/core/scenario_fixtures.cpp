@@ -9,7 +9,8 @@ core::TetMesh cube_body() {
   core::TetMesh mesh;
   for (int k = 0; k < 2; ++k)
     for (int j = 0; j < 2; ++j)
-      for (int i = 0; i < 2; ++i) mesh.nodes.emplace_back(0.01 * i, 0.01 * j, 0.01 * k);
+      for (int i = 0; i < 2; ++i)
+        mesh.nodes.emplace_back(0.01 * i, 0.01 * j, 0.01 * k);
   mesh.tets = {{0, 1, 2, 4}, {1, 3, 2, 7}, {1, 4, 7, 5}, {2, 7, 4, 6}, {1, 2, 4, 7}};
   core::orient_tets_positively(mesh);
   mesh.surface_faces = core::boundary_faces(mesh.tets);
@@ -35,7 +36,8 @@ core::Scenario full_scenario() {
   muscle.distance_damping = 7.0;
   muscle.tearing_threshold = 0.45;
   muscle.plastic_yield = 0.25;
-  muscle.stress_strain = core::StressStrainCurve{{0.0, 0.1, 0.2}, {0.0, 900.0, 2100.0}, {0.0, 8000.0, 1000.0, 500.0}, 12.5, 20.0};
+  muscle.stress_strain = core::StressStrainCurve{
+      {0.0, 0.1, 0.2}, {0.0, 900.0, 2100.0}, {0.0, 8000.0, 1000.0, 500.0}, 12.5, 20.0};
   muscle.source = "synthetic";
   s.materials[muscle.id] = muscle;
   core::Material soft;
@@ -53,7 +55,8 @@ core::Scenario full_scenario() {
   organ.group = "pelvis";
   organ.body_kind = core::BodyKind::TetMesh;
   organ.body = cube_body();
-  organ.surface.vertices = {{0.002, 0.002, 0.002}, {0.008, 0.002, 0.002}, {0.002, 0.008, 0.002}, {0.002, 0.002, 0.008}};
+  organ.surface.vertices = {
+      {0.002, 0.002, 0.002}, {0.008, 0.002, 0.002}, {0.002, 0.008, 0.002}, {0.002, 0.002, 0.008}};
   organ.surface.triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
   organ.surface.normals = {{-1, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
   organ.surface.uvs = {{0, 0}, {1, 0}, {0, 1}, {0.5, 0.5}};
@@ -69,7 +72,8 @@ core::Scenario full_scenario() {
   polyp.body_kind = core::BodyKind::TetMesh;
   polyp.surface = core::make_icosphere(0.002, 1, core::Vec3(0.005, 0.005, 0.011));
   polyp.body = cube_body();
-  for (auto& node : polyp.body.nodes) node = 0.3 * node + core::Vec3(0.0035, 0.0035, 0.0095);
+  for (auto& node : polyp.body.nodes)
+    node = 0.3 * node + core::Vec3(0.0035, 0.0035, 0.0095);
   polyp.body.node_mass = core::lumped_node_masses(polyp.body, 1000.0);
   s.objects.push_back(polyp);
 
@@ -77,9 +81,11 @@ core::Scenario full_scenario() {
   tree.id = "arteries";
   tree.host_object = "uterus";
   tree.kind = "arterial";
-  tree.segments = {{0, -1, {0, 0, 0}, {0.001, 0, 0}, 0.0005, 1e-7}, {1, 0, {0.001, 0, 0}, {0.002, 0.001, 0}, 0.0004, 5e-8}};
+  tree.segments = {{0, -1, {0, 0, 0}, {0.001, 0, 0}, 0.0005, 1e-7},
+                   {1, 0, {0.001, 0, 0}, {0.002, 0.001, 0}, 0.0004, 5e-8}};
   s.vessel_trees.push_back(tree);
-  s.active_deformations.push_back({"pulse", "uterus", core::PulseSpec{"arteries", 72.0, 6.0, 0.04}});
+  s.active_deformations.push_back(
+      {"pulse", "uterus", core::PulseSpec{"arteries", 72.0, 6.0, 0.04}});
   core::MotilitySpec motility;
   motility.amplitude_mean = 0.003;
   motility.amplitude_variance = 1e-6;
@@ -90,7 +96,8 @@ core::Scenario full_scenario() {
   motility.contraction_interval_mean = 30.0;
   motility.contraction_interval_variance = 4.0;
   s.active_deformations.push_back({"motility", "uterus", motility});
-  s.pathologies.push_back({"p1", "polyp", "uterus", "polyp-1", core::Vec3(0.005, 0.005, 0.01), 0.004});
+  s.pathologies.push_back(
+      {"p1", "polyp", "uterus", "polyp-1", core::Vec3(0.005, 0.005, 0.01), 0.004});
   s.connections.push_back({"stalk", "uterus", "polyp-1", {{5, 0}, {7, 1}}, 250.0});
   s.fluid = {true, "glycine", 12000.0, 500.0, 0.0015};
   s.session.time_step = 0.0005;

@@ -25,9 +25,13 @@ std::string read_text(const fs::path& path) {
   return text.str();
 }
 
-void write_text(const fs::path& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
+void write_text(const fs::path& path, const std::string& text) {
+  std::ofstream(path, std::ios::binary) << text;
+}
 
-nlohmann::json read_manifest(const fs::path& package) { return nlohmann::json::parse(read_text(package / "manifest.json")); }
+nlohmann::json read_manifest(const fs::path& package) {
+  return nlohmann::json::parse(read_text(package / "manifest.json"));
+}
 void write_manifest(const fs::path& package, const nlohmann::json& manifest) {
   write_text(package / "manifest.json", manifest.dump(2));
 }
@@ -39,14 +43,16 @@ void expect_error(Work&& work, std::initializer_list<std::string> fragments) {
     work();
     ADD_FAILURE() << "no error thrown";
   } catch (const E& e) {
-    for (const auto& fragment : fragments) EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+    for (const auto& fragment : fragments)
+      EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
   }
 }
 
 /// Only the package itself may remain in `dir`: no temporaries of failed or finished writes.
 std::vector<std::string> entries_of(const fs::path& dir) {
   std::vector<std::string> names;
-  for (const auto& entry : fs::directory_iterator(dir)) names.push_back(entry.path().filename().string());
+  for (const auto& entry : fs::directory_iterator(dir))
+    names.push_back(entry.path().filename().string());
   std::sort(names.begin(), names.end());
   return names;
 }
@@ -88,7 +94,8 @@ TEST_P(PackageRoundTrip, writing_twice_gives_identical_bytes) {
   if (GetParam() == ".vscz") {
     EXPECT_EQ(read_text(dir / "a.vscz"), read_text(dir / "b.vscz"));
   } else {
-    for (const auto& file : {"manifest.json", "objects/uterus/surface.vtp", "objects/uterus/body.vtu"}) {
+    for (const auto& file :
+         {"manifest.json", "objects/uterus/surface.vtp", "objects/uterus/body.vtu"}) {
       EXPECT_EQ(read_text(dir / "a.vscene" / file), read_text(dir / "b.vscene" / file)) << file;
     }
   }
@@ -115,28 +122,32 @@ TEST_F(BadPackage, corrupt_manifest_is_unreadable_input_naming_the_file) {
 
 TEST_F(BadPackage, wrong_checksum_names_the_changed_file) {
   std::ofstream(package_ / "objects/uterus/body.vtu", std::ios::app) << " ";
-  expect_error<ValidationError>([&] { read_package(package_); }, {"objects/uterus/body.vtu", "checksum"});
+  expect_error<ValidationError>([&] { read_package(package_); },
+                                {"objects/uterus/body.vtu", "checksum"});
 }
 
 TEST_F(BadPackage, newer_version_is_refused_with_the_version_pointer) {
   auto manifest = read_manifest(package_);
   manifest["version"] = 7;
   write_manifest(package_, manifest);
-  expect_error<UnsupportedVersionError>([&] { read_package(package_); },
-                                        {"manifest.json", "/version", "version 7 is newer", "update Viscera"});
+  expect_error<UnsupportedVersionError>(
+      [&] { read_package(package_); },
+      {"manifest.json", "/version", "version 7 is newer", "update Viscera"});
 }
 
 TEST_F(BadPackage, missing_file_is_named) {
   fs::remove(package_ / "objects/uterus/surface.vtp");
-  expect_error<ValidationError>([&] { read_package(package_); }, {"objects/uterus/surface.vtp", "missing"});
+  expect_error<ValidationError>([&] { read_package(package_); },
+                                {"objects/uterus/surface.vtp", "missing"});
 }
 
 TEST_F(BadPackage, unknown_material_reference_carries_its_json_pointer) {
   auto manifest = read_manifest(package_);
   manifest["scenario"]["objects"][0]["material"] = "myo";
   write_manifest(package_, manifest);
-  expect_error<ValidationError>([&] { read_package(package_); },
-                                {"manifest.json", "/scenario/objects/0/material", "unknown material id \"myo\""});
+  expect_error<ValidationError>(
+      [&] { read_package(package_); },
+      {"manifest.json", "/scenario/objects/0/material", "unknown material id \"myo\""});
   const auto issues = validate_package(package_);
   ASSERT_EQ(issues.size(), 1u);
   EXPECT_EQ(issues[0].json_pointer, "/scenario/objects/0/material");
@@ -150,10 +161,14 @@ TEST_F(BadPackage, schema_violations_are_all_reported_with_pointers) {
   write_manifest(package_, manifest);
   const auto issues = validate_package(package_);
   std::vector<std::string> pointers;
-  for (const auto& issue : issues) pointers.push_back(issue.json_pointer);
-  EXPECT_NE(std::find(pointers.begin(), pointers.end(), "/scenario/materials/soft/density"), pointers.end());
-  EXPECT_NE(std::find(pointers.begin(), pointers.end(), "/scenario/session/time_step"), pointers.end());
-  EXPECT_NE(std::find(pointers.begin(), pointers.end(), "/scenario/objects/1/role"), pointers.end());
+  for (const auto& issue : issues)
+    pointers.push_back(issue.json_pointer);
+  EXPECT_NE(std::find(pointers.begin(), pointers.end(), "/scenario/materials/soft/density"),
+            pointers.end());
+  EXPECT_NE(std::find(pointers.begin(), pointers.end(), "/scenario/session/time_step"),
+            pointers.end());
+  EXPECT_NE(std::find(pointers.begin(), pointers.end(), "/scenario/objects/1/role"),
+            pointers.end());
   expect_error<ValidationError>([&] { read_package(package_); }, {"manifest.json", "/scenario/"});
 }
 
@@ -168,7 +183,8 @@ TEST_F(BadPackage, wrong_format_name_is_refused) {
   auto manifest = read_manifest(package_);
   manifest["format"] = "something-else";
   write_manifest(package_, manifest);
-  expect_error<InputError>([&] { read_package(package_); }, {"/format", "not a Viscera scenario package"});
+  expect_error<InputError>([&] { read_package(package_); },
+                           {"/format", "not a Viscera scenario package"});
 }
 
 /// Writes a zip holding one entry `name` with some bytes, optionally marked as a symlink.
@@ -181,7 +197,8 @@ void write_crafted_zip(const fs::path& path, const std::string& name, bool as_sy
   const zip_int64_t index = zip_file_add(archive, name.c_str(), source, ZIP_FL_ENC_UTF_8);
   ASSERT_GE(index, 0);
   if (as_symlink) {
-    zip_file_set_external_attributes(archive, static_cast<zip_uint64_t>(index), 0, ZIP_OPSYS_UNIX, 0120777u << 16);
+    zip_file_set_external_attributes(archive, static_cast<zip_uint64_t>(index), 0, ZIP_OPSYS_UNIX,
+                                     0120777u << 16);
   }
   ASSERT_EQ(zip_close(archive), 0);
 }
@@ -189,7 +206,8 @@ void write_crafted_zip(const fs::path& path, const std::string& name, bool as_sy
 TEST(UnsafeZip, dot_dot_entry_is_refused_and_nothing_escapes) {
   const auto dir = viscera::testing::scratch_dir();
   write_crafted_zip(dir / "evil.vscz", "objects/../../escaped.txt", false);
-  expect_error<InputError>([&] { read_package(dir / "evil.vscz"); }, {"evil.vscz", "objects/../../escaped.txt", "outside"});
+  expect_error<InputError>([&] { read_package(dir / "evil.vscz"); },
+                           {"evil.vscz", "objects/../../escaped.txt", "outside"});
   EXPECT_THROW(unpack_package(dir / "evil.vscz", dir / "out"), InputError);
   EXPECT_FALSE(fs::exists(dir.parent_path() / "escaped.txt"));
   EXPECT_FALSE(fs::exists(dir / "out"));
@@ -198,20 +216,30 @@ TEST(UnsafeZip, dot_dot_entry_is_refused_and_nothing_escapes) {
 TEST(UnsafeZip, absolute_path_is_refused) {
   const auto dir = viscera::testing::scratch_dir();
   write_crafted_zip(dir / "abs.vscz", "/tmp/viscera-absolute.txt", false);
-  expect_error<InputError>([&] { read_package(dir / "abs.vscz"); }, {"abs.vscz", "/tmp/viscera-absolute.txt"});
+  expect_error<InputError>([&] { read_package(dir / "abs.vscz"); },
+                           {"abs.vscz", "/tmp/viscera-absolute.txt"});
 }
 
 TEST(UnsafeZip, symlink_entry_is_refused) {
   const auto dir = viscera::testing::scratch_dir();
   write_crafted_zip(dir / "link.vscz", "manifest.json", true);
-  expect_error<InputError>([&] { read_package(dir / "link.vscz"); }, {"link.vscz", "symbolic link"});
+  expect_error<InputError>([&] { read_package(dir / "link.vscz"); },
+                           {"link.vscz", "symbolic link"});
 }
 
 TEST(UnsafeZip, entry_over_the_size_limit_is_refused_before_extraction) {
   const auto dir = viscera::testing::scratch_dir();
   write_crafted_zip(dir / "big.vscz", "manifest.json", false);
-  expect_error<InputError>([&] { checked_zip_entries(dir / "big.vscz", {4, 1000}); }, {"big.vscz", "over the limit"});
-  expect_error<InputError>([&] { checked_zip_entries(dir / "big.vscz", {1000, 4}); }, {"big.vscz", "more than the limit"});
+  expect_error<InputError>(
+      [&] {
+        checked_zip_entries(dir / "big.vscz", {4, 1000});
+      },
+      {"big.vscz", "over the limit"});
+  expect_error<InputError>(
+      [&] {
+        checked_zip_entries(dir / "big.vscz", {1000, 4});
+      },
+      {"big.vscz", "more than the limit"});
 }
 
 TEST(PackageWrite, failed_write_leaves_nothing_behind) {
@@ -239,7 +267,8 @@ TEST(PackageWrite, failed_rewrite_keeps_the_old_package_intact) {
 TEST(PackageWrite, unwritable_destination_is_an_output_error) {
   const auto dir = viscera::testing::scratch_dir();
   write_text(dir / "a-file", "x");
-  EXPECT_THROW(write_package(viscera::testing::full_scenario(), dir / "a-file" / "p.vscene"), OutputError);
+  EXPECT_THROW(write_package(viscera::testing::full_scenario(), dir / "a-file" / "p.vscene"),
+               OutputError);
 }
 
 TEST(PackagePack, pack_unpack_and_summary_agree) {
@@ -247,7 +276,8 @@ TEST(PackagePack, pack_unpack_and_summary_agree) {
   write_package(viscera::testing::full_scenario(), dir / "p.vscene");
   pack_package(dir / "p.vscene", dir / "p.vscz");
   unpack_package(dir / "p.vscz", dir / "q.vscene");
-  EXPECT_EQ(read_text(dir / "p.vscene" / "manifest.json"), read_text(dir / "q.vscene" / "manifest.json"));
+  EXPECT_EQ(read_text(dir / "p.vscene" / "manifest.json"),
+            read_text(dir / "q.vscene" / "manifest.json"));
   const PackageSummary summary = summarize_package(dir / "p.vscz");
   EXPECT_EQ(summary.format, kPackageFormat);
   EXPECT_EQ(summary.version, kPackageVersion);
@@ -266,7 +296,8 @@ TEST(ScenarioJson, round_trips_without_meshes_and_names_bad_members) {
   EXPECT_EQ(back.active_deformations, original.active_deformations);
   nlohmann::json broken = json;
   broken["objects"][1]["body_kind"] = "jelly";
-  expect_error<ValidationError>([&] { scenario_from_json(broken, "m.json"); }, {"m.json", "/scenario/objects/1/body_kind"});
+  expect_error<ValidationError>([&] { scenario_from_json(broken, "m.json"); },
+                                {"m.json", "/scenario/objects/1/body_kind"});
 }
 
 }  // namespace

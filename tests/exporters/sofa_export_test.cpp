@@ -12,6 +12,7 @@
 #include "exporters/sofa_material.h"
 #include "importers/mesh_reader.h"
 #include "tests/exporters/export_fixtures.h"
+#include "tests/exporters/sofa_scene_reader.h"
 #include "tests/support/tet_block.h"
 
 namespace viscera::exporters {
@@ -98,16 +99,21 @@ TEST_F(SofaExport, the_tet_body_loads_its_mesh_fixes_its_base_and_maps_its_textu
   EXPECT_NE(child(visual, "BarycentricMapping"), nullptr);
 }
 
-TEST_F(SofaExport,
-       mass_spring_bodies_use_springs_fixtures_are_visual_only_and_connections_are_springs) {
+TEST_F(SofaExport, mass_spring_bodies_use_springs_fixtures_are_visual_only_and_connections_attach) {
   vtkXMLDataElement* twin = child(root_, "Node", "twin");
   ASSERT_NE(twin, nullptr);
   EXPECT_EQ(child(twin, "TetrahedronFEMForceField"), nullptr);
-  vtkXMLDataElement* springs = child(twin, "MeshSpringForceField");
-  ASSERT_NE(springs, nullptr);
-  const auto expected = sofa_springs(scenario().materials.at(scenario().objects[1].material),
-                                     scenario().objects[1].body);
-  EXPECT_DOUBLE_EQ(std::stod(springs->GetAttribute("tetrasStiffness")), expected.stiffness);
+  // The fixture's edges differ in share / length, so no single tetrahedraStiffness fits: the
+  // springs are listed one by one with the simulator's constants.
+  const testing::SofaSceneReader reader(scene_path_);
+  const auto built = reader.body_springs(*reader.body_node("twin"));
+  const auto expected = kismo_springs(scenario(), scenario().objects[1]);
+  ASSERT_EQ(built.size(), expected.size());
+  for (std::size_t i = 0; i < built.size(); ++i) {
+    EXPECT_EQ(built[i].a, expected[i].a);
+    EXPECT_DOUBLE_EQ(built[i].stiffness, expected[i].stiffness);
+    EXPECT_DOUBLE_EQ(built[i].rest_length, expected[i].rest_length);
+  }
 
   vtkXMLDataElement* plate = child(root_, "Node", "plate");
   ASSERT_NE(plate, nullptr);
@@ -126,6 +132,18 @@ TEST_F(SofaExport,
   EXPECT_NEAR(values[4],
               (scenario().objects[0].body.nodes[0] - scenario().objects[1].body.nodes[0]).norm(),
               1e-15);
+  // The twin's attached nodes 0 and 1 hang on their springs: never fixed as well.
+  for (const int n : reader.fixed(*reader.body_node("twin")))
+    EXPECT_GT(n, 1);
+}
+
+TEST(SofaMaterial, one_tetrahedra_stiffness_is_written_only_when_it_fits_every_edge) {
+  // MeshSpringForceField gives each edge S / l0: edges with equal k·l0 share one S.
+  std::vector<SofaSpring> springs = {{0, 1, 100.0, 0.0, 0.01}, {1, 2, 50.0, 0.0, 0.02}};
+  ASSERT_TRUE(uniform_tetrahedra_stiffness(springs, 1e-3).has_value());
+  EXPECT_NEAR(*uniform_tetrahedra_stiffness(springs, 1e-3), 1.0, 1e-12);
+  springs[1].stiffness = 60.0;
+  EXPECT_FALSE(uniform_tetrahedra_stiffness(springs, 1e-3).has_value());
 }
 
 TEST(SofaMaterial, a_pure_spring_net_maps_to_the_cauchy_poisson_ratio) {

@@ -58,9 +58,12 @@ TEST(StagedExport, a_missing_map_or_folder_leaves_nothing_and_an_older_export_is
     EXPECT_TRUE(testing::message_has(e.what(), {"object ball", "texture map", "missing"}))
         << e.what();
   }
+  // A file where a folder of the output path should be: an error, nothing written.
+  std::ofstream(dir / "no") << "a file";
   EXPECT_THROW(export_scenario(scenario, ExportFormat::Glb, dir / "no" / "p.glb",
                                testing::export_textures_fixture()),
                core::OutputError);
+  fs::remove(dir / "no");
   EXPECT_TRUE(fs::is_empty(dir));
 
   // An older multiblock with an extra piece is replaced by the new one, piece folder included.
@@ -79,6 +82,20 @@ TEST(StagedExport, a_missing_map_or_folder_leaves_nothing_and_an_older_export_is
     EXPECT_EQ(entry.path().filename().string().rfind('.', 0), std::string::npos)
         << "left behind: " << entry.path();
   }
+}
+
+TEST(StagedExport, missing_output_folders_are_made_and_removed_again_when_the_export_fails) {
+  const fs::path dir = testing::scratch_dir();
+  export_scenario(testing::export_scenario_fixture(), ExportFormat::Glb,
+                  dir / "new" / "deeper" / "p.glb", testing::export_textures_fixture());
+  EXPECT_TRUE(fs::is_regular_file(dir / "new" / "deeper" / "p.glb"));
+  // The SOFA writer refuses a urethra lattice while writing: the folders it made go too.
+  core::Scenario scenario = testing::export_scenario_fixture();
+  scenario.objects[2].body_kind = core::BodyKind::UrethraLattice;
+  EXPECT_THROW(export_scenario(scenario, ExportFormat::Sofa, dir / "made" / "for" / "p.scn",
+                               testing::export_textures_fixture()),
+               core::UsageError);
+  EXPECT_FALSE(fs::exists(dir / "made"));
 }
 
 }  // namespace

@@ -23,20 +23,6 @@ fs::path nibabel_file(const std::string& name) {
   return path;
 }
 
-fs::path cgal_images(const fs::path& scratch) {
-  const fs::path archive = "/usr/share/doc/libcgal-dev/data.tar.gz";
-  if (!fs::exists(archive))
-    ADD_FAILURE() << archive << " is missing: install libcgal-demo (dev.sh)";
-  const fs::path images = scratch / "cgal" / "data" / "images";
-  if (!fs::exists(images)) {
-    fs::create_directories(scratch / "cgal");
-    const std::string command = "tar -xzf " + shell_quote(archive.string()) + " -C " +
-                                shell_quote((scratch / "cgal").string()) + " data/images";
-    EXPECT_EQ(std::system(command.c_str()), 0) << command;
-  }
-  return images;
-}
-
 nlohmann::json real_volume_headers(const fs::path& scratch) {
   const fs::path script = fs::path(VISCERA_SOURCE_DIR) / "tests/importers/volume_headers.py";
   const fs::path output = scratch / "headers.json";

@@ -6,6 +6,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "tests/support/test_paths.h"
+
 namespace viscera::testing {
 
 /// pydicom's test file `name` (e.g. "CT_small.dcm") or folder.
@@ -13,10 +15,6 @@ std::filesystem::path pydicom_file(const std::string& name);
 
 /// nibabel's test data file `name` (e.g. "anatomical.nii").
 std::filesystem::path nibabel_file(const std::string& name);
-
-/// CGAL's image data (data/images of /usr/share/doc/libcgal-dev/data.tar.gz), extracted into
-/// the running test's scratch folder.
-std::filesystem::path cgal_images(const std::filesystem::path& scratch);
 
 /// The header facts of every real file (volume_headers.py run with /usr/bin/python3).
 nlohmann::json real_volume_headers(const std::filesystem::path& scratch);

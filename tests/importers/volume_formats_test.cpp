@@ -45,6 +45,25 @@ TEST(VolumeFormats, nrrd_space_directions_in_ras_become_lps_metres) {
   EXPECT_EQ(v.value(v.linear_index(3, 2, 1)), 23.0);
 }
 
+TEST(VolumeFormats, a_nrrd_byte_skip_that_is_not_a_number_is_a_typed_error_naming_the_field) {
+  // std::stol's std::invalid_argument used to escape the reader untyped.
+  const fs::path dir = testing::scratch_dir();
+  for (const char* skip : {"lots", "12abc", "99999999999999999999999"}) {
+    std::ofstream(dir / "skip.nrrd", std::ios::binary)
+        << "NRRD0004\ntype: short\ndimension: 3\nsizes: 4 3 2\nendian: little\nencoding: raw\n"
+        << "byte skip: " << skip << "\n\n"
+        << ramp_bytes();
+    try {
+      read_volume(dir / "skip.nrrd");
+      ADD_FAILURE() << "no error for byte skip " << skip;
+    } catch (const core::InputError& e) {
+      const std::string message = e.what();
+      EXPECT_NE(message.find("skip.nrrd"), std::string::npos) << message;
+      EXPECT_NE(message.find(std::string("byte skip: ") + skip), std::string::npos) << message;
+    }
+  }
+}
+
 TEST(VolumeFormats, nrrd_gzip_data_reads_and_a_truncated_nrrd_is_refused) {
   const fs::path dir = testing::scratch_dir();
   std::ofstream(dir / "ramp.raw", std::ios::binary) << ramp_bytes();

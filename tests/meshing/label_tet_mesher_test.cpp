@@ -39,6 +39,7 @@ TEST(LabelTetMesher, spheroid_tets_fill_the_surface_volume_within_one_percent) {
   const double a = 0.018, c = 0.027;
   const auto labels = testing::spheroid_phantom(a, c, frame);
   importers::LabelBodyOptions options;
+  options.visual_surface = importers::VisualSurfaceSource::LabelContour;
   options.tets.cell_size = 0.003;
   // A quarter voxel: the inscribed facets of a radius of 18 voxels then lose 0.6 % of the volume
   // (1.4 % at the default half voxel).
@@ -62,6 +63,7 @@ TEST(LabelTetMesher, torus_tets_fill_the_surface_volume_within_one_percent) {
   const double R = 0.022, r = 0.009;
   const auto labels = testing::torus_phantom(R, r, frame);
   importers::LabelBodyOptions options;
+  options.visual_surface = importers::VisualSurfaceSource::LabelContour;
   options.tets.cell_size = 0.003;
   options.tets.facet_distance = 0.00025;
   const auto made = importers::mesh_label_body(labels, options, "torus.vti");
@@ -146,6 +148,7 @@ TEST(LabelTetMesher, target_tet_count_sets_the_cell_size) {
 TEST(LabelTetMesher, embedded_surface_vertices_rebuild_from_their_weights) {
   const auto labels = testing::torus_phantom(0.02, 0.008, testing::PhantomFrame::rotated(70));
   importers::LabelBodyOptions options;
+  options.visual_surface = importers::VisualSurfaceSource::LabelContour;
   options.tets.cell_size = 0.003;
   options.surface.target_triangles = 4000;
   const auto made = importers::mesh_label_body(labels, options, "torus.vti");

@@ -10,7 +10,10 @@ namespace viscera::sim {
 namespace {
 
 TEST(KismoMassSpring, cubic_spring_forces_are_the_negative_energy_gradient) {
-  CubicSprings springs{{{0, 1}, {1, 2}, {0, 2}}, {0.01, 0.012, 0.015}, {{{2.0, 30.0, 400.0}}, {{1.0, 0.0, 50.0}}, {{3.0, -5.0, 0.0}}}, {}};
+  CubicSprings springs{{{0, 1}, {1, 2}, {0, 2}},
+                       {0.01, 0.012, 0.015},
+                       {{{2.0, 30.0, 400.0}}, {{1.0, 0.0, 50.0}}, {{3.0, -5.0, 0.0}}},
+                       {}};
   std::vector<core::Vec3> x = {{0, 0, 0}, {0.0125, 0.001, 0.0}, {0.003, 0.009, 0.002}};
   std::vector<core::Vec3> f(3, core::Vec3::Zero());
   add_cubic_spring_forces(x, springs, f);
@@ -21,7 +24,9 @@ TEST(KismoMassSpring, cubic_spring_forces_are_the_negative_energy_gradient) {
       plus[i][c] += h;
       minus[i][c] -= h;
       std::vector<core::Vec3> scratch(3, core::Vec3::Zero());
-      const double gradient = (add_cubic_spring_forces(plus, springs, scratch) - add_cubic_spring_forces(minus, springs, scratch)) / (2 * h);
+      const double gradient = (add_cubic_spring_forces(plus, springs, scratch) -
+                               add_cubic_spring_forces(minus, springs, scratch)) /
+                              (2 * h);
       EXPECT_NEAR(f[i][c], -gradient, 1e-5 * (1.0 + std::abs(gradient))) << i << " " << c;
     }
   EXPECT_LT((f[0] + f[1] + f[2]).norm(), 1e-12);  // internal forces: no net force

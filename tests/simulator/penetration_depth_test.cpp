@@ -18,7 +18,8 @@ std::vector<int> colliding_points(const core::TetMesh& a, const core::TetMesh& b
   SpatialHash hash(mean_edge_length(bodies), 1009);
   std::vector<int> points;
   for (const auto& c : hash.detect(bodies, false)) {
-    if (c.vertex_body == 0 && (points.empty() || points.back() != c.vertex)) points.push_back(c.vertex);
+    if (c.vertex_body == 0 && (points.empty() || points.back() != c.vertex))
+      points.push_back(c.vertex);
   }
   return points;
 }
@@ -27,7 +28,8 @@ VertexAdjacency adjacency_of(const core::TetMesh& mesh) {
   std::vector<std::array<int, 2>> edges;
   for (const auto& t : mesh.tets)
     for (int i = 0; i < 4; ++i)
-      for (int j = i + 1; j < 4; ++j) edges.push_back({std::min(t[i], t[j]), std::max(t[i], t[j])});
+      for (int j = i + 1; j < 4; ++j)
+        edges.push_back({std::min(t[i], t[j]), std::max(t[i], t[j])});
   std::sort(edges.begin(), edges.end());
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
   return VertexAdjacency::from_edges(mesh.nodes.size(), edges);
@@ -36,10 +38,12 @@ VertexAdjacency adjacency_of(const core::TetMesh& mesh) {
 TEST(PenetrationDepth, plane_gives_exact_depth_and_normal_and_propagates_inward) {
   // Slab b fills z ∈ [−0.05, 0]; block a's two lowest node layers sit 3 mm and 13 mm deep.
   core::TetMesh b = viscera::testing::tet_block(8, 8, 5, 0.01);
-  for (auto& n : b.nodes) n += core::Vec3(-0.04, -0.04, -0.05);
+  for (auto& n : b.nodes)
+    n += core::Vec3(-0.04, -0.04, -0.05);
   core::TetMesh a = viscera::testing::tet_block(2, 2, 3, 0.01);
   const double depth = 0.003;
-  for (auto& n : a.nodes) n += core::Vec3(-0.0101, -0.0099, -0.01 - depth);
+  for (auto& n : a.nodes)
+    n += core::Vec3(-0.0101, -0.0099, -0.01 - depth);
   const auto colliding = colliding_points(a, b);
   ASSERT_EQ(colliding.size(), 18u);  // two layers of 3 × 3 nodes
   const PenetratedSurface surface{b.nodes, b.surface_faces};
@@ -63,10 +67,12 @@ TEST(PenetrationDepth, sphere_depth_matches_the_distance_to_its_surface) {
   const double radius = 0.05;
   const core::TetMesh b = core::mesh_closed_surface(core::make_icosphere(radius, 4));
   core::TetMesh a = viscera::testing::tet_block(3, 3, 3, 0.004);
-  for (auto& n : a.nodes) n += core::Vec3(-0.006, -0.006, radius - 0.006);
+  for (auto& n : a.nodes)
+    n += core::Vec3(-0.006, -0.006, radius - 0.006);
   const auto colliding = colliding_points(a, b);
   ASSERT_FALSE(colliding.empty());
-  const auto result = penetration_depths(a.nodes, adjacency_of(a), colliding, {b.nodes, b.surface_faces});
+  const auto result =
+      penetration_depths(a.nodes, adjacency_of(a), colliding, {b.nodes, b.surface_faces});
   ASSERT_EQ(result.size(), colliding.size());
   for (const auto& p : result) {
     const core::Vec3& x = a.nodes[p.point];

@@ -12,7 +12,8 @@ namespace viscera::sim {
 namespace {
 
 /// Every vertex–tet containment by testing all pairs.
-std::vector<VertexInTet> brute_force(std::span<const CollisionBodyView> bodies, bool self_collisions) {
+std::vector<VertexInTet> brute_force(std::span<const CollisionBodyView> bodies,
+                                     bool self_collisions) {
   std::vector<VertexInTet> found;
   for (std::size_t vb = 0; vb < bodies.size(); ++vb)
     for (std::size_t v = 0; v < bodies[vb].positions.size(); ++v)
@@ -25,9 +26,11 @@ std::vector<VertexInTet> brute_force(std::span<const CollisionBodyView> bodies, 
             continue;
           }
           const auto& x = bodies[tb].positions;
-          const auto w = core::barycentric(bodies[vb].positions[v], x[tet[0]], x[tet[1]], x[tet[2]], x[tet[3]]);
+          const auto w = core::barycentric(bodies[vb].positions[v], x[tet[0]], x[tet[1]], x[tet[2]],
+                                           x[tet[3]]);
           if (w[0] >= 0 && w[1] >= 0 && w[2] >= 0 && w[3] >= 0) {
-            found.push_back({static_cast<int>(vb), static_cast<int>(v), static_cast<int>(tb), static_cast<int>(t), w});
+            found.push_back({static_cast<int>(vb), static_cast<int>(v), static_cast<int>(tb),
+                             static_cast<int>(t), w});
           }
         }
       }
@@ -38,7 +41,8 @@ TEST(SpatialHash, finds_exactly_the_pairs_of_a_brute_force_search_on_random_mesh
   for (std::uint64_t seed = 1; seed <= 4; ++seed) {
     core::TetMesh a = viscera::testing::tet_block(4, 4, 3, 0.01);
     core::TetMesh b = viscera::testing::tet_block(3, 4, 4, 0.01);
-    for (auto& n : b.nodes) n += core::Vec3(0.021, 0.004, 0.013);  // overlapping corner region
+    for (auto& n : b.nodes)
+      n += core::Vec3(0.021, 0.004, 0.013);  // overlapping corner region
     viscera::testing::jiggle(a.nodes, 0.004, seed);
     viscera::testing::jiggle(b.nodes, 0.004, seed + 100);  // large enough to fold tets: self hits
     const std::vector<CollisionBodyView> bodies = {{a.nodes, a.tets}, {b.nodes, b.tets}};
@@ -49,8 +53,10 @@ TEST(SpatialHash, finds_exactly_the_pairs_of_a_brute_force_search_on_random_mesh
       ASSERT_EQ(found.size(), expected.size()) << "seed " << seed << " self " << self;
       for (std::size_t i = 0; i < found.size(); ++i) {
         EXPECT_EQ(std::tie(found[i].vertex_body, found[i].vertex, found[i].tet_body, found[i].tet),
-                  std::tie(expected[i].vertex_body, expected[i].vertex, expected[i].tet_body, expected[i].tet));
-        for (int k = 0; k < 4; ++k) EXPECT_NEAR(found[i].barycentric[k], expected[i].barycentric[k], 1e-12);
+                  std::tie(expected[i].vertex_body, expected[i].vertex, expected[i].tet_body,
+                           expected[i].tet));
+        for (int k = 0; k < 4; ++k)
+          EXPECT_NEAR(found[i].barycentric[k], expected[i].barycentric[k], 1e-12);
       }
       if (self) {
         EXPECT_GT(expected.size(), 0u);
@@ -71,7 +77,8 @@ TEST(SpatialHash, uses_the_primes_of_teschner_2003) {
 TEST(SpatialHash, separated_bodies_do_not_collide) {
   core::TetMesh a = viscera::testing::tet_block(3, 3, 3, 0.01);
   core::TetMesh b = viscera::testing::tet_block(3, 3, 3, 0.01);
-  for (auto& n : b.nodes) n.z() += 0.0301;
+  for (auto& n : b.nodes)
+    n.z() += 0.0301;
   const std::vector<CollisionBodyView> bodies = {{a.nodes, a.tets}, {b.nodes, b.tets}};
   SpatialHash hash(0.01, 101);
   EXPECT_TRUE(hash.detect(bodies, false).empty());

@@ -36,9 +36,12 @@ TEST(DevicePackets, damaged_packets_are_rejected) {
   bytes[40] ^= 0x10;  // a flipped bit in the position
   EXPECT_FALSE(decode_pose(bytes).has_value());
   const auto good = encode_pose(pose(1));
-  EXPECT_FALSE(decode_pose(std::span<const std::uint8_t>(good.data(), good.size() - 1)).has_value());
+  EXPECT_FALSE(
+      decode_pose(std::span<const std::uint8_t>(good.data(), good.size() - 1)).has_value());
   EXPECT_FALSE(decode_feedback(good).has_value());  // a pose is not a feedback packet
-  EXPECT_EQ(crc32(std::span<const std::uint8_t>(reinterpret_cast<const std::uint8_t*>("123456789"), 9)), 0xCBF43926U);
+  EXPECT_EQ(
+      crc32(std::span<const std::uint8_t>(reinterpret_cast<const std::uint8_t*>("123456789"), 9)),
+      0xCBF43926U);
 }
 
 TEST(UdpDeviceBridge, round_trips_on_loopback_dropping_malformed_and_late_packets) {
@@ -53,8 +56,10 @@ TEST(UdpDeviceBridge, round_trips_on_loopback_dropping_malformed_and_late_packet
   ASSERT_TRUE(device.send_raw(garbage));
   ASSERT_TRUE(device.send(pose(4)));
   std::optional<DevicePose> newest;
-  for (int attempt = 0; attempt < 50 && bridge.counters().accepted + bridge.counters().late +
-                                                bridge.counters().malformed < 5; ++attempt) {
+  for (int attempt = 0;
+       attempt < 50 &&
+       bridge.counters().accepted + bridge.counters().late + bridge.counters().malformed < 5;
+       ++attempt) {
     if (auto p = bridge.poll(20)) newest = p;
   }
   ASSERT_TRUE(newest.has_value());

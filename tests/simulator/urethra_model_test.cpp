@@ -11,7 +11,8 @@ namespace viscera::sim {
 namespace {
 
 /// The endoscope on the centre line at z, pointing along it, moving with `speed` m/s.
-EndoscopeState on_centre_line(const UrethraModel& model, double z, double speed = 0.0, double spin = 0.0) {
+EndoscopeState on_centre_line(const UrethraModel& model, double z, double speed = 0.0,
+                              double spin = 0.0) {
   EndoscopeState e;
   e.tip = model.centre_line(z);
   e.pitch = std::atan(2.0 * model.parameters().curvature * z);
@@ -29,9 +30,11 @@ TEST(UrethraModel, lattice_sits_on_the_parabola_and_widens_to_the_endoscope_behi
   const core::Vec3 shaft = model.tangent(0.06);
   for (const auto& s : sections) {
     if (s.centre.z() > 0.06) {
-      EXPECT_NEAR(s.centre.y(), p.curvature * s.centre.z() * s.centre.z(), 1e-15);  // on the parabola
+      EXPECT_NEAR(s.centre.y(), p.curvature * s.centre.z() * s.centre.z(),
+                  1e-15);  // on the parabola
     } else {
-      EXPECT_LT((s.centre - model.centre_line(0.06)).cross(shaft).norm(), 1e-12);  // on the straight shaft
+      EXPECT_LT((s.centre - model.centre_line(0.06)).cross(shaft).norm(),
+                1e-12);  // on the straight shaft
     }
     ASSERT_EQ(s.points.size(), static_cast<std::size_t>(p.points_per_section));
     for (const auto& q : s.points) {
@@ -65,7 +68,8 @@ TEST(UrethraModel, coulomb_and_viscous_friction_oppose_insertion_and_grow_with_d
   EXPECT_NEAR(deep.viscous_friction, -p.viscous_friction * 0.01, 1e-15);
   EXPECT_LT(deep.wall_resistance, 0.0);  // the narrowing wall ahead pushes back
   // Withdrawing reverses the friction.
-  EXPECT_NEAR(model.feedback(on_centre_line(model, 0.12, -0.01)).coulomb_friction, -deep.coulomb_friction, 1e-12);
+  EXPECT_NEAR(model.feedback(on_centre_line(model, 0.12, -0.01)).coulomb_friction,
+              -deep.coulomb_friction, 1e-12);
   // Along the axis: F_re has no x component and points back along the shaft.
   EXPECT_EQ(deep.force.x(), 0.0);
   EXPECT_LT(deep.force.z(), 0.0);
@@ -95,7 +99,10 @@ TEST(UrethraModel, spinning_the_scope_meets_coulomb_and_viscous_torque) {
   const auto& p = model.parameters();
   const UrethraFeedback spin = model.feedback(on_centre_line(model, 0.1, 0.0, 2.0));
   // Pure rotation: T1 = −μ N r, T2 = −b_ω ω (eq. 12–13).
-  EXPECT_NEAR(spin.torque_z, -p.friction * spin.normal_force * p.endoscope_radius - p.viscous_torque_friction * 2.0, 1e-15);
+  EXPECT_NEAR(
+      spin.torque_z,
+      -p.friction * spin.normal_force * p.endoscope_radius - p.viscous_torque_friction * 2.0,
+      1e-15);
 }
 
 TEST(UrethraModel, warns_near_and_beyond_the_tissue_break_limits) {
@@ -108,7 +115,8 @@ TEST(UrethraModel, warns_near_and_beyond_the_tissue_break_limits) {
   const UrethraFeedback hard = model.feedback(on_centre_line(model, 0.15, 0.5));
   EXPECT_GE(hard.bar_force, 1.0);
   ASSERT_FALSE(hard.warnings.empty());
-  EXPECT_NE(hard.warnings.front().find("axial force exceeds the tissue-break limit"), std::string::npos);
+  EXPECT_NE(hard.warnings.front().find("axial force exceeds the tissue-break limit"),
+            std::string::npos);
   EXPECT_THROW(UrethraModel(UrethraParameters{.radius = -1.0}), core::UsageError);
 }
 
@@ -127,7 +135,8 @@ TEST(UrethraModel, bezier_surface_passes_through_the_lattice_and_faces_outward) 
   // Row 2·s, column 3·i is lattice point i of section s.
   for (std::size_t s = 0; s < sections.size(); ++s)
     for (std::size_t i = 0; i < sections[s].points.size(); ++i) {
-      EXPECT_TRUE(wall.vertices[(2 * s) * columns + 3 * i].isApprox(sections[s].points[i], 1e-12)) << s << " " << i;
+      EXPECT_TRUE(wall.vertices[(2 * s) * columns + 3 * i].isApprox(sections[s].points[i], 1e-12))
+          << s << " " << i;
     }
   // Outward: at the lattice rows the normals point away from the section centre.
   for (std::size_t s = 0; s < sections.size(); ++s)
@@ -149,7 +158,7 @@ TEST(UrethraModel, an_endoscope_off_the_centre_line_drags_the_tube_but_not_the_b
   const auto& p = model.parameters();
   EndoscopeState scope;
   scope.tip = model.centre_line(0.07) + core::Vec3(0.0, 0.004, 0.0);  // 4 mm above the centre line
-  scope.pitch = std::atan(2.0 * p.curvature * 0.07) + 0.15;             // and tilted up
+  scope.pitch = std::atan(2.0 * p.curvature * 0.07) + 0.15;           // and tilted up
   const auto sections = model.lattice(scope);
   const core::Vec3 axis(0.0, std::sin(scope.pitch), std::cos(scope.pitch));
   for (const auto& s : sections) {
@@ -158,14 +167,15 @@ TEST(UrethraModel, an_endoscope_off_the_centre_line_drags_the_tube_but_not_the_b
       EXPECT_LT((s.centre - scope.tip).cross(axis).norm(), 1e-12);
       EXPECT_TRUE(s.normal.isApprox(axis, 1e-12));
     }
-    for (const auto& q : s.points) EXPECT_NEAR((q - s.centre).dot(s.normal), 0.0, 1e-12);
+    for (const auto& q : s.points)
+      EXPECT_NEAR((q - s.centre).dot(s.normal), 0.0, 1e-12);
   }
   // The bladder entrance stays put; the first section beyond the moving deformation carries
   // nearly the whole offset.
   EXPECT_TRUE(sections.back().centre.isApprox(model.centre_line(p.length), 1e-12));
-  const auto first_ahead = std::find_if(sections.begin(), sections.end(), [&](const UrethraSection& s) {
-    return s.centre.z() >= 0.07 + p.transition_length;
-  });
+  const auto first_ahead = std::find_if(
+      sections.begin(), sections.end(),
+      [&](const UrethraSection& s) { return s.centre.z() >= 0.07 + p.transition_length; });
   ASSERT_NE(first_ahead, sections.end());
   EXPECT_GT(first_ahead->centre.y() - model.centre_line(first_ahead->centre.z()).y(), 0.003);
   // On the centre line the general lattice is the plain one.
@@ -175,7 +185,8 @@ TEST(UrethraModel, an_endoscope_off_the_centre_line_drags_the_tube_but_not_the_b
   const auto plain = model.lattice(0.07);
   const auto general = model.lattice(on_line);
   ASSERT_EQ(plain.size(), general.size());
-  for (std::size_t i = 0; i < plain.size(); ++i) EXPECT_TRUE(plain[i].centre.isApprox(general[i].centre, 1e-12));
+  for (std::size_t i = 0; i < plain.size(); ++i)
+    EXPECT_TRUE(plain[i].centre.isApprox(general[i].centre, 1e-12));
 }
 
 }  // namespace

@@ -1,14 +1,22 @@
-// `viscera generate` as a user runs it (issue 6 §4–5): a batch of validated hysteroscopy
-// patients with its index; the same batch under `mpirun -n 2` and as shards plus --merge, equal
-// to the single-process run byte for byte.
+// `viscera generate` as a user runs it (issue 6 §4–5, issue 20 §4): a batch of validated
+// hysteroscopy patients with its index; the same batch under `mpirun -n 2` (patients handed out
+// dynamically), as shards plus --merge and killed half way then restarted, equal to the
+// single-process run byte for byte.
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <thread>
 
 #include "tests/support/command_runner.h"
 #include "tests/support/test_paths.h"
@@ -160,6 +168,112 @@ TEST(GenerateCommand, shard_runs_and_merge_equal_the_single_process_run_byte_for
       run_program("viscera", "generate --merge " + shell_quote((dir / "sharded").string()), dir);
   ASSERT_EQ(merged.exit_code, 0) << merged.err;
   expect_same_files(reference, dir / "sharded");
+}
+
+/// Journal entries (finished patients) of an interrupted batch in `folder`.
+std::vector<fs::path> journal_entries(const fs::path& folder) {
+  std::vector<fs::path> entries;
+  std::error_code missing;
+  for (const auto& e : fs::directory_iterator(folder / ".generate-journal", missing)) {
+    const std::string name = e.path().filename().string();
+    if (name.rfind("patient-", 0) == 0 && e.path().extension() == ".json")
+      entries.push_back(e.path());
+  }
+  return entries;
+}
+
+/// Inode of `path`: a package generated again is a new folder moved into place.
+ino_t inode_of(const fs::path& path) {
+  struct stat status {};
+  return ::stat(path.c_str(), &status) == 0 ? status.st_ino : 0;
+}
+
+TEST(GenerateCommand, batch_killed_half_way_resumes_without_redoing_written_patients) {
+  const fs::path reference = reference_batch(6, 1);
+  const fs::path dir = testing::scratch_dir();
+  const fs::path batch = dir / "batch";
+  // The real program as a child of this test, killed (SIGKILL: no clean-up at all) once two
+  // patients are journalled.
+  const std::string program = (fs::path(VISCERA_BINARY_DIR) / "bin" / "viscera").string();
+  std::vector<std::string> words = {program,   "generate",    "--template", "hysteroscopy",
+                                    "--count", "6",           "--seed",     "1",
+                                    "-o",      batch.string()};
+  std::vector<char*> argv;
+  for (auto& w : words)
+    argv.push_back(w.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t quiet;
+  posix_spawn_file_actions_init(&quiet);
+  posix_spawn_file_actions_addopen(&quiet, 1, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&quiet, 2, "/dev/null", O_WRONLY, 0);
+  pid_t child = 0;
+  ASSERT_EQ(posix_spawn(&child, program.c_str(), &quiet, nullptr, argv.data(), environ), 0);
+  posix_spawn_file_actions_destroy(&quiet);
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::minutes(10);
+  int status = 0;
+  bool exited = false;
+  while (journal_entries(batch).size() < 2 && std::chrono::steady_clock::now() < give_up) {
+    if (::waitpid(child, &status, WNOHANG) == child) {
+      exited = true;
+      break;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  if (!exited) {
+    ::kill(child, SIGKILL);
+    ::waitpid(child, &status, 0);
+  }
+  ASSERT_FALSE(exited) << "the batch ended before it could be interrupted";
+  ASSERT_FALSE(fs::exists(batch / "index.json"));
+  const auto finished = journal_entries(batch);
+  ASSERT_GE(finished.size(), 2u);
+  ASSERT_LT(finished.size(), 6u);
+  std::map<std::string, ino_t> written;
+  for (const auto& entry : finished) {
+    const auto record = nlohmann::json::parse(viscera::testing::file_bytes(entry)).at("record");
+    const std::string package = record.at("package").get<std::string>();
+    written[package] = inode_of(batch / package);
+  }
+  // A finished patient whose package was damaged afterwards is generated again.
+  const std::string damaged = written.begin()->first;
+  {
+    std::ofstream append(batch / damaged / "manifest.json", std::ios::app);
+    append << " ";
+  }
+  // Restarted with the same arguments it finishes, keeping the other finished patients.
+  const auto resumed = run_program("viscera", batch_arguments(6, 1, batch) + " --json", dir);
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  const auto summary = nlohmann::json::parse(resumed.out);
+  EXPECT_EQ(summary.at("kept").get<std::size_t>(), written.size() - 1);
+  EXPECT_EQ(summary.at("generated").get<std::size_t>(), 6 - (written.size() - 1));
+  for (const auto& [package, inode] : written) {
+    if (package == damaged) {
+      EXPECT_NE(inode_of(batch / package), inode) << package << " was kept though damaged";
+    } else {
+      EXPECT_EQ(inode_of(batch / package), inode) << package << " was generated again";
+    }
+  }
+  // No journal, no staging leftovers: the same bytes as an uninterrupted run.
+  expect_same_files(reference, batch);
+}
+
+TEST(GenerateCommand, an_unfinished_batch_is_not_resumed_with_other_arguments) {
+  const fs::path dir = testing::scratch_dir();
+  const fs::path batch = dir / "b";
+  // A shard leaves its journal until --merge: the folder holds an unfinished batch.
+  ASSERT_EQ(run_program("viscera",
+                        "generate --template ball --count 2 --seed 1 -o " +
+                            shell_quote(batch.string()) + " --shard 0/2",
+                        dir)
+                .exit_code,
+            0);
+  const auto other = run_program(
+      "viscera", "generate --template ball --count 2 --seed 2 -o " + shell_quote(batch.string()),
+      dir);
+  EXPECT_EQ(other.exit_code, 2);
+  EXPECT_NE(other.err.find("unfinished batch"), std::string::npos) << other.err;
+  EXPECT_NE(other.err.find(batch.string()), std::string::npos) << other.err;
+  EXPECT_FALSE(fs::exists(batch / "index.json"));
 }
 
 TEST(GenerateCommand, merge_refuses_a_missing_shard_and_bad_options_are_usage_errors) {

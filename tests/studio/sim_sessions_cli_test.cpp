@@ -38,9 +38,9 @@ double number(const nlohmann::json& metrics, const char* key) {
 }
 
 /// The metrics where less is better, and those where more is.
-constexpr const char* kLower[] = {"duration",     "path_length", "contacts",
-                                  "contact_time", "max_force",   "mean_contact_force",
-                                  "distension_fluid_used"};
+constexpr const char* kLower[] = {
+    "duration",           "path_length",          "contacts", "contact_time", "max_force",
+    "mean_contact_force", "distension_fluid_used"};
 constexpr const char* kHigher[] = {"economy_of_movement", "surface_seen", "view_quality",
                                    "tasks_completed"};
 

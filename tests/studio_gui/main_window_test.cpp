@@ -345,6 +345,7 @@ class MainWindowTest : public QObject {
 
   void screenshotShowsTheTexturedScene() {
     studio::MainWindow window(options());
+    window.resize(1280, 800);  // the framing the shares below were measured at
     window.show();
     QVERIFY(QTest::qWaitForWindowExposed(&window));
     QVERIFY(window.open_package(textured_package_));
@@ -378,7 +379,9 @@ class MainWindowTest : public QObject {
     const QString path = QString::fromStdString((out_dir_ / "studio.png").string());
     QVERIFY(shot.save(path));
     const double shot_tissue = tissue_share(shot);
-    QVERIFY2(shot_tissue > 0.015, qPrintable(QString("tissue share %1").arg(shot_tissue)));
+    // The window holds more docks since issue 23 (Display), so the scene is a smaller share of
+    // it than of the 3D view; still well above a blank or untextured window.
+    QVERIFY2(shot_tissue > 0.01, qPrintable(QString("tissue share %1").arg(shot_tissue)));
     qInfo("screenshot: %s", qPrintable(path));
   }
 };

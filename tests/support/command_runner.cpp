@@ -36,8 +36,8 @@ CommandResult run_program(const std::string& program, const std::string& argumen
   const auto err_path = work_dir / "command.stderr";
   const std::filesystem::path binary = std::filesystem::path(VISCERA_BINARY_DIR) / "bin" / program;
   const std::string command = shell_quote(binary.string()) + " " + arguments + " >" +
-                              shell_quote(out_path.string()) + " 2>" + shell_quote(err_path.string()) +
-                              " </dev/null";
+                              shell_quote(out_path.string()) + " 2>" +
+                              shell_quote(err_path.string()) + " </dev/null";
   const int status = std::system(command.c_str());
   CommandResult result;
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

@@ -6,6 +6,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "tests/support/command_runner.h"
+
 namespace viscera::testing {
 
 std::filesystem::path scratch_dir() {
@@ -30,6 +32,21 @@ std::string file_bytes(const std::filesystem::path& path) {
   std::ostringstream bytes;
   bytes << in.rdbuf();
   return bytes.str();
+}
+
+std::filesystem::path cgal_images(const std::filesystem::path& scratch) {
+  namespace fs = std::filesystem;
+  const fs::path archive = "/usr/share/doc/libcgal-dev/data.tar.gz";
+  if (!fs::exists(archive))
+    ADD_FAILURE() << archive << " is missing: install libcgal-demo (dev.sh)";
+  const fs::path images = scratch / "cgal" / "data" / "images";
+  if (!fs::exists(images)) {
+    fs::create_directories(scratch / "cgal");
+    const std::string command = "tar -xzf " + shell_quote(archive.string()) + " -C " +
+                                shell_quote((scratch / "cgal").string()) + " data/images";
+    EXPECT_EQ(std::system(command.c_str()), 0) << command;
+  }
+  return images;
 }
 
 }  // namespace viscera::testing

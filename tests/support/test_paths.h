@@ -16,4 +16,8 @@ std::filesystem::path source_dir();
 /// The whole content of a file as bytes (empty when it cannot be opened).
 std::string file_bytes(const std::filesystem::path& path);
 
+/// CGAL's image data (data/images of /usr/share/doc/libcgal-dev/data.tar.gz, Debian
+/// libcgal-demo), extracted into `scratch` once.
+std::filesystem::path cgal_images(const std::filesystem::path& scratch);
+
 }  // namespace viscera::testing

@@ -2,7 +2,8 @@
 /// main() plumbing shared by the Viscera programs (`viscera`, `viscera-sim`): CLI11 parsing
 /// with the exit codes of DESIGN.md §9 — 0 success (and --help, --version), 1 internal error,
 /// 2 usage, 3 unreadable or invalid input, 4 validation failed — and one line on error.
-/// Header-only, used by both programs' main(); libraries never include it.
+/// Header-only, used by both programs' main(); libraries never include it. It lives in core so
+/// that neither program reaches into the other's module (docs/architecture.md, module graph).
 
 #include <CLI/CLI.hpp>
 #include <iostream>
@@ -19,7 +20,8 @@ namespace viscera::cli {
 inline void add_common_options(CLI::App& app) {
   app.set_version_flag("--version", core::viscera_version());
   auto level = std::make_shared<std::string>("warn");
-  app.add_option("--log-level", *level, "trace, debug, info, warn, error or off")->capture_default_str();
+  app.add_option("--log-level", *level, "trace, debug, info, warn, error or off")
+      ->capture_default_str();
   app.parse_complete_callback([level] { core::set_log_level(*level); });
 }
 

@@ -1,0 +1,89 @@
+#include "importers/volume/gdcm_parse_guard.h"
+
+#include <fcntl.h>
+#include <gdcmReader.h>
+#include <gdcmTrace.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdint>
+#include <cstring>
+
+#include "core/error.h"
+
+namespace viscera::importers::detail {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// The child's side: announces each file's index on `out` before parsing it, then -1 when all
+/// are done, and leaves with _exit so nothing of the parent's state (atexit handlers, buffered
+/// streams) runs twice.
+[[noreturn]] void parse_in_child(const std::vector<fs::path>& files, std::size_t first, int out) {
+  gdcm::Trace::SetWarning(false);
+  gdcm::Trace::SetError(false);
+  gdcm::Trace::SetDebug(false);
+  // Assertion messages would reach the user's terminal: the parent reports instead.
+  if (const int null = ::open("/dev/null", O_WRONLY); null >= 0) ::dup2(null, 2);
+  for (std::size_t i = first; i < files.size(); ++i) {
+    const auto index = static_cast<std::int64_t>(i);
+    if (::write(out, &index, sizeof index) != sizeof index) ::_exit(2);
+    gdcm::Reader reader;
+    reader.SetFileName(files[i].string().c_str());
+    reader.Read();
+  }
+  const std::int64_t done = -1;
+  const bool written = ::write(out, &done, sizeof done) == sizeof done;
+  ::_exit(written ? 0 : 2);
+}
+
+/// Reads the child's announcements until end of file; returns the last index announced, or -1
+/// when the child finished (announced -1) or announced nothing.
+std::int64_t last_announced(int in) {
+  std::int64_t last = -1, value = 0;
+  for (;;) {
+    const ssize_t got = ::read(in, &value, sizeof value);
+    if (got == sizeof value) {
+      last = value;
+      continue;
+    }
+    if (got < 0 && errno == EINTR) continue;
+    return last;
+  }
+}
+
+}  // namespace
+
+std::vector<bool> gdcm_parses_without_abort(const std::vector<fs::path>& files) {
+  std::vector<bool> survives(files.size(), true);
+  std::size_t first = 0;
+  while (first < files.size()) {
+    int channel[2];
+    if (::pipe(channel) != 0) throw core::Error("cannot open a pipe to check DICOM files");
+    const pid_t child = ::fork();
+    if (child < 0) {
+      ::close(channel[0]);
+      ::close(channel[1]);
+      throw core::Error("cannot start a process to check DICOM files");
+    }
+    if (child == 0) {
+      ::close(channel[0]);
+      parse_in_child(files, first, channel[1]);
+    }
+    ::close(channel[1]);
+    const std::int64_t last = last_announced(channel[0]);
+    ::close(channel[0]);
+    int status = 0;
+    while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {
+    }
+    const bool finished = WIFEXITED(status) && WEXITSTATUS(status) == 0 && last == -1;
+    if (finished) break;
+    if (last < 0) throw core::Error("the process checking DICOM files failed to report");
+    survives[static_cast<std::size_t>(last)] = false;
+    first = static_cast<std::size_t>(last) + 1;
+  }
+  return survives;
+}
+
+}  // namespace viscera::importers::detail

@@ -1,0 +1,66 @@
+#pragma once
+/// A uniform grid over the triangles of a cut surface, for the two queries of the hybrid cut:
+/// where a tet edge crosses the surface, and how far a node lies from it (node snapping).
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "simulator/cutting/cut_surface.h"
+
+namespace viscera::sim::cutting {
+
+/// Where a segment a→b crosses the cut surface.
+struct SegmentCrossing {
+  double t = 0.0;  ///< parameter along a→b, in [0, 1]
+  /// +1 when the segment goes from the surface's "−" side to its "+" side, −1 otherwise.
+  int direction = 0;
+};
+
+/// The point of the surface nearest to a query point.
+struct NearestPoint {
+  double distance = 0.0;         ///< m
+  double signed_distance = 0.0;  ///< m, positive on the "+" side (the triangle's normal)
+  core::Vec3 point = core::Vec3::Zero();
+  core::Vec3 normal = core::Vec3::Zero();  ///< unit normal of the nearest triangle
+};
+
+class CutSurfaceIndex {
+ public:
+  /// cell_size in m (> 0); the surface is copied.
+  CutSurfaceIndex(CutSurface surface, double cell_size);
+
+  const CutSurface& surface() const { return surface_; }
+  core::BoundingBox bounds() const { return bounds_; }
+
+  /// The crossing of segment a→b with the surface when it crosses it an odd number of times
+  /// (coincident hits on shared triangle edges count once): the median hit. nullopt otherwise.
+  std::optional<SegmentCrossing> crossing(const core::Vec3& a, const core::Vec3& b) const;
+
+  /// The nearest surface point within `radius` m of p, or nullopt.
+  std::optional<NearestPoint> nearest(const core::Vec3& p, double radius) const;
+
+  /// True when a box (m) overlaps a grid cell holding a triangle.
+  bool may_touch(const core::BoundingBox& box) const;
+
+ private:
+  std::int64_t key(int i, int j, int k) const;
+  std::array<int, 3> cell_of(const core::Vec3& p) const;
+  template <typename Visit>
+  void for_triangles_in(const core::BoundingBox& box, Visit&& visit) const;
+
+  CutSurface surface_;
+  std::vector<core::Vec3> normals_;
+  double cell_ = 0.0;
+  core::BoundingBox bounds_;
+  core::Vec3 origin_ = core::Vec3::Zero();
+  std::array<int, 3> dims_{1, 1, 1};
+  std::vector<std::pair<std::int64_t, int>> cells_;  ///< sorted (cell key, triangle)
+  std::vector<int> first_;                    ///< per cell + 1: start of its entries in cells_
+  mutable std::vector<std::uint32_t> stamp_;  ///< per triangle, de-duplicates visits
+  mutable std::uint32_t query_ = 0;
+};
+
+}  // namespace viscera::sim::cutting

@@ -9,6 +9,7 @@
 
 #include "simulator/session/headless_session.h"
 #include "simulator/session/instrument_input.h"
+#include "templates/template_catalog.h"
 #include "tests/bench/session_scripts.h"
 
 namespace {

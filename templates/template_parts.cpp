@@ -149,10 +149,6 @@ void attach(core::Scenario& scenario, const std::string& host, const std::string
                            std::to_string(connection.node_pairs.size()) + " knot pairs within " +
                            std::to_string(within * 1000.0) + " mm");
   }
-  if (part_object->body.fixed.empty())
-    part_object->body.fixed.assign(part_object->body.nodes.size(), 0);
-  for (const auto& pair : connection.node_pairs)
-    part_object->body.fixed[static_cast<std::size_t>(pair[1])] = 1;
   scenario.connections.push_back(std::move(connection));
 }
 

@@ -42,8 +42,9 @@ std::size_t remove_boundary_slivers(core::TetMesh& body, std::size_t surface_nod
 
 /// Connects `part` to `host` (seed 001 §3.3: at the nearest knots): each of the part's body
 /// nodes in `part_nodes` (its base on the host) is paired with its nearest host knot within
-/// `within` m, and held fixed, so that the attachment holds in a runtime that does not yet
-/// apply connection springs. Throws core::InputError when fewer than 3 pairs are found (the
+/// `within` m. Nothing is pinned in world space: the simulator binds a pathology's paired nodes
+/// to the host tets that hold them at rest (barycentric attachments, `stiffness` N/m each), so
+/// the part moves with its host. Throws core::InputError when fewer than 3 pairs are found (the
 /// part does not touch its host).
 void attach(core::Scenario& scenario, const std::string& host, const std::string& part,
             const std::vector<int>& part_nodes, double within, double stiffness = 200.0);

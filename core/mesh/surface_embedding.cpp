@@ -30,7 +30,8 @@ class TetGrid {
     double extent_sum = 0.0;
     for (const auto& tet : body.tets) {
       BoundingBox tb;
-      for (const int n : tet) tb.add(body.nodes[n]);
+      for (const int n : tet)
+        tb.add(body.nodes[n]);
       extent_sum += tb.size().maxCoeff();
       box.add(tb.min);
       box.add(tb.max);
@@ -43,11 +44,13 @@ class TetGrid {
     cells_.resize(static_cast<std::size_t>(dims_[0]) * dims_[1] * dims_[2]);
     for (std::size_t t = 0; t < body.tets.size(); ++t) {
       BoundingBox tb;
-      for (const int n : body.tets[t]) tb.add(body.nodes[n]);
+      for (const int n : body.tets[t])
+        tb.add(body.nodes[n]);
       const auto lo = cell_of(tb.min), hi = cell_of(tb.max);
       for (int k = lo[2]; k <= hi[2]; ++k)
         for (int j = lo[1]; j <= hi[1]; ++j)
-          for (int i = lo[0]; i <= hi[0]; ++i) cells_[index(i, j, k)].push_back(static_cast<int>(t));
+          for (int i = lo[0]; i <= hi[0]; ++i)
+            cells_[index(i, j, k)].push_back(static_cast<int>(t));
     }
   }
 
@@ -68,7 +71,8 @@ class TetGrid {
     for (int k = std::max(0, c[2] - ring); k <= std::min(dims_[2] - 1, c[2] + ring); ++k)
       for (int j = std::max(0, c[1] - ring); j <= std::min(dims_[1] - 1, c[1] + ring); ++j)
         for (int i = std::max(0, c[0] - ring); i <= std::min(dims_[0] - 1, c[0] + ring); ++i)
-          for (const int t : cells_[index(i, j, k)]) visit(t);
+          for (const int t : cells_[index(i, j, k)])
+            visit(t);
   }
   int max_ring() const { return std::max({dims_[0], dims_[1], dims_[2]}); }
 
@@ -115,7 +119,7 @@ SurfaceEmbedding embed_points(const std::vector<Vec3>& points, const TetMesh& bo
 
 std::vector<Vec3> embedded_positions(const SurfaceEmbedding& embedding,
                                      const std::vector<Tetrahedron>& tets,
-                                     const std::vector<Vec3>& body_nodes) {
+                                     std::span<const Vec3> body_nodes) {
   std::vector<Vec3> out(embedding.tet.size());
   for (std::size_t v = 0; v < out.size(); ++v) {
     const auto& tet = tets[embedding.tet[v]];

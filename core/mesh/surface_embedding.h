@@ -3,6 +3,7 @@
 /// tetrahedron through barycentric weights, so a fine visual mesh rides on a coarse body.
 
 #include <array>
+#include <span>
 #include <vector>
 
 #include "core/mesh/tet_mesh.h"
@@ -31,6 +32,6 @@ SurfaceEmbedding embed_points(const std::vector<Vec3>& points, const TetMesh& bo
 /// Positions of the embedded points for the body's current node positions.
 std::vector<Vec3> embedded_positions(const SurfaceEmbedding& embedding,
                                      const std::vector<Tetrahedron>& tets,
-                                     const std::vector<Vec3>& body_nodes);
+                                     std::span<const Vec3> body_nodes);
 
 }  // namespace viscera::core

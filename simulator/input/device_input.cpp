@@ -53,7 +53,7 @@ void DeviceInput::after_step(const SessionRunner& runner) {
     tissue.steps = runner.world().steps();
     tissue.force = runner.instrument_force();
     tissue.in_contact = runner.tissue() != nullptr && runner.tissue()->in_contact();
-    const DeformableBody* body = runner.tissue() != nullptr ? runner.tissue()->body() : nullptr;
+    const BodyView* body = runner.tissue() != nullptr ? runner.tissue()->body() : nullptr;
     if (body != nullptr && !surface_.empty())
       surface_.gather(body->positions(), tissue.surface);
     else
@@ -75,7 +75,7 @@ void DeviceInput::after_step(const SessionRunner& runner) {
 
 void DeviceInput::start_realtime(const SessionRunner& runner) {
   if (loop_ != nullptr) return;
-  const DeformableBody* body = runner.tissue() != nullptr ? runner.tissue()->body() : nullptr;
+  const BodyView* body = runner.tissue() != nullptr ? runner.tissue()->body() : nullptr;
   surface_ = body != nullptr ? ContactSurface(body->surface_faces()) : ContactSurface();
   loop_ = std::make_unique<HapticDeviceLoop>(bridge_, surface_, runner.instrument_stiffness(),
                                              loop_options_);

@@ -18,9 +18,11 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "core/math_types.h"
+#include "core/scenario/scenario_parts.h"
 
 namespace viscera::sim {
 
@@ -41,10 +43,37 @@ struct CellConnection {
   int a = 0, b = 0;
   double rest_length = 0.0;      ///< m, grows with plastic flow
   double original_length = 0.0;  ///< m, at discovery: tearing is measured against it
-  double stiffness = 0.0;    ///< N/m (mean of the two cells' k_conn)
+  double stiffness = 0.0;        ///< N/m (mean of the two cells' k_conn)
   double yield_strain = 0.0;
   double tear_strain = 0.0;
 };
+
+/// The cell types of a scenario's cell tissue, in its order.
+std::vector<CellType> cell_types_of(const core::CellTissueSpec& spec);
+
+/// Neighbour discovery (seed 003 §V, "a fast configuration stage … establishes neighbour
+/// connections"): each cell picks its up to `max_neighbours` nearest cells within
+/// `neighbour_radius` m (ties by index); a connection exists when either side picked the other,
+/// with the cells' distance as rest and original length, the mean of their k_conn and the
+/// smaller of their yield and tear strains. Sorted by (a, b), a < b. Cells are binned in a grid
+/// of the radius, so discovery is linear in the cell count. Throws core::UsageError when
+/// `type_of` does not give every cell a type of `types`.
+std::vector<CellConnection> discover_cell_connections(std::span<const core::Vec3> positions,
+                                                      std::span<const CellType> types,
+                                                      std::span<const int> type_of,
+                                                      double neighbour_radius, int max_neighbours);
+
+/// Tearing, then plasticity, of `connections` at `positions` (seed 003 §V, "Future
+/// Development", implemented): every connection longer than (1 + tear_strain) × its original
+/// length breaks and is moved out of `connections` into the result (in order); every remaining
+/// one longer than (1 + yield_strain) × its rest length gets the rest length
+/// length / (1 + yield_strain), the stretch beyond the yield becoming permanent.
+std::vector<CellConnection> tear_and_yield(std::span<const core::Vec3> positions,
+                                           std::vector<CellConnection>& connections);
+
+/// Spring force in N on cell b of connection `c` at `positions` (−it on a): eq. 3,
+/// k_conn (|d| − l0) d̂ pulling b towards a when stretched.
+core::Vec3 connection_force(const CellConnection& c, std::span<const core::Vec3> positions);
 
 /// A sheet or volume of cell agents.
 class CellAgentTissue {
@@ -52,8 +81,9 @@ class CellAgentTissue {
   /// Cells at `positions` (also their homes) with `types[type_of[i]]`. Connections join each
   /// cell to its up to `max_neighbours` nearest cells within `neighbour_radius` m (seed 003:
   /// four in a sheet), made symmetric. `planar` keeps every cell in its z plane.
-  CellAgentTissue(std::vector<core::Vec3> positions, std::vector<CellType> types, std::vector<int> type_of,
-                  double neighbour_radius, int max_neighbours, bool planar);
+  CellAgentTissue(std::vector<core::Vec3> positions, std::vector<CellType> types,
+                  std::vector<int> type_of, double neighbour_radius, int max_neighbours,
+                  bool planar);
 
   /// One step of eq. 3–9 of `dt` s; then tearing and plasticity.
   void step(double dt);
@@ -69,7 +99,9 @@ class CellAgentTissue {
   int cut(const core::Vec3& a, const core::Vec3& b, const core::Vec3& c);
 
   /// Adds an external force in N to a cell for the next step.
-  void push(int cell, const core::Vec3& force) { pending_[static_cast<std::size_t>(cell)] += force; }
+  void push(int cell, const core::Vec3& force) {
+    pending_[static_cast<std::size_t>(cell)] += force;
+  }
 
   const std::vector<core::Vec3>& positions() const { return position_; }
   const std::vector<core::Vec3>& velocities() const { return velocity_; }
@@ -82,8 +114,6 @@ class CellAgentTissue {
   std::vector<core::Vec3> connection_forces() const;
 
  private:
-  void discover_neighbours(double radius, int max_neighbours);
-
   std::vector<CellType> types_;
   std::vector<int> type_of_;
   std::vector<core::Vec3> home_, position_, velocity_, pending_;

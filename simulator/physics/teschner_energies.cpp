@@ -1,8 +1,25 @@
 #include "simulator/physics/teschner_energies.h"
 
 #include <Eigen/Geometry>
+#include <cmath>
+#include <limits>
 
 namespace viscera::sim {
+
+CollapseBarrier collapse_barrier(double j) {
+  constexpr double start = kCollapseBarrierStart;
+  if (j >= start) return {};
+  CollapseBarrier b;
+  if (!(j > 0.0)) {
+    b.value = std::numeric_limits<double>::infinity();
+    j = start * 1e-3;
+  }
+  const double d = j - start, log = std::log(j / start);
+  if (j > 0.0 && b.value == 0.0) b.value = -d * d * log;
+  b.first = -(2.0 * d * log + d * d / j);
+  b.second = -(2.0 * log + 4.0 * d / j - d * d / (j * j));
+  return b;
+}
 
 double add_distance_forces(std::span<const Vec3> x, std::span<const Vec3> v,
                            const DistanceTerms& terms, std::span<Vec3> f) {
@@ -57,12 +74,13 @@ double add_volume_forces(std::span<const Vec3> x, const VolumeTerms& terms, std:
     const Vec3 gj = e2.cross(e3), gk = e3.cross(e1), gl = e1.cross(e2);
     const double inverse_rest6 = 1.0 / (6.0 * terms.rest_volume[t]);
     const double c = e1.dot(gj) * inverse_rest6 - 1.0;
-    const double scale = -terms.stiffness[t] * c * inverse_rest6;
+    const CollapseBarrier barrier = collapse_barrier(c + 1.0);
+    const double scale = -terms.stiffness[t] * (c + barrier.first) * inverse_rest6;
     f[j] += scale * gj;
     f[k] += scale * gk;
     f[l] += scale * gl;
     f[i] -= scale * (gj + gk + gl);
-    energy += 0.5 * terms.stiffness[t] * c * c;
+    energy += terms.stiffness[t] * (0.5 * c * c + barrier.value);
   }
   return energy;
 }
@@ -94,7 +112,7 @@ double volume_energy(std::span<const Vec3> x, const VolumeTerms& terms) {
     const auto [i, j, k, l] = terms.tets[t];
     const double volume = (x[j] - x[i]).dot((x[k] - x[i]).cross(x[l] - x[i])) / 6.0;
     const double c = (volume - terms.rest_volume[t]) / terms.rest_volume[t];
-    energy += 0.5 * terms.stiffness[t] * c * c;
+    energy += terms.stiffness[t] * (0.5 * c * c + collapse_barrier(c + 1.0).value);
   }
   return energy;
 }

@@ -30,12 +30,34 @@ struct AreaTerms {
 };
 
 /// Volume terms on tetrahedra (eq. 6) with the SIGNED volume, so an inverted tet is pushed
-/// back to its rest orientation: C = (V − V0) / V0.
+/// back to its rest orientation: C = (V − V0) / V0, J = V / V0 = C + 1.
+///
+/// Collapse barrier. Eq. 6 alone, E = ½ k_V C², resists a collapsing tet with a force that stays
+/// finite at V = 0 (k_V times a third of a face area per node): any load above it — an
+/// instrument pressing on a few surface nodes of a soft wall — crushes the tet through zero
+/// volume and turns it inside out, although tissue (nearly incompressible) can never be
+/// squeezed to nothing. So each volume term also carries the barrier of Li et al. 2020
+/// (Incremental Potential Contact, eq. 6) on J, active below Ĵ = kCollapseBarrierStart:
+///   E_b = k_V b(J),  b(J) = −(J − Ĵ)² ln(J / Ĵ) for 0 < J < Ĵ, 0 for J ≥ Ĵ,
+/// C² continuous at Ĵ, convex, and infinite as J → 0⁺: no finite load collapses a tet, and the
+/// implicit integrator (whose line search only accepts finite, decreasing energies) never
+/// turns one inside out. A tet already inverted (J ≤ 0, e.g. a tangled input) has infinite
+/// energy and gets the barrier force of J = Ĵ/1000 on top of eq. 6's, pushing it back.
 struct VolumeTerms {
   std::vector<core::Tetrahedron> tets;
   std::vector<double> rest_volume;  ///< V0 in m³
   std::vector<double> stiffness;    ///< k_V in J
 };
+
+/// Start Ĵ of the collapse barrier (a fifth of the rest volume).
+inline constexpr double kCollapseBarrierStart = 0.2;
+
+/// b(J), b′(J), b″(J) of the collapse barrier above (b = +∞ for J ≤ 0; b′, b″ then those of
+/// J = Ĵ/1000).
+struct CollapseBarrier {
+  double value = 0.0, first = 0.0, second = 0.0;
+};
+CollapseBarrier collapse_barrier(double j);
 
 /// Adds distance forces (with damping from `velocities`, m/s) and returns their energy.
 double add_distance_forces(std::span<const Vec3> positions, std::span<const Vec3> velocities,

@@ -10,7 +10,7 @@ void capture_snapshot(const SessionRunner& runner, SessionSnapshot& out) {
   out.time = world.time();
   out.bodies.resize(world.bodies().size());
   for (std::size_t b = 0; b < world.bodies().size(); ++b) {
-    const DeformableBody& body = world.bodies()[b];
+    const BodyView& body = world.bodies()[b];
     if (out.bodies[b].name != body.name()) out.bodies[b].name = body.name();
     out.bodies[b].positions.assign(body.positions().begin(), body.positions().end());
   }

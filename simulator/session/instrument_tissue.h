@@ -13,7 +13,7 @@
 
 namespace viscera::sim {
 
-class DeformableBody;
+class BodyView;
 
 /// A complication or a warning raised by the tissue: the event kind and one sentence.
 struct TissueEvent {
@@ -41,7 +41,7 @@ class InstrumentTissue {
   /// Hex hash of the tissue's own state beyond the World's (empty when the World holds it all).
   virtual std::string state_hash() const = 0;
   /// The deformable body the camera observes, or null when the tissue is not a World body.
-  virtual const DeformableBody* body() const { return nullptr; }
+  virtual const BodyView* body() const { return nullptr; }
 };
 
 }  // namespace viscera::sim

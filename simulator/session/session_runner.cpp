@@ -121,7 +121,8 @@ SessionRunner::SessionRunner(const core::Scenario& scenario, const HeadlessRunOp
     if (object != nullptr && !object->surface.triangles.empty()) {
       surface = object->surface;
     } else {
-      surface.vertices = tissue_->body()->positions();
+      surface.vertices.assign(tissue_->body()->positions().begin(),
+                              tissue_->body()->positions().end());
       surface.triangles = tissue_->body()->surface_faces();
     }
     try {
@@ -326,15 +327,14 @@ void SessionRunner::step_world() {
     // Whatever the physics reported, the state says where it went wrong.
     const long long step = world_.steps() + 1;
     const double time = static_cast<double>(step) * world_.time_step();
-    if (const auto fault = find_state_fault(world_, scenario_))
-      throw simulation_error(*fault, step, time);
+    if (const auto fault = find_state_fault(world_)) throw simulation_error(*fault, step, time);
     throw simulation_error(e.reason(), tissue_ != nullptr ? tissue_->name() : std::string(), step,
                            time);
   }
 }
 
 void SessionRunner::look() {
-  const DeformableBody& body = *tissue_->body();
+  const BodyView& body = *tissue_->body();
   const core::SceneObject* object = scenario_.find_object(body.name());
   if (body.max_displacement() > 1e-6) {
     if (object != nullptr && !object->surface.triangles.empty()) {
@@ -362,7 +362,7 @@ void SessionRunner::sample() {
   const BodyEnergies e = world_.energies();
   if (!std::isfinite(e.kinetic + e.elastic + e.gravitational)) {
     // A state gone non-finite without an error from the world: name it here.
-    if (const auto fault = find_state_fault(world_, scenario_))
+    if (const auto fault = find_state_fault(world_))
       throw simulation_error(*fault, world_.steps(), world_.time());
     throw simulation_error("the bodies' energy is not finite",
                            tissue_ != nullptr ? tissue_->name() : std::string(), world_.steps(),
@@ -482,9 +482,9 @@ SessionReport SessionRunner::finish() {
     BodySummary summary;
     summary.name = body.name();
     summary.nodes = body.node_count();
-    summary.edges = body.distance_terms().edges.size();
-    summary.tets = body.volume_terms().tets.size();
-    summary.surface_triangles = body.area_terms().triangles.size();
+    summary.edges = body.edge_count();
+    summary.tets = body.tets().size();
+    summary.surface_triangles = body.surface_faces().size();
     summary.max_displacement = body.max_displacement();
     const core::Vec3 down = world_.gravity().norm() > 0.0
                                 ? core::Vec3(world_.gravity().normalized())

@@ -1,6 +1,7 @@
 #include "simulator/session/simulation_check.h"
 
 #include <cmath>
+#include <span>
 #include <sstream>
 
 #include "core/mesh/tet_mesh.h"
@@ -17,8 +18,8 @@ std::string at_step(long long step, double time) {
 
 /// Tets of `tets` over `positions` whose signed volume has the opposite sign of their rest
 /// volume over `rest`; tets touching a non-finite node are left out.
-int count_inverted(const std::vector<core::Tetrahedron>& tets, const std::vector<core::Vec3>& rest,
-                   const std::vector<core::Vec3>& positions) {
+int count_inverted(const std::vector<core::Tetrahedron>& tets, std::span<const core::Vec3> rest,
+                   std::span<const core::Vec3> positions) {
   int inverted = 0;
   for (const auto& t : tets) {
     bool inside = true;
@@ -39,18 +40,17 @@ int count_inverted(const std::vector<core::Tetrahedron>& tets, const std::vector
 
 }  // namespace
 
-std::optional<StateFault> find_state_fault(const World& world, const core::Scenario& scenario) {
-  for (const DeformableBody& body : world.bodies()) {
-    const auto& x = body.positions();
+std::optional<StateFault> find_state_fault(const World& world) {
+  for (const BodyView& body : world.bodies()) {
+    const std::span<const core::Vec3> x = body.positions();
     for (std::size_t n = 0; n < x.size(); ++n) {
       if (x[n].allFinite()) continue;
       StateFault fault;
       fault.body = body.name();
       fault.node = static_cast<long long>(n);
       fault.non_finite = true;
-      const core::SceneObject* object = scenario.find_object(body.name());
-      if (object != nullptr && object->body.nodes.size() == x.size())
-        fault.inverted_tets = count_inverted(object->body.tets, body.rest_positions(), x);
+      // The body's own tets and rest positions (a cut may have changed them since the scenario).
+      fault.inverted_tets = count_inverted(body.tets(), body.rest_positions(), x);
       return fault;
     }
   }

@@ -22,9 +22,9 @@ struct StateFault {
 };
 
 /// Looks over every body of `world` in order for a node with a non-finite position; for that
-/// body also counts the tets of its scenario object (`scenario`, matched by name) whose signed
-/// volume has changed sign since rest. nullopt when every position is finite.
-std::optional<StateFault> find_state_fault(const World& world, const core::Scenario& scenario);
+/// body also counts its tets whose signed volume has changed sign since rest. nullopt when
+/// every position is finite.
+std::optional<StateFault> find_state_fault(const World& world);
 
 /// The error for `fault` found at physics step `step`: "the simulation became unstable at
 /// step S (t = T s): node N of body B has a non-finite position" with the likely cause —

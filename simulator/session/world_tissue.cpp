@@ -1,6 +1,11 @@
 #include "simulator/session/world_tissue.h"
 
+#include <algorithm>
+#include <cstdio>
 #include <limits>
+#include <map>
+
+#include "simulator/dynamics/authored_terms.h"
 
 namespace viscera::sim {
 
@@ -12,7 +17,7 @@ WorldTissue::WorldTissue(World& world, int body, double stiffness, const core::V
       perforation_depth_(perforation_depth),
       tip_(tip) {
   world_.attach_instrument(body_, stiffness_, tip_);
-  const DeformableBody& b = world_.bodies()[static_cast<std::size_t>(body_)];
+  const BodyView& b = world_.bodies()[static_cast<std::size_t>(body_)];
   wall_ = std::make_unique<SurfaceBvh>(b.surface_faces(), b.rest_positions());
   thickness_.assign(b.surface_faces().size(), -1.0);
 }
@@ -21,7 +26,7 @@ const std::string& WorldTissue::name() const {
   return body()->name();
 }
 
-const DeformableBody* WorldTissue::body() const {
+const BodyView* WorldTissue::body() const {
   return &world_.bodies()[static_cast<std::size_t>(body_)];
 }
 
@@ -30,8 +35,39 @@ void WorldTissue::move(const InstrumentState& state, double /*dt*/) {
   world_.set_instrument_tip(tip_);
 }
 
+std::vector<TissueEvent> WorldTissue::warnings() {
+  const std::vector<TearEvent> tears = tears_of(world_.terms());
+  if (tears.size() <= reported_tears_) return {};
+  // One warning per body for the tears of this step.
+  struct Torn {
+    int count = 0;
+    double strain = 0.0, threshold = 0.0;
+  };
+  std::map<std::string, Torn> per_body;
+  for (std::size_t k = reported_tears_; k < tears.size(); ++k) {
+    Torn& torn = per_body[tears[k].body];
+    ++torn.count;
+    torn.strain = std::max(torn.strain, tears[k].strain);
+    torn.threshold = tears[k].threshold;
+  }
+  reported_tears_ = tears.size();
+  std::vector<TissueEvent> out;
+  for (const auto& [body, torn] : per_body) {
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "%d link%s of \"%s\" tore, stretched up to %.0f %% past the original length "
+                  "(tearing threshold %.0f %%)",
+                  torn.count, torn.count == 1 ? "" : "s", body.c_str(), 100.0 * torn.strain,
+                  100.0 * torn.threshold);
+    out.push_back({"tissue-tear", text});
+  }
+  return out;
+}
+
 std::optional<TissueEvent> WorldTissue::complication() {
-  if (!world_.instrument_in_contact()) return std::nullopt;
+  // Perforation is judged on the wall the instrument works on, not on a polyp it touches.
+  if (!world_.instrument_in_contact() || world_.instrument_touched_body() != body_)
+    return std::nullopt;
   const double depth = penetration();
   const double limit = perforation_depth_ > 0.0
                            ? perforation_depth_
@@ -63,7 +99,8 @@ double WorldTissue::penetration() const {
   // wall gives way, but a tool through its rest thickness has gone through it.
   const double spring = world_.instrument_force().norm() / stiffness_;
   const ProxyContact contact = world_.instrument_contact();
-  if (wall_ == nullptr || contact.triangle < 0) return spring;
+  if (wall_ == nullptr || contact.triangle < 0 || world_.instrument_touched_body() != body_)
+    return spring;
   const auto& tri = wall_->triangles()[static_cast<std::size_t>(contact.triangle)];
   const auto& p = wall_->positions();
   const core::Vec3 rest_point = contact.barycentric[0] * p[tri[0]] +

@@ -25,9 +25,11 @@ class WorldTissue final : public InstrumentTissue {
   core::Vec3 force() const override { return world_.instrument_force(); }
   bool in_contact() const override { return world_.instrument_in_contact(); }
   std::optional<TissueEvent> complication() override;
-  std::vector<TissueEvent> warnings() override { return {}; }
+  /// A "tissue-tear" warning for the links or edges of any body that tore in the last step
+  /// (TearEvents of the world's tearing and cell-agent terms).
+  std::vector<TissueEvent> warnings() override;
   std::string state_hash() const override { return {}; }
-  const DeformableBody* body() const override;
+  const BodyView* body() const override;
 
  private:
   double wall_thickness(int triangle);
@@ -39,6 +41,7 @@ class WorldTissue final : public InstrumentTissue {
   core::Vec3 tip_;
   std::unique_ptr<SurfaceBvh> wall_;  ///< the body's surface at rest, for wall thickness
   std::vector<double> thickness_;     ///< per body surface triangle, −1 until measured
+  std::size_t reported_tears_ = 0;    ///< TearEvents already reported
 };
 
 }  // namespace viscera::sim

@@ -220,7 +220,7 @@ void SceneSurfaces::add_to(vtkRenderer* renderer) const {
 void SceneSurfaces::update(const sim::World& world) {
   for (Surface& surface : surfaces_) {
     if (surface.body.empty()) continue;
-    for (const sim::DeformableBody& body : world.bodies()) {
+    for (const sim::BodyView& body : world.bodies()) {
       if (body.name() != surface.body) continue;
       set_geometry(surface.mesh,
                    core::embedded_positions(*surface.embedding, surface.tets, body.positions()),

@@ -2,18 +2,29 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/error.h"
 #include "core/sha256.h"
+#include "simulator/dynamics/authored_terms.h"
+#include "simulator/dynamics/backward_euler.h"
+#include "simulator/dynamics/explicit_verlet.h"
+#include "simulator/dynamics/gravity_term.h"
+#include "simulator/dynamics/teschner_terms.h"
 
 namespace viscera::sim {
 
-World::World(const core::Scenario& scenario)
+World::World(const core::Scenario& scenario, IntegratorKind integrator)
     : gravity_(scenario.session.gravity), time_step_(scenario.session.time_step) {
   if (!(time_step_ > 0.0))
     throw core::InputError("session time step must be positive",
                            {"", "/scenario/session/time_step", ""});
+  bool any_teschner = false;
   for (const auto& object : scenario.objects) {
+    if (object.body_kind == core::BodyKind::CellAgent) {  // seed 003 §V: cells as nodes
+      models_.push_back(add_cell_agent_body(scenario, object, state_));
+      continue;
+    }
     if (object.body_kind != core::BodyKind::TetMesh &&
         object.body_kind != core::BodyKind::MassSpring)
       continue;
@@ -26,171 +37,225 @@ World::World(const core::Scenario& scenario)
       }
       material = it->second;
     }
-    bodies_.emplace_back(object.id, object.body, material,
-                         object.body_kind == core::BodyKind::MassSpring ? BodyModel::KismoMassSpring
-                                                                        : BodyModel::Teschner);
+    const core::TetMesh& mesh = object.body;
+    core::check_tet_mesh(mesh, "body " + object.id);
+    const std::vector<double> mass =
+        mesh.node_mass.empty() ? core::lumped_node_masses(mesh, material.density) : mesh.node_mass;
+    for (std::size_t i = 0; i < mass.size(); ++i) {
+      const bool fixed = !mesh.fixed.empty() && mesh.fixed[i] != 0;
+      if (!fixed && !(mass[i] > 0.0))
+        throw core::InputError("free node has no positive mass",
+                               {"body " + object.id, "", "node " + std::to_string(i)});
+    }
+    auto model = std::make_shared<BodyModel>();
+    model->name = object.id;
+    model->kind = object.body_kind == core::BodyKind::MassSpring ? BodyModelKind::KismoMassSpring
+                                                                 : BodyModelKind::Teschner;
+    any_teschner = any_teschner || model->kind == BodyModelKind::Teschner;
+    model->mesh = mesh;
+    model->surface =
+        mesh.surface_faces.empty() ? core::boundary_faces(mesh.tets) : mesh.surface_faces;
+    assign_layer_materials(*model, object, material, scenario.materials);
+    model->body = state_.add_body(object.id, mesh.nodes, mass, mesh.fixed);
+    models_.push_back(std::move(model));
   }
-  contact_stiffness_ = bodies_.size() > 1 ? scenario.session.contact_stiffness : 0.0;
-  if (contact_stiffness_ > 0.0)
-    contact_ = std::make_unique<ContactResponse>(bodies_, contact_stiffness_);
-  connections_ = ConnectionSprings(scenario, bodies_);
-  choose_substeps();
+  contact_stiffness_ = models_.size() > 1 ? scenario.session.contact_stiffness : 0.0;
+  build_terms(scenario);
+  if (integrator == IntegratorKind::Automatic)
+    integrator = any_teschner ? IntegratorKind::BackwardEuler : IntegratorKind::ExplicitVerlet;
+  if (integrator == IntegratorKind::BackwardEuler)
+    integrator_ = std::make_unique<BackwardEuler>();
+  else
+    integrator_ = std::make_unique<ExplicitVerlet>();
+  integrator_->topology_changed(state_, term_pointers());
+  refresh_views();
 }
 
-void World::choose_substeps() {
-  // Every surface node may meet a contact; the instrument's proxy spring may press on any
-  // surface node of its body (k w wᵀ over a triangle is bounded by k on each of its nodes).
-  const auto surface_stiffness = [&](std::size_t b) {
-    double k = contact_stiffness_;
-    if (instrument_ && static_cast<std::size_t>(instrument_->body) == b)
-      k += instrument_->proxy.stiffness();
-    return k;
-  };
-  std::vector<int> offsets;
-  std::vector<double> inverse_mass;
-  for (const auto& body : bodies_) {
-    offsets.push_back(static_cast<int>(inverse_mass.size()));
-    inverse_mass.insert(inverse_mass.end(), body.inverse_masses().begin(),
-                        body.inverse_masses().end());
-  }
-  RankOneSystem stiffness(inverse_mass.size()), damping(inverse_mass.size());
-  double stable = time_step_;
-  for (std::size_t b = 0; b < bodies_.size(); ++b) {
-    const DeformableBody& body = bodies_[b];
-    if (!body.add_linearised_terms(stiffness, damping, offsets[b])) {
-      // A KisMo net: its own integrator, its own per-node bound.
-      std::vector<double> extra(body.node_count(), 0.0);
-      connections_.add_node_stiffness(static_cast<int>(b), extra);
-      stable = std::min(stable, body.stable_time_step(surface_stiffness(b), extra));
-    }
-    const double k = surface_stiffness(b);
-    if (k > 0.0) {
-      std::vector<char> on_surface(body.node_count(), 0);
-      for (const auto& f : body.surface_faces())
-        for (const int v : f) on_surface[static_cast<std::size_t>(v)] = 1;
-      for (std::size_t i = 0; i < on_surface.size(); ++i)
-        if (on_surface[i]) stiffness.add_diagonal(offsets[b] + static_cast<int>(i), k);
-    }
-  }
-  connections_.add_linearised_terms(stiffness, offsets);
-  const double omega_squared = largest_eigenvalue(stiffness, inverse_mass);
-  const double damping_rate = largest_eigenvalue(damping, inverse_mass);
-  stable = std::min(stable, kStableStepSafety * verlet_stable_step(omega_squared, damping_rate));
-  stable_step_ = stable;
-  substeps_ = std::max(1, static_cast<int>(std::ceil(time_step_ / stable - 1e-12)));
+World::~World() = default;
+
+void World::refresh_views() {
+  views_.clear();
+  for (const auto& m : models_)
+    views_.emplace_back(&state_, m.get());
+}
+
+std::vector<ForceTerm*> World::term_pointers() const {
+  std::vector<ForceTerm*> pointers;
+  for (const auto& t : terms_)
+    pointers.push_back(t.get());
+  return pointers;
+}
+
+int World::substeps() const {
+  const auto* verlet = dynamic_cast<const ExplicitVerlet*>(integrator_.get());
+  if (verlet == nullptr || !std::isfinite(verlet->stable_step())) return 1;
+  return std::max(1, static_cast<int>(std::ceil(time_step_ / verlet->stable_step() - 1e-12)));
+}
+
+double World::stable_step() const {
+  const auto* verlet = dynamic_cast<const ExplicitVerlet*>(integrator_.get());
+  return verlet != nullptr ? verlet->stable_step() : std::numeric_limits<double>::infinity();
+}
+
+int World::body_index(const std::string& name) const {
+  for (const auto& m : models_)
+    if (m->name == name) return m->body;
+  return -1;
+}
+
+void World::add_term(std::unique_ptr<ForceTerm> term) {
+  terms_.push_back(std::move(term));
+  integrator_->topology_changed(state_, term_pointers());
 }
 
 void World::step() {
-  const double h = time_step_ / substeps_;
+  const StepContext context{time(), time_step_, steps_ + 1};
   if (asleep_) {
     // Nothing moves until the instrument touches: only the proxy follows the tip.
-    if (instrument_) {
-      DeformableBody& body = bodies_[static_cast<std::size_t>(instrument_->body)];
-      instrument_->proxy.update(tool_tip_, instrument_->surface, body.positions());
-      instrument_->proxy.recapture(instrument_->surface, body.positions());
-      asleep_ = !instrument_->proxy.in_contact();
+    if (proxy_ != nullptr) {
+      proxy_->prepare(state_, context);
+      asleep_ = !proxy_->proxy().in_contact();
     }
     if (asleep_) {
       ++steps_;
       return;
     }
-    calm_substeps_ = 0;
+    calm_steps_ = 0;
   }
-  for (int s = 0; s < substeps_; ++s) {
-    if (instrument_) {
-      DeformableBody& body = bodies_[static_cast<std::size_t>(instrument_->body)];
-      instrument_->proxy.update(tool_tip_, instrument_->surface, body.positions());
-      // The wall may have swung over the tip since the last sub-step (it overshoots when
-      // pushed and springs back): that is a contact the path test alone misses.
-      instrument_->proxy.recapture(instrument_->surface, body.positions());
-    }
-    for (auto& body : bodies_)
-      body.compute_forces(gravity_, h);
-    connections_.apply(bodies_);
-    if (contact_) {
-      contacts_ = contact_->apply(bodies_);
-      max_penetration_ = std::max(max_penetration_, contacts_.max_penetration);
-    }
-    if (instrument_) {
-      // The instrument presses on the tissue with the opposite of the force it feels.
-      DeformableBody& body = bodies_[static_cast<std::size_t>(instrument_->body)];
-      if (instrument_->proxy.in_contact()) {
-        const auto& contact = instrument_->proxy.contact();
-        const auto& triangle =
-            instrument_->surface.faces()[static_cast<std::size_t>(contact.triangle)];
-        for (const auto& [node, force] :
-             distribute_to_triangle(triangle, contact.barycentric, -instrument_->proxy.force())) {
-          body.add_force(node, force);
-        }
-      }
-    }
-    for (auto& body : bodies_) {
-      try {
-        body.integrate(h);
-      } catch (const core::Error& e) {
-        // The body names itself and the node; only the world knows when it happened.
-        throw core::Error(e.reason() + " at step " + std::to_string(steps_ + 1) + " (t = " +
-                              std::to_string(static_cast<double>(steps_ + 1) * time_step_) + " s)",
-                          e.location());
-      }
-    }
-    if (sleep_threshold_ > 0.0) update_sleep();
-  }
+  const std::vector<ForceTerm*> terms = term_pointers();
+  statistics_ = integrator_->step(state_, terms, context);
   ++steps_;
+  check_state();
+  if (contact_ != nullptr) {
+    contacts_ = contact_->statistics();
+    max_penetration_ = std::max(max_penetration_, contacts_.max_penetration);
+  }
+  if (sleep_threshold_ > 0.0 && !drives_bodies(terms_)) update_sleep();
+}
+
+int World::everted_tets() const {
+  int count = 0;
+  for (const auto& term : terms_) {
+    const auto* volume = dynamic_cast<const TeschnerVolumeTerm*>(term.get());
+    if (volume == nullptr) continue;
+    for (std::size_t t = 0; t < volume->terms().tets.size(); ++t) {
+      const auto& n = volume->terms().tets[t];
+      const auto& x = state_.positions;
+      if (core::signed_volume(x[n[0]], x[n[1]], x[n[2]], x[n[3]]) < -volume->terms().rest_volume[t])
+        ++count;
+    }
+  }
+  return count;
+}
+
+void World::check_state() const {
+  const double t = time();
+  for (const auto& m : models_) {
+    const BodyNodes& range = state_.body(m->body);
+    for (int i = 0; i < range.count; ++i) {
+      const auto g = static_cast<std::size_t>(range.first + i);
+      if (!state_.positions[g].allFinite() || !state_.velocities[g].allFinite())
+        throw core::SimulationError(
+            "the simulation became unstable at step " + std::to_string(steps_) +
+                " (t = " + std::to_string(t) + " s): node " + std::to_string(i) + " of body \"" +
+                m->name + "\" has a non-finite position or velocity",
+            m->name, i, steps_,
+            "non-finite state (a non-finite input, or a time step too large for the material's "
+            "stiffness and damping)");
+    }
+  }
+  if (!inversion_errors_) return;
+  for (const auto& term : terms_) {
+    const auto* volume = dynamic_cast<const TeschnerVolumeTerm*>(term.get());
+    if (volume == nullptr) continue;
+    const int tet = volume->first_inverted(state_.positions);
+    if (tet >= 0) {
+      const auto& nodes = volume->model().mesh.tets[static_cast<std::size_t>(tet)];
+      throw core::SimulationError(
+          "the simulation became unstable at step " + std::to_string(steps_) +
+              " (t = " + std::to_string(t) + " s): tet " + std::to_string(tet) + " of body \"" +
+              volume->model().name + "\" turned inside out",
+          volume->model().name, nodes[0], steps_,
+          "inverted tets (the tool or a contact pressed harder than the material can hold)");
+    }
+  }
 }
 
 void World::update_sleep() {
-  double moved = 0.0;
-  for (const auto& body : bodies_) {
-    const auto& x = body.positions();
-    const auto& previous = body.previous_positions();
-    for (std::size_t n = 0; n < x.size(); ++n)
-      moved = std::max(moved, (x[n] - previous[n]).squaredNorm());
-  }
-  const bool touched = instrument_ && instrument_->proxy.in_contact();
-  calm_substeps_ = std::sqrt(moved) < sleep_threshold_ && !touched ? calm_substeps_ + 1 : 0;
-  if (calm_substeps_ >= kCalmSubstepsToSleep) {
+  double fastest = 0.0;
+  for (std::size_t i = 0; i < state_.node_count(); ++i)
+    fastest = std::max(fastest, state_.velocities[i].squaredNorm());
+  const double moved = std::sqrt(fastest) * time_step_;
+  const bool touched = proxy_ != nullptr && proxy_->proxy().in_contact();
+  calm_steps_ = moved < sleep_threshold_ && !touched ? calm_steps_ + 1 : 0;
+  if (calm_steps_ >= kCalmStepsToSleep) {
     // At rest: stop the last sub-nanometre motion so the state stays exactly still.
-    for (auto& body : bodies_)
-      body.previous_positions() = body.positions();
+    for (auto& v : state_.velocities)
+      v.setZero();
     asleep_ = true;
   }
 }
 
 void World::attach_instrument(int body, double stiffness, const core::Vec3& tip) {
-  if (body < 0 || body >= static_cast<int>(bodies_.size())) {
+  if (body < 0 || body >= static_cast<int>(models_.size()))
     throw core::UsageError("no body " + std::to_string(body) + " to attach the instrument to");
+  if (proxy_ != nullptr) {
+    terms_.erase(std::find_if(terms_.begin(), terms_.end(),
+                              [&](const auto& t) { return t.get() == proxy_; }));
   }
-  instrument_ = std::make_unique<Instrument>(
-      Instrument{body, ProxySurface(bodies_[static_cast<std::size_t>(body)].surface_faces()),
-                 HapticProxy(stiffness)});
-  instrument_->proxy.reset(tip);
+  std::vector<std::shared_ptr<const BodyModel>> models(models_.begin(), models_.end());
+  auto term = std::make_unique<ProxySpringTerm>(std::move(models), stiffness, state_, tip);
+  proxy_ = term.get();
+  instrument_body_ = body;
   tool_tip_ = tip;
-  choose_substeps();
+  add_term(std::move(term));
+}
+
+void World::set_instrument_tip(const core::Vec3& tip) {
+  tool_tip_ = tip;
+  if (proxy_ != nullptr) proxy_->set_tip(tip);
+}
+
+core::Vec3 World::instrument_force() const {
+  return proxy_ != nullptr ? proxy_->proxy().force() : core::Vec3::Zero();
+}
+
+bool World::instrument_in_contact() const {
+  return proxy_ != nullptr && proxy_->proxy().in_contact();
+}
+
+ProxyContact World::instrument_contact() const {
+  if (proxy_ == nullptr || !proxy_->proxy().in_contact()) return {};
+  return {proxy_->touched_body_triangle(), proxy_->proxy().contact().barycentric};
+}
+
+int World::instrument_touched_body() const {
+  return proxy_ != nullptr ? proxy_->touched_body() : -1;
+}
+
+core::Vec3 World::instrument_proxy() const {
+  return proxy_ != nullptr ? proxy_->proxy().proxy() : tool_tip_;
 }
 
 BodyEnergies World::energies() const {
   BodyEnergies sum;
-  const double h = time_step_ / substeps_;
-  for (const auto& body : bodies_) {
-    const BodyEnergies e = body.energies(gravity_, h);
-    sum.kinetic += e.kinetic;
-    sum.elastic += e.elastic;
-    sum.gravitational += e.gravitational;
+  for (std::size_t i = 0; i < state_.node_count(); ++i)
+    sum.kinetic += 0.5 * state_.masses[i] * state_.velocities[i].squaredNorm();
+  for (const auto& term : terms_) {
+    if (term.get() == proxy_) continue;  // the hand's spring is input, not stored energy
+    const double e = term->energy(state_.positions);
+    if (dynamic_cast<const GravityTerm*>(term.get()) != nullptr)
+      sum.gravitational += e;
+    else
+      sum.elastic += e;
   }
-  sum.elastic += connections_.energy(bodies_);
   return sum;
 }
 
 std::string World::state_hash() const {
   core::Sha256 hash;
-  const auto add = [&hash](const std::vector<core::Vec3>& points) {
-    hash.update(std::as_bytes(std::span<const core::Vec3>(points)));
-  };
-  for (const auto& body : bodies_) {
-    add(body.positions());
-    add(body.previous_positions());
-  }
+  hash.update(std::as_bytes(std::span<const core::Vec3>(state_.positions)));
+  hash.update(std::as_bytes(std::span<const core::Vec3>(state_.velocities)));
   return hash.hex_digest();
 }
 

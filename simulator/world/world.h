@@ -1,127 +1,166 @@
 #pragma once
-/// The simulated world of a scenario: its deformable bodies stepped at a fixed time step
-/// (DESIGN.md §5). Single-threaded and in a fixed order, so the same scenario gives the same
-/// state bit for bit (the deterministic mode of sessions and replays).
+/// The simulated world of a scenario (DESIGN.md §5): a facade over the simulation core of
+/// simulator/dynamics — one SimulationState holding every body's nodes, the force terms built
+/// from the scenario, and one integrator. Single-threaded and in a fixed order, so the same
+/// scenario gives the same state bit for bit (the deterministic mode of sessions and replays).
 
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "core/scenario/scenario.h"
-#include "simulator/collision/contact_response.h"
-#include "simulator/haptics/haptic_proxy.h"
-#include "simulator/physics/connection_springs.h"
-#include "simulator/physics/deformable_body.h"
+#include "simulator/dynamics/body_topology.h"
+#include "simulator/dynamics/contact_term.h"
+#include "simulator/dynamics/integrator.h"
+#include "simulator/dynamics/proxy_spring_term.h"
+#include "simulator/world/body_view.h"
 
 namespace viscera::sim {
 
-/// Bodies, gravity and the clock of one simulation.
+class ConnectionSpringTerm;
+class AttachmentTerm;
+class GravityTerm;
+
+/// Energies of the world in J.
+struct BodyEnergies {
+  double kinetic = 0.0;
+  double elastic = 0.0;        ///< every internal, connection, attachment and contact term
+  double gravitational = 0.0;  ///< relative to the rest configuration
+  double total() const { return kinetic + elastic + gravitational; }
+};
+
+/// Which integrator steps the world.
+enum class IntegratorKind {
+  Automatic,       ///< backward Euler when any body has Teschner energies, else explicit Verlet
+  ExplicitVerlet,  ///< the reference, with spectral sub-steps
+  BackwardEuler    ///< implicit, no sub-steps
+};
+
 class World {
  public:
-  /// Builds a body for every object whose body kind is a tet mesh (Teschner energies) or a
-  /// mass-spring net (KisMo springs on the mesh edges), with its material (or the
-  /// default Material when it names none). The physics step is scenario.session.time_step,
-  /// split into equal sub-steps when the bodies need a smaller step to stay stable: the stable
-  /// step comes from the largest eigenvalues of the linearised stiffness and damping of all
-  /// Teschner bodies, connection springs, contacts and the instrument together
-  /// (physics/stable_step.h), times kStableStepSafety; KisMo nets keep their per-node bound. With two or
-  /// more bodies, contacts between them get penalty forces of scenario.session.contact_stiffness.
-  /// The scenario's connections hold their objects together with springs (ConnectionSprings).
-  /// Throws core::InputError for a missing material, an invalid body or a connection that
-  /// names an object without a body or a node it does not have.
-  explicit World(const core::Scenario& scenario);
+  /// Builds a node range and force terms for every object whose body kind is a tet mesh
+  /// (Teschner distance/area/volume, each tet with the material of its wall layer) or a
+  /// mass-spring net (KisMo springs): connections of a pathology object become barycentric
+  /// attachments of its nodes to the host's tets, other connections linear springs; with two
+  /// or more bodies and a positive scenario.session.contact_stiffness, body–body contact;
+  /// gravity. Throws core::InputError for a missing material, an invalid body or a connection
+  /// naming an object without a body or a node it does not have.
+  explicit World(const core::Scenario& scenario,
+                 IntegratorKind integrator = IntegratorKind::Automatic);
+  ~World();
+  World(const World&) = delete;
+  World& operator=(const World&) = delete;
 
-  /// Advances by one physics step (time_step() seconds).
+  /// Advances by one physics step (time_step() seconds). Throws core::SimulationError (body,
+  /// node, step, likely cause) for a non-finite state, and — unless set_inversion_errors(false)
+  /// — for a tet turned inside out (TeschnerVolumeTerm::first_inverted).
   void step();
+  /// Whether an everted tet is an error. On by default: the volume terms' collapse barrier
+  /// (teschner_energies.h) keeps every tet of the implicit integrator above zero volume under
+  /// any finite load, so a tet that still turns inside out is a real failure (a tangled input,
+  /// or a time step the explicit integrator cannot hold). Off only for reports that count
+  /// everted tets (everted_tets()) instead of stopping at the first.
+  void set_inversion_errors(bool on) { inversion_errors_ = on; }
+  /// Tets now turned inside out (signed volume below −V0), for reports.
+  int everted_tets() const;
 
   double time() const { return static_cast<double>(steps_) * time_step_; }
   long long steps() const { return steps_; }
   double time_step() const { return time_step_; }
-  int substeps() const { return substeps_; }
+  /// Sub-steps per step: 1 for the implicit integrator.
+  int substeps() const;
+  /// Largest stable explicit sub-step in s (infinite for the implicit integrator).
+  double stable_step() const;
   const core::Vec3& gravity() const { return gravity_; }
-  const std::vector<DeformableBody>& bodies() const { return bodies_; }
-  std::vector<DeformableBody>& bodies() { return bodies_; }
+  const std::vector<BodyView>& bodies() const { return views_; }
+  std::vector<BodyView>& bodies() { return views_; }
+  /// The body named `name`, or −1.
+  int body_index(const std::string& name) const;
 
-  /// Puts a haptic instrument into the world: one proxy point on the surface of body `body`
-  /// with a proxy–tip spring of `stiffness` N/m (seed 000 §8.2). The tip starts at `tip`.
-  /// The spring enters the stable step (on every surface node of the body), so substeps() may grow.
-  /// Throws core::UsageError for a body index out of range.
+  const SimulationState& state() const { return state_; }
+  SimulationState& state() { return state_; }
+  const Integrator& integrator() const { return *integrator_; }
+  const StepStatistics& last_step_statistics() const { return statistics_; }
+  /// Every force term in evaluation order.
+  const std::vector<std::unique_ptr<ForceTerm>>& terms() const { return terms_; }
+  /// Adds a force term (e.g. motility, plasticity) evaluated after the built-in ones; the
+  /// integrator's structure is rebuilt.
+  void add_term(std::unique_ptr<ForceTerm> term);
+  const std::vector<std::shared_ptr<BodyModel>>& models() const { return models_; }
+
+  /// Puts a haptic instrument into the world: a proxy point over the surfaces of EVERY body with
+  /// a proxy–tip spring of `stiffness` N/m (seed 000 §8.2); `body` is the body the session
+  /// judges (perforation). The tip starts at `tip`. Throws core::UsageError for a body index out
+  /// of range.
   void attach_instrument(int body, double stiffness, const core::Vec3& tip);
   /// Moves the instrument tip (m); takes effect at the next step.
-  void set_instrument_tip(const core::Vec3& tip) { tool_tip_ = tip; }
+  void set_instrument_tip(const core::Vec3& tip);
   /// Force in N that the tissue puts on the instrument (zero without contact or instrument).
-  core::Vec3 instrument_force() const {
-    return instrument_ ? instrument_->proxy.force() : core::Vec3::Zero();
-  }
-  bool instrument_in_contact() const { return instrument_ && instrument_->proxy.in_contact(); }
-  /// Where the instrument's proxy touches its body's surface (triangle of surface_faces()).
-  ProxyContact instrument_contact() const {
-    return instrument_ ? instrument_->proxy.contact() : ProxyContact{};
-  }
+  core::Vec3 instrument_force() const;
+  bool instrument_in_contact() const;
+  /// Where the proxy touches: the triangle of surface_faces() of instrument_touched_body().
+  ProxyContact instrument_contact() const;
+  /// The body the proxy touches, or −1.
+  int instrument_touched_body() const;
   /// The proxy point on the surface (m), or the tip when free.
-  core::Vec3 instrument_proxy() const {
-    return instrument_ ? instrument_->proxy.proxy() : tool_tip_;
-  }
-  /// Index of the body the instrument works on, or −1.
-  int instrument_body() const { return instrument_ ? instrument_->body : -1; }
-  /// The tip position the instrument was last moved to, in m.
+  core::Vec3 instrument_proxy() const;
+  /// Index of the body the instrument was attached for, or −1.
+  int instrument_body() const { return instrument_body_; }
   const core::Vec3& instrument_tip() const { return tool_tip_; }
 
-  /// Contacts of the last sub-step.
+  /// Contacts between bodies at the last step's detection.
   const ContactStatistics& contacts() const { return contacts_; }
-  /// Largest penetration in m seen in any sub-step so far.
+  /// Largest penetration in m seen so far.
   double max_penetration() const { return max_penetration_; }
 
-  /// Springs of the scenario's connections between bodies.
-  const ConnectionSprings& connections() const { return connections_; }
-
-  /// Sum of the bodies' energies at the current state; connection springs count as elastic.
+  /// Energies at the current state.
   BodyEnergies energies() const;
 
   /// Sleeping (the deactivation of rigid-body engines): once no node has moved more than
-  /// `threshold` m per sub-step for kCalmSubstepsToSleep sub-steps and the instrument touches
-  /// nothing, the world stops integrating (velocities set to zero) until the instrument's
-  /// proxy meets a surface again. 0 disables (the default); sessions enable it.
+  /// `threshold` m per step for kCalmStepsToSleep steps and the instrument touches nothing, the
+  /// world stops integrating (velocities set to zero) until the proxy meets a surface again.
+  /// 0 disables (the default); sessions enable it.
   void set_sleep_threshold(double threshold) { sleep_threshold_ = threshold; }
   bool asleep() const { return asleep_; }
-  static constexpr int kCalmSubstepsToSleep = 200;
+  static constexpr int kCalmStepsToSleep = 200;
 
-  /// Largest stable sub-step in s found for the world (before splitting time_step() evenly).
-  double stable_step() const { return stable_step_; }
-  /// Fraction of the spectral stable step that sub-steps may use: margin for the power
-  /// iteration approaching λ_max from below and for stiffening under large deformation.
-  static constexpr double kStableStepSafety = 0.8;
+  /// Replaces the topology of `body` (cutting): its node range, rest model and every cache that
+  /// depends on it — force terms, contact hash, proxy surface, attachments, the integrator's
+  /// structure. Per-node masses come from topology.rest_mesh.node_mass or, when empty, are
+  /// carried by `origin`; velocities are carried by `origin`. Throws core::InputError for an
+  /// invalid mesh.
+  void topology_changed(int body, const BodyTopology& topology);
 
-  /// SHA-256 (hex) of every body's current and previous positions, in body order: equal hashes
-  /// mean bit-identical states.
+  /// SHA-256 (hex) of every node's position and velocity: equal hashes mean bit-identical states.
   std::string state_hash() const;
 
  private:
-  std::vector<DeformableBody> bodies_;
+  void build_terms(const core::Scenario& scenario);
+  void refresh_views();
+  std::vector<ForceTerm*> term_pointers() const;
+  void check_state() const;
+  void update_sleep();
+
+  SimulationState state_;
+  std::vector<std::shared_ptr<BodyModel>> models_;
+  std::vector<BodyView> views_;
+  std::vector<std::unique_ptr<ForceTerm>> terms_;
+  std::unique_ptr<Integrator> integrator_;
+  BodyContactTerm* contact_ = nullptr;
+  ProxySpringTerm* proxy_ = nullptr;
   core::Vec3 gravity_;
   double time_step_ = 1.0e-3;
-  int substeps_ = 1;
-  double stable_step_ = 0.0;
   double contact_stiffness_ = 0.0;
   long long steps_ = 0;
-  std::unique_ptr<ContactResponse> contact_;
-  ConnectionSprings connections_;
-  struct Instrument {
-    int body;
-    ProxySurface surface;
-    HapticProxy proxy;
-  };
-  std::unique_ptr<Instrument> instrument_;
+  int instrument_body_ = -1;
   core::Vec3 tool_tip_ = core::Vec3::Zero();
   ContactStatistics contacts_;
+  StepStatistics statistics_;
   double max_penetration_ = 0.0;
   double sleep_threshold_ = 0.0;
-  int calm_substeps_ = 0;
+  int calm_steps_ = 0;
   bool asleep_ = false;
-
-  void update_sleep();
-  /// Sets stable_step_ and substeps_ from the bodies, connections, contacts and instrument.
-  void choose_substeps();
+  bool inversion_errors_ = true;
 };
 
 }  // namespace viscera::sim

@@ -24,8 +24,8 @@ struct SimulationBounds {
   double perturbation = 1e-4;
 };
 
-/// Perturbs (cells: by a first-step push) and then steps every tet and mass-spring body (sim::World, Teschner or KisMo) and every
-/// cell-agent tissue (sim::CellAgentTissue) of `scenario` for bounds.duration seconds with no
+/// Perturbs and then steps every body of `scenario`'s sim::World — tet and mass-spring bodies
+/// (Teschner or KisMo) and cell-agent tissues — for bounds.duration seconds with no
 /// instrument, checking positions every 10 steps. Measures: steps, substeps, max_displacement (m),
 /// max_speed (m/s), final kinetic_energy (J). Never throws for a bad patient: a non-finite or
 /// unbounded state or a simulator error is a failed check named "simulation".

@@ -249,9 +249,10 @@ core::Scenario HysteroscopyTemplate::build(const ParameterValues& p, std::uint64
   // The uterus rests in the pelvis, held all round; the cavity deforms under distension
   // pressure and the tools, not its own weight (seed 000 §2.1 loads the wall by pressure only).
   scenario.session.gravity = core::Vec3::Zero();
-  // Pathologies are attached to the wall and do not collide with it; tools touch tissue
-  // through the instrument proxy. Body-body contacts would cost more than the bodies.
-  scenario.session.contact_stiffness = 0.0;
+  // Pathologies are attached to the wall (their bases, which overlap the wall at rest, are
+  // not contacts) and collide with it and each other when pushed; the tool touches every body
+  // through the instrument proxy.
+  scenario.session.contact_stiffness = 500.0;
   // Seed 000 §11: the diagnostic procedure, its tasks referring to the shape's landmarks (the
   // internal and external os, both tubal orifices) and the cavity region of the surface.
   core::apply_procedure(scenario.session, core::procedure_definition("diagnostic-hysteroscopy"));

@@ -9,6 +9,7 @@
 
 #include "simulator/session/headless_session.h"
 #include "simulator/session/instrument_input.h"
+#include "templates/template_catalog.h"
 #include "tests/bench/session_scripts.h"
 
 namespace {
@@ -58,5 +59,22 @@ void BM_HysteroscopySessionNovice10min(benchmark::State& state) {
   run(state, repeated(script("novice"), 600.0), 600.0);
 }
 BENCHMARK(BM_HysteroscopySessionNovice10min)->Iterations(1)->Unit(benchmark::kSecond);
+
+/// The `ball` demo: the default ball template resting on its held base for 2 s, headless, no
+/// instrument (what `./dev.sh demo` runs). real_time_factor = simulated / wall s.
+void BM_BallDemoSession(benchmark::State& state) {
+  const viscera::core::Scenario ball = viscera::templates::build_from_template("ball", {}, 1);
+  viscera::sim::HeadlessRunOptions options;
+  options.duration = 2.0;
+  double simulated = 0.0, wall = 0.0;
+  for (auto _ : state) {
+    const auto report = viscera::sim::run_headless(ball, options);
+    simulated += report.simulated_time;
+    wall += report.wall_time;
+    state.counters["substeps"] = report.substeps;
+  }
+  state.counters["real_time_factor"] = wall > 0.0 ? simulated / wall : 0.0;
+}
+BENCHMARK(BM_BallDemoSession)->Iterations(1)->Unit(benchmark::kSecond);
 
 }  // namespace

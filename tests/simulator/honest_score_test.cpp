@@ -114,10 +114,10 @@ TEST(SimulationFailure, a_non_finite_node_is_named_with_body_step_and_cause) {
   const core::Scenario scenario = viscera::testing::cavity_scenario();
   World world(scenario);
   world.step();
-  EXPECT_FALSE(find_state_fault(world, scenario).has_value());
+  EXPECT_FALSE(find_state_fault(world).has_value());
   auto& body = world.bodies()[0];
   body.positions()[7] = core::Vec3(std::numeric_limits<double>::quiet_NaN(), 0.0, 0.0);
-  const auto fault = find_state_fault(world, scenario);
+  const auto fault = find_state_fault(world);
   ASSERT_TRUE(fault.has_value());
   EXPECT_EQ(fault->body, body.name());
   EXPECT_EQ(fault->node, 7);
@@ -170,7 +170,7 @@ TEST(SimulationFailure, a_crushed_body_names_its_inverted_tets_as_the_cause) {
   for (auto& p : body.positions())
     p.x() = -p.x();
   body.positions()[3] = core::Vec3::Constant(std::numeric_limits<double>::infinity());
-  const auto fault = find_state_fault(world, scenario);
+  const auto fault = find_state_fault(world);
   ASSERT_TRUE(fault.has_value());
   EXPECT_GT(fault->inverted_tets, 0);
   const core::SimulationError error = simulation_error(*fault, 5, 0.005);

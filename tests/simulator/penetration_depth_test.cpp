@@ -6,7 +6,6 @@
 
 #include "core/meshing/tet_mesher.h"
 #include "core/primitives/icosphere.h"
-#include "simulator/collision/contact_response.h"
 #include "simulator/collision/spatial_hash.h"
 #include "tests/simulator/sim_fixtures.h"
 
@@ -19,7 +18,8 @@ std::vector<int> colliding_points(const core::TetMesh& a, const core::TetMesh& b
   SpatialHash hash(mean_edge_length(bodies), 1009);
   std::vector<int> points;
   for (const auto& c : hash.detect(bodies, false)) {
-    if (c.vertex_body == 0 && (points.empty() || points.back() != c.vertex)) points.push_back(c.vertex);
+    if (c.vertex_body == 0 && (points.empty() || points.back() != c.vertex))
+      points.push_back(c.vertex);
   }
   return points;
 }
@@ -28,7 +28,8 @@ VertexAdjacency adjacency_of(const core::TetMesh& mesh) {
   std::vector<std::array<int, 2>> edges;
   for (const auto& t : mesh.tets)
     for (int i = 0; i < 4; ++i)
-      for (int j = i + 1; j < 4; ++j) edges.push_back({std::min(t[i], t[j]), std::max(t[i], t[j])});
+      for (int j = i + 1; j < 4; ++j)
+        edges.push_back({std::min(t[i], t[j]), std::max(t[i], t[j])});
   std::sort(edges.begin(), edges.end());
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
   return VertexAdjacency::from_edges(mesh.nodes.size(), edges);
@@ -37,10 +38,12 @@ VertexAdjacency adjacency_of(const core::TetMesh& mesh) {
 TEST(PenetrationDepth, plane_gives_exact_depth_and_normal_and_propagates_inward) {
   // Slab b fills z ∈ [−0.05, 0]; block a's two lowest node layers sit 3 mm and 13 mm deep.
   core::TetMesh b = viscera::testing::tet_block(8, 8, 5, 0.01);
-  for (auto& n : b.nodes) n += core::Vec3(-0.04, -0.04, -0.05);
+  for (auto& n : b.nodes)
+    n += core::Vec3(-0.04, -0.04, -0.05);
   core::TetMesh a = viscera::testing::tet_block(2, 2, 3, 0.01);
   const double depth = 0.003;
-  for (auto& n : a.nodes) n += core::Vec3(-0.0101, -0.0099, -0.01 - depth);
+  for (auto& n : a.nodes)
+    n += core::Vec3(-0.0101, -0.0099, -0.01 - depth);
   const auto colliding = colliding_points(a, b);
   ASSERT_EQ(colliding.size(), 18u);  // two layers of 3 × 3 nodes
   const PenetratedSurface surface{b.nodes, b.surface_faces};
@@ -64,10 +67,12 @@ TEST(PenetrationDepth, sphere_depth_matches_the_distance_to_its_surface) {
   const double radius = 0.05;
   const core::TetMesh b = core::mesh_closed_surface(core::make_icosphere(radius, 4));
   core::TetMesh a = viscera::testing::tet_block(3, 3, 3, 0.004);
-  for (auto& n : a.nodes) n += core::Vec3(-0.006, -0.006, radius - 0.006);
+  for (auto& n : a.nodes)
+    n += core::Vec3(-0.006, -0.006, radius - 0.006);
   const auto colliding = colliding_points(a, b);
   ASSERT_FALSE(colliding.empty());
-  const auto result = penetration_depths(a.nodes, adjacency_of(a), colliding, {b.nodes, b.surface_faces});
+  const auto result =
+      penetration_depths(a.nodes, adjacency_of(a), colliding, {b.nodes, b.surface_faces});
   ASSERT_EQ(result.size(), colliding.size());
   for (const auto& p : result) {
     const core::Vec3& x = a.nodes[p.point];
@@ -82,29 +87,6 @@ TEST(PenetrationDepth, segment_triangle_intersection_finds_the_crossing_paramete
   EXPECT_NEAR(segment_triangle_intersection({0.2, 0.2, -1}, {0.2, 0.2, 3}, a, b, c), 0.25, 1e-15);
   EXPECT_LT(segment_triangle_intersection({0.8, 0.8, -1}, {0.8, 0.8, 1}, a, b, c), 0.0);  // outside
   EXPECT_LT(segment_triangle_intersection({0.2, 0.2, 1}, {0.2, 0.2, 2}, a, b, c), 0.0);   // short
-}
-
-TEST(ContactResponse, penalty_forces_push_apart_and_conserve_momentum) {
-  core::Material material;
-  core::TetMesh b = viscera::testing::tet_block(6, 6, 3, 0.01);
-  for (auto& n : b.nodes) n += core::Vec3(-0.03, -0.03, -0.03);
-  // a's 8 mm footprint falls between b's 1 cm grid nodes, so only a's bottom layer collides.
-  core::TetMesh a = viscera::testing::tet_block(2, 2, 2, 0.004);
-  for (auto& n : a.nodes) n += core::Vec3(0.001, 0.001, -0.003);
-  std::vector<DeformableBody> bodies;
-  bodies.emplace_back("a", a, material);
-  bodies.emplace_back("b", b, material);
-  for (auto& body : bodies) body.compute_forces(core::Vec3::Zero(), 1e-3);  // rest: zero forces
-  ContactResponse contact(bodies, 500.0);
-  const ContactStatistics stats = contact.apply(bodies);
-  EXPECT_EQ(stats.colliding_points, 9);
-  EXPECT_NEAR(stats.max_penetration, 0.003, 1e-12);
-  core::Vec3 net = core::Vec3::Zero(), on_a = core::Vec3::Zero();
-  for (const auto& f : bodies[0].forces()) on_a += f;
-  for (const auto& body : bodies)
-    for (const auto& f : body.forces()) net += f;
-  EXPECT_NEAR(on_a.z(), 9 * 500.0 * 0.003, 1e-9);  // every point pushed up by k·d
-  EXPECT_LT(net.norm(), 1e-12);
 }
 
 }  // namespace

@@ -5,8 +5,7 @@
 #include <Eigen/Eigenvalues>
 #include <cmath>
 
-#include "simulator/physics/deformable_body.h"
-#include "simulator/physics/verlet.h"
+#include "simulator/dynamics/explicit_verlet.h"
 #include "simulator/world/world.h"
 #include "tests/simulator/sim_fixtures.h"
 
@@ -43,57 +42,62 @@ TEST(StableStep, power_iteration_matches_a_dense_eigensolve_of_the_body_forces) 
   mesh.fixed.assign(mesh.nodes.size(), 0);
   for (std::size_t n = 0; n < mesh.nodes.size(); ++n)
     mesh.fixed[n] = mesh.nodes[n].z() < 0.002 ? 1 : 0;
-  DeformableBody body("block", mesh, material);
+  viscera::testing::TeschnerBody body(mesh, material);
+  SimulationState& state = body.state;
+  const auto terms = body.terms();
   std::vector<int> free;
-  for (std::size_t n = 0; n < body.node_count(); ++n)
-    if (body.inverse_masses()[n] > 0.0) free.push_back(static_cast<int>(n));
+  for (std::size_t n = 0; n < state.node_count(); ++n)
+    if (state.inverse_masses[n] > 0.0) free.push_back(static_cast<int>(n));
   const int dofs = 3 * static_cast<int>(free.size());
   Eigen::MatrixXd k(dofs, dofs), m = Eigen::MatrixXd::Zero(dofs, dofs);
   const double eps = 1e-8;
+  const std::vector<Vec3> zero(state.node_count(), Vec3::Zero());
   for (int c = 0; c < dofs; ++c) {
     const int node = free[static_cast<std::size_t>(c / 3)];
     std::vector<Vec3> plus, minus;
     for (const double sign : {1.0, -1.0}) {
-      body.positions() = body.rest_positions();
-      body.positions()[static_cast<std::size_t>(node)][c % 3] += sign * eps;
-      body.previous_positions() = body.positions();
-      body.compute_forces(Vec3::Zero(), 1e-4);
-      (sign > 0 ? plus : minus) = body.forces();
+      std::vector<Vec3> x = state.rest_positions;
+      x[static_cast<std::size_t>(node)][c % 3] += sign * eps;
+      std::vector<Vec3> f(x.size(), Vec3::Zero());
+      for (ForceTerm* t : terms)
+        t->add_forces(x, zero, f);
+      (sign > 0 ? plus : minus) = f;
     }
     for (int r = 0; r < dofs; ++r) {
       const auto row_node = static_cast<std::size_t>(free[static_cast<std::size_t>(r / 3)]);
       k(r, c) = -(plus[row_node][r % 3] - minus[row_node][r % 3]) / (2.0 * eps);
     }
-    m(c, c) = body.masses()[static_cast<std::size_t>(node)];
+    m(c, c) = state.masses[static_cast<std::size_t>(node)];
   }
   const Eigen::MatrixXd symmetric = 0.5 * (k + k.transpose());
   const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(symmetric, m);
   const double dense = solver.eigenvalues().maxCoeff();
 
-  RankOneSystem stiffness(body.node_count()), damping(body.node_count());
-  ASSERT_TRUE(body.add_linearised_terms(stiffness, damping, 0));
-  const double power = largest_eigenvalue(stiffness, body.inverse_masses(), 5000, 1e-9);
+  // The terms' projected Hessians at rest (exact there: every constraint is zero).
+  BlockPattern pattern(state.node_count());
+  for (ForceTerm* t : terms)
+    t->declare_blocks(pattern);
+  BlockSparseMatrix stiffness;
+  stiffness.set_pattern(pattern);
+  for (ForceTerm* t : terms)
+    t->add_stiffness(state.rest_positions, 1.0, true, stiffness);
+  const double power = largest_eigenvalue(stiffness, state.inverse_masses, 5000, 1e-9);
   EXPECT_NEAR(power, dense, 1e-3 * dense);
-  // The default iteration count already lands within the World's safety margin, from below.
-  const double quick = largest_eigenvalue(stiffness, body.inverse_masses());
+  // The default iteration count already lands within the explicit integrator's safety margin,
+  // from below.
+  const double quick = largest_eigenvalue(stiffness, state.inverse_masses);
   EXPECT_LE(quick, dense * (1.0 + 1e-6));
   EXPECT_GT(quick, 0.95 * dense);
-  // Gershgorin's bound (stable_time_step, 0.9 safety) is smaller than the spectral step.
-  const double gershgorin = body.stable_time_step() / 0.9;
-  EXPECT_LT(gershgorin, verlet_stable_step(dense, 0.0));
 }
 
-/// Largest |x| of one damped oscillator x'' = −ω² x − c x' under position Verlet with the
-/// backward-difference velocity, over `steps` steps of h.
+/// One damped oscillator x'' = −ω² x − c x' under position Verlet with the backward-difference
+/// velocity (the velocity form the explicit integrator runs): the largest |x| over `steps` of h.
 double oscillator_amplitude(double omega_squared, double c, double h, int steps) {
-  std::vector<Vec3> x = {Vec3(1e-3, 0.0, 0.0)}, previous = x, v(1), f(1);
-  const std::vector<double> inverse_mass = {1.0};
-  double largest = 0.0;
+  double x = 1e-3, v = 0.0, largest = 0.0;
   for (int s = 0; s < steps; ++s) {
-    verlet_velocities(x, previous, h, v);
-    f[0] = -omega_squared * x[0] - c * v[0];
-    verlet_step(x, previous, f, inverse_mass, h);
-    largest = std::max(largest, x[0].norm());
+    v += h * (-omega_squared * x - c * v);
+    x += h * v;
+    largest = std::max(largest, std::abs(x));
   }
   return largest;
 }
@@ -119,18 +123,14 @@ TEST(StableStep, a_world_at_its_spectral_substeps_loses_energy_from_a_jiggled_st
   scenario.objects.push_back(block);
   scenario.session.gravity = Vec3::Zero();
   scenario.session.time_step = 1e-3;
-  World world(scenario);
-  // Fewer sub-steps than Gershgorin's bound asked for.
-  const double gershgorin = world.bodies()[0].stable_time_step();
-  EXPECT_GT(world.stable_step(), 1.2 * gershgorin);
-  EXPECT_LT(world.substeps(), static_cast<int>(std::ceil(1e-3 / gershgorin)));
+  World world(scenario, IntegratorKind::ExplicitVerlet);
+  ASSERT_GT(world.substeps(), 1);
   // A random 0.3 mm jiggle excites the highest modes, the ones that would blow up first.
-  auto& x = world.bodies()[0].positions();
-  std::vector<Vec3> moved = x;
+  auto x = world.bodies()[0].positions();
+  std::vector<Vec3> moved(x.begin(), x.end());
   viscera::testing::jiggle(moved, 3e-4, 11);
   for (std::size_t n = 0; n < x.size(); ++n)
     if (world.bodies()[0].inverse_masses()[n] > 0.0) x[n] = moved[n];
-  world.bodies()[0].previous_positions() = x;
   const double initial = world.energies().total();
   double previous = initial;
   ASSERT_GT(previous, 0.0);

@@ -38,24 +38,23 @@ TEST(World, a_different_time_step_gives_a_different_hash) {
   EXPECT_NE(hash_after(0.1, 1e-3), hash_after(0.099, 3e-4));
 }
 
-TEST(World, the_hash_covers_previous_positions) {
+TEST(World, the_hash_covers_velocities) {
   World a(small_block()), b(small_block());
-  b.bodies()[0].previous_positions()[7].x() += 1e-12;  // a velocity change only
+  b.bodies()[0].velocities()[7].x() += 1e-12;  // a velocity change only
   EXPECT_NE(a.state_hash(), b.state_hash());
 }
 
 TEST(World, energies_at_rest_are_zero_and_follow_a_rigid_motion) {
   World world(small_block());
   EXPECT_EQ(world.energies().total(), 0.0);
-  // Move every node 1 mm down and give it 0.2 m/s along x through the previous positions:
-  // kinetic ½ M v², gravitational −M g·d relative to rest, no elastic energy.
-  DeformableBody& body = world.bodies()[0];
-  const double h = world.time_step() / world.substeps();
+  // Move every node 1 mm down and give it 0.2 m/s along x: kinetic ½ M v², gravitational
+  // −M g·d relative to rest, no elastic energy.
+  BodyView& body = world.bodies()[0];
   const core::Vec3 drop(0.0, 0.0, -1e-3), velocity(0.2, 0.0, 0.0);
   double mass = 0.0;
   for (std::size_t i = 0; i < body.node_count(); ++i) {
     body.positions()[i] = body.rest_positions()[i] + drop;
-    body.previous_positions()[i] = body.positions()[i] - velocity * h;
+    body.velocities()[i] = velocity;
     mass += body.masses()[i];
   }
   const BodyEnergies e = world.energies();
@@ -77,6 +76,45 @@ TEST(World, non_finite_positions_raise_an_error_naming_the_body_and_step) {
     EXPECT_NE(message.find("block"), std::string::npos) << message;
     EXPECT_NE(message.find("step 4"), std::string::npos) << message;
   }
+}
+
+/// Mirrors the top layer of the block through its base and holds it there: the tets up there
+/// stay everted.
+void evert_top_layer(World& world) {
+  auto& state = world.state();
+  for (std::size_t n = 0; n < state.node_count(); ++n)
+    if (state.positions[n].z() > 0.02) {
+      state.positions[n].z() = -state.positions[n].z();
+      state.inverse_masses[n] = 0.0;
+    }
+}
+
+TEST(World, an_everted_tet_is_an_error_by_default_naming_body_node_and_step) {
+  World world(small_block());
+  world.step();
+  evert_top_layer(world);
+  EXPECT_GT(world.everted_tets(), 0);
+  try {
+    world.step();
+    FAIL() << "an everted tet went unnoticed";
+  } catch (const core::Error& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("block"), std::string::npos) << message;
+    EXPECT_NE(message.find("inside out"), std::string::npos) << message;
+    EXPECT_NE(message.find("step 2"), std::string::npos) << message;
+    EXPECT_NE(message.find("node "), std::string::npos) << message;
+  }
+}
+
+TEST(World, everted_tets_are_only_counted_when_inversion_errors_are_off) {
+  World world(small_block());
+  world.set_inversion_errors(false);
+  world.step();
+  evert_top_layer(world);
+  const int everted = world.everted_tets();
+  EXPECT_GT(everted, 0);
+  EXPECT_NO_THROW(world.step());
+  EXPECT_GT(world.everted_tets(), 0);
 }
 
 }  // namespace

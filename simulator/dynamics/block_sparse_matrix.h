@@ -1,0 +1,71 @@
+#pragma once
+/// Symmetric sparse matrices of 3×3 blocks over the global nodes (the stiffness K = ∂²E/∂x²
+/// and damping D = −∂f/∂v of SOFA's addKToMatrix). The pattern is declared once per topology by
+/// the force terms, the values are refilled every step; terms may keep slot indices until the
+/// next topology change. Both (i, j) and (j, i) are stored, so a product reads one row at a time.
+
+#include <cstdint>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "core/math_types.h"
+
+namespace viscera::sim {
+
+using core::Vec3;
+using Mat3 = Eigen::Matrix3d;
+
+/// The (i, j) node pairs whose block a matrix holds; (i, i) is always present.
+class BlockPattern {
+ public:
+  /// Every pattern gets a process-wide unique id, which the matrices set from it carry.
+  explicit BlockPattern(std::size_t nodes = 0);
+  std::uint64_t id() const { return id_; }
+  std::size_t node_count() const { return nodes_; }
+  /// Declares blocks (i, j) and (j, i).
+  void add(int i, int j);
+  /// Declares every pair of `nodes` (an element's blocks).
+  void add_clique(std::span<const int> nodes);
+  const std::vector<std::pair<int, int>>& pairs() const { return pairs_; }
+
+ private:
+  std::size_t nodes_;
+  std::uint64_t id_;
+  std::vector<std::pair<int, int>> pairs_;  ///< i < j
+};
+
+/// Block-compressed rows: row i holds blocks at columns columns_[row_start_[i] .. row_start_[i+1]),
+/// sorted, the diagonal among them.
+class BlockSparseMatrix {
+ public:
+  void set_pattern(const BlockPattern& pattern);
+  std::size_t node_count() const { return row_start_.empty() ? 0 : row_start_.size() - 1; }
+  std::size_t block_count() const { return columns_.size(); }
+  /// Id of the pattern the matrix was set from: terms that cache slot indices refresh them
+  /// when it changes (matrices set from one pattern share their slots).
+  std::uint64_t pattern_id() const { return pattern_id_; }
+  /// Slot of block (i, j); −1 when the pattern lacks it.
+  int slot(int i, int j) const;
+  /// Slot of the diagonal block (i, i).
+  int diagonal_slot(int i) const { return diagonal_[static_cast<std::size_t>(i)]; }
+  Mat3& block(int slot) { return blocks_[static_cast<std::size_t>(slot)]; }
+  const Mat3& block(int slot) const { return blocks_[static_cast<std::size_t>(slot)]; }
+  /// Adds `value` to block (i, j) and its transpose to (j, i) (once when i == j).
+  void add_symmetric(int i, int j, const Mat3& value);
+  void set_zero();
+  /// y = A x.
+  void multiply(std::span<const Vec3> x, std::span<Vec3> y) const;
+  /// y += scale · A x.
+  void multiply_add(std::span<const Vec3> x, double scale, std::span<Vec3> y) const;
+  /// Row i's columns and slots, for solvers.
+  std::span<const int> row_columns(int i) const;
+  int row_begin(int i) const { return row_start_[static_cast<std::size_t>(i)]; }
+
+ private:
+  std::vector<int> row_start_, columns_, diagonal_;
+  std::vector<Mat3> blocks_;
+  std::uint64_t pattern_id_ = 0;
+};
+
+}  // namespace viscera::sim

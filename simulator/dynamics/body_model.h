@@ -1,0 +1,44 @@
+#pragma once
+/// The rest description of one simulated body that its force terms are built from: the rest
+/// tet mesh of its current topology and the material of every tet (an object's wall layers
+/// each have their own, core::SceneObject::layer_materials). The world owns one per body and
+/// updates it before calling topology_changed().
+
+#include <string>
+#include <vector>
+
+#include "core/mesh/tet_mesh.h"
+#include "core/scenario/material.h"
+#include "core/scenario/scene_object.h"
+
+namespace viscera::sim {
+
+/// How a body's internal forces are modelled.
+enum class BodyModelKind {
+  Teschner,         ///< distance, area and volume energies (seed 000 §3)
+  KismoMassSpring,  ///< cubic springs on the mesh edges with damping elements (seed 001 §3.2)
+  CellAgent         ///< cell agents of seed 003 §V (mesh.nodes the cells' homes, no tets)
+};
+
+struct BodyModel {
+  std::string name;  ///< the object's id
+  int body = 0;      ///< index of its node range in the SimulationState
+  BodyModelKind kind = BodyModelKind::Teschner;
+  core::TetMesh mesh;                     ///< rest nodes and tets of the current topology
+  std::vector<core::Triangle> surface;    ///< outward boundary triangles (mesh or derived)
+  std::vector<core::Material> materials;  ///< distinct materials of the body
+  std::vector<int> tet_material;          ///< per tet: index into materials
+
+  const core::Material& material_of(int tet) const {
+    return materials[static_cast<std::size_t>(tet_material[static_cast<std::size_t>(tet)])];
+  }
+};
+
+/// The per-tet materials of `object`: `base` everywhere, except tets whose label is listed in
+/// object.layer_materials, which take that material from `materials`. Throws core::InputError
+/// naming the object for a layer material id that is not in `materials`.
+void assign_layer_materials(BodyModel& model, const core::SceneObject& object,
+                            const core::Material& base,
+                            const std::map<std::string, core::Material>& materials);
+
+}  // namespace viscera::sim

@@ -1,0 +1,107 @@
+#include "simulator/dynamics/kismo_spring_term.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "simulator/dynamics/spring_hessian.h"
+
+namespace viscera::sim {
+
+KismoSpringTerm::KismoSpringTerm(std::shared_ptr<const BodyModel> model,
+                                 const SimulationState& state)
+    : BodyTerm(std::move(model)) {
+  initialise(state);
+}
+
+void KismoSpringTerm::build(const SimulationState& state, int first) {
+  const BodyModel& m = model();
+  const std::span<const Vec3> rest = state.range(state.rest_positions, m.body);
+  // Per edge: its volume share, and the share-weighted coefficients of the tets around it.
+  struct EdgeSum {
+    double share = 0.0, damping = 0.0;
+    std::array<double, 3> stress{};  ///< Σ share × (c1, c2, c3) in Pa·m³
+  };
+  std::map<std::array<int, 2>, EdgeSum> edges;
+  for (std::size_t t = 0; t < m.mesh.tets.size(); ++t) {
+    const auto& tet = m.mesh.tets[t];
+    const double share =
+        core::signed_volume(rest[tet[0]], rest[tet[1]], rest[tet[2]], rest[tet[3]]) / 6.0;
+    const core::Material& material = m.material_of(static_cast<int>(t));
+    const bool cubic = material.stress_strain && material.stress_strain->cubic.size() == 4;
+    const std::array<double, 3> c =
+        cubic ? std::array<double, 3>{material.stress_strain->cubic[1],
+                                      material.stress_strain->cubic[2],
+                                      material.stress_strain->cubic[3]}
+              : std::array<double, 3>{material.distance_stiffness, 0.0, 0.0};
+    for (int a = 0; a < 4; ++a) {
+      for (int b = a + 1; b < 4; ++b) {
+        EdgeSum& e = edges[{std::min(tet[a], tet[b]), std::max(tet[a], tet[b])}];
+        e.share += share;
+        e.damping += material.distance_damping * share;
+        for (int k = 0; k < 3; ++k)
+          e.stress[k] += c[k] * share;
+      }
+    }
+  }
+  springs_ = {};
+  for (const auto& [edge, sum] : edges) {
+    const double l0 = (rest[edge[1]] - rest[edge[0]]).norm();
+    // k_n = c_n × cross-section, cross-section = share / l0 (seed 001 §3.2).
+    springs_.knots.push_back({first + edge[0], first + edge[1]});
+    springs_.rest_length.push_back(l0);
+    springs_.coefficients.push_back({sum.stress[0] / l0, sum.stress[1] / l0, sum.stress[2] / l0});
+    springs_.damping.push_back(sum.damping / (l0 * l0));
+  }
+}
+
+void KismoSpringTerm::shift(int delta) {
+  for (auto& k : springs_.knots)
+    k = {k[0] + delta, k[1] + delta};
+}
+
+double KismoSpringTerm::energy(std::span<const Vec3> x) const {
+  std::vector<Vec3> scratch(x.size(), Vec3::Zero());
+  return add_cubic_spring_forces(x, springs_, scratch);
+}
+
+double KismoSpringTerm::add_forces(std::span<const Vec3> x, std::span<const Vec3> v,
+                                   std::span<Vec3> f) const {
+  add_spring_damping_forces(x, v, springs_, f);
+  return add_cubic_spring_forces(x, springs_, f);
+}
+
+void KismoSpringTerm::declare_blocks(BlockPattern& pattern) const {
+  for (const auto& [i, j] : springs_.knots)
+    pattern.add(i, j);
+}
+
+void KismoSpringTerm::add_stiffness(std::span<const Vec3> x, double scale, bool project,
+                                    BlockSparseMatrix& m) const {
+  for (std::size_t s = 0; s < springs_.knots.size(); ++s) {
+    const auto [i, j] = springs_.knots[s];
+    const Vec3 d = x[j] - x[i];
+    const double length = d.norm();
+    if (length <= 0.0) continue;
+    const double l0 = springs_.rest_length[s];
+    const double e = (length - l0) / l0;
+    const auto& k = springs_.coefficients[s];
+    const double force = k[0] * e + k[1] * e * std::abs(e) + k[2] * e * e * e;
+    const double slope = (k[0] + 2.0 * k[1] * std::abs(e) + 3.0 * k[2] * e * e) / l0;
+    add_pair_block(m, i, j, radial_hessian(d / length, length, force, slope, project), scale);
+  }
+}
+
+void KismoSpringTerm::add_damping(std::span<const Vec3> x, double scale,
+                                  BlockSparseMatrix& m) const {
+  for (std::size_t s = 0; s < springs_.damping.size(); ++s) {
+    const auto [i, j] = springs_.knots[s];
+    const Vec3 d = x[j] - x[i];
+    const double length = d.norm();
+    if (length <= 0.0) continue;
+    const Vec3 unit = d / length;
+    add_pair_block(m, i, j, springs_.damping[s] * (unit * unit.transpose()), scale);
+  }
+}
+
+}  // namespace viscera::sim

@@ -1,0 +1,103 @@
+#include "simulator/dynamics/proxy_spring_term.h"
+
+#include <algorithm>
+
+namespace viscera::sim {
+
+ProxySpringTerm::ProxySpringTerm(std::vector<std::shared_ptr<const BodyModel>> models,
+                                 double stiffness, const SimulationState& state, const Vec3& tip)
+    : models_(std::move(models)), proxy_(stiffness), tip_(tip) {
+  proxy_.reset(tip);
+  rebuild(state);
+}
+
+void ProxySpringTerm::rebuild(const SimulationState& state) {
+  std::vector<core::Triangle> faces;
+  face_body_.clear();
+  face_first_.clear();
+  surface_nodes_.clear();
+  for (const auto& m : models_) {
+    const int first = state.body(m->body).first;
+    face_first_.push_back(static_cast<int>(faces.size()));
+    for (const auto& f : m->surface) {
+      faces.push_back({first + f[0], first + f[1], first + f[2]});
+      face_body_.push_back(m->body);
+      for (const int v : f)
+        surface_nodes_.push_back(first + v);
+    }
+  }
+  std::sort(surface_nodes_.begin(), surface_nodes_.end());
+  surface_nodes_.erase(std::unique(surface_nodes_.begin(), surface_nodes_.end()),
+                       surface_nodes_.end());
+  surface_ = std::make_unique<ProxySurface>(std::move(faces));
+  // A new surface: the proxy starts free where it is and finds its contact at the next step.
+  proxy_.reset(proxy_.proxy());
+  active_ = {-1, -1, -1};
+}
+
+void ProxySpringTerm::topology_changed(const SimulationState& state, int) {
+  rebuild(state);
+}
+
+void ProxySpringTerm::prepare(const SimulationState& state, const StepContext&) {
+  proxy_.update(tip_, *surface_, state.positions);
+  // The wall may have swung over the tip since the last step (it overshoots when pushed and
+  // springs back): that is a contact the path test alone misses.
+  proxy_.recapture(*surface_, state.positions);
+  if (proxy_.in_contact()) {
+    const auto& c = proxy_.contact();
+    active_ = surface_->faces()[static_cast<std::size_t>(c.triangle)];
+    weight_ = c.barycentric;
+  } else {
+    active_ = {-1, -1, -1};
+  }
+}
+
+void ProxySpringTerm::after_step(const SimulationState& state) {
+  if (proxy_.in_contact()) proxy_.update(tip_, *surface_, state.positions);
+}
+
+double ProxySpringTerm::energy(std::span<const Vec3> x) const {
+  if (active_[0] < 0) return 0.0;
+  const Vec3 p =
+      weight_[0] * x[active_[0]] + weight_[1] * x[active_[1]] + weight_[2] * x[active_[2]];
+  return 0.5 * proxy_.stiffness() * (p - tip_).squaredNorm();
+}
+
+double ProxySpringTerm::add_forces(std::span<const Vec3> x, std::span<const Vec3>,
+                                   std::span<Vec3> f) const {
+  if (active_[0] < 0) return 0.0;
+  const Vec3 p =
+      weight_[0] * x[active_[0]] + weight_[1] * x[active_[1]] + weight_[2] * x[active_[2]];
+  const Vec3 pull = proxy_.stiffness() * (p - tip_);
+  for (int k = 0; k < 3; ++k)
+    f[active_[k]] -= weight_[k] * pull;
+  return 0.5 * proxy_.stiffness() * (p - tip_).squaredNorm();
+}
+
+void ProxySpringTerm::declare_blocks(BlockPattern& pattern) const {
+  // The active triangle's nodes are joined by tet edges, whose blocks every body's internal
+  // terms declare: the proxy never changes the structure (structure_changed() stays false).
+  if (active_[0] >= 0) pattern.add_clique(active_);
+}
+
+void ProxySpringTerm::add_stiffness(std::span<const Vec3>, double scale, bool,
+                                    BlockSparseMatrix& m) const {
+  if (active_[0] < 0) return;
+  const double k = scale * proxy_.stiffness();
+  for (int a = 0; a < 3; ++a)
+    for (int b = a; b < 3; ++b)
+      m.add_symmetric(active_[a], active_[b], (k * weight_[a] * weight_[b]) * Mat3::Identity());
+}
+
+int ProxySpringTerm::touched_body() const {
+  return proxy_.in_contact() ? face_body_[static_cast<std::size_t>(proxy_.contact().triangle)] : -1;
+}
+
+int ProxySpringTerm::touched_body_triangle() const {
+  if (!proxy_.in_contact()) return -1;
+  const int body = touched_body();
+  return proxy_.contact().triangle - face_first_[static_cast<std::size_t>(body)];
+}
+
+}  // namespace viscera::sim

@@ -1,0 +1,68 @@
+#pragma once
+/// Pulse waves on a vessel tree as forces on its host body (Kühnapfel et al., KISMET; seed 001
+/// §5.1.1). Every beat, 60 / heart_rate s apart from t = 0, a wave starts at the top of the
+/// hierarchy and runs along every branch at pulse_velocity m/s (duplicated at bifurcations:
+/// its front is at the same arc length on every path, vessel_wave_paths.h). "The first force
+/// wave applies forces onto the vessel walls, the second wave removes the forces in the next
+/// simulation step at the same spot": a wall knot gets wall_force N along its direction (from
+/// the vessel axis out to the knot) during the one step in which the front passes its arc, and
+/// every knot the front sweeps in a step is pushed together ("forces to groups of knot rings"
+/// when the step is coarse). A new beat deletes the wave still running (the seed's rule when the
+/// heart rate is too high for the tree), so a front never travels further than one beat.
+///
+/// Energy of the step's load, relative to rest: E = −Σ F_k · (x_k − X_k) over the knots pushed
+/// (a load constant in x, zero Hessian).
+
+#include <vector>
+
+#include "core/scenario/scenario_parts.h"
+#include "simulator/dynamics/body_term.h"
+#include "simulator/dynamics/vessel_wave_paths.h"
+
+namespace viscera::sim {
+
+class PulseWaves : public BodyTerm {
+ public:
+  /// The pulse `spec` on `tree`, hosted by the body of `model`; `id` names the active
+  /// deformation in errors. Throws core::InputError for a non-positive heart rate or pulse
+  /// velocity, a negative wall force or a malformed tree (proximal_arc_lengths).
+  PulseWaves(std::shared_ptr<const BodyModel> model, const SimulationState& state,
+             const core::PulseSpec& spec, core::VesselTree tree, std::string id);
+
+  std::string name() const override { return "pulse " + id_ + " " + model().name; }
+  /// Chooses the knots the front passes in [time, time + h).
+  void prepare(const SimulationState& state, const StepContext& context) override;
+  double energy(std::span<const Vec3> x) const override;
+  double add_forces(std::span<const Vec3> x, std::span<const Vec3> v,
+                    std::span<Vec3> f) const override;
+  void declare_blocks(BlockPattern&) const override {}
+  void add_stiffness(std::span<const Vec3>, double, bool, BlockSparseMatrix&) const override {}
+
+  /// s between beats.
+  double period() const { return period_; }
+  /// The wall knots, with body-local node indices.
+  const std::vector<PulseWallKnot>& knots() const { return knots_; }
+  /// Global nodes pushed in the prepared step.
+  const std::vector<int>& pushed() const { return pushed_; }
+
+ protected:
+  void build(const SimulationState& state, int first) override;
+  void shift(int delta) override;
+
+ private:
+  core::PulseSpec spec_;
+  core::VesselTree tree_;
+  std::string id_;
+  double period_ = 1.0;
+  int first_ = 0;
+  std::vector<PulseWallKnot> knots_;
+  std::vector<int> pushed_;         ///< global nodes
+  std::vector<Vec3> pushed_force_;  ///< N, per pushed node
+  std::vector<Vec3> pushed_rest_;   ///< m, their rest positions
+};
+
+/// Mean length in m of the edges of `mesh`'s tets (each tet's six edges counted), or of its
+/// surface triangles' edges when it has no tets: the sampling spacing of the wall knots.
+double mean_edge_length(const core::TetMesh& mesh);
+
+}  // namespace viscera::sim

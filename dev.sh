@@ -3,6 +3,7 @@
 #   ./dev.sh demo    install missing Debian packages, build, create a patient and simulate it
 #   ./dev.sh test    install missing Debian packages, build, run the whole test suite (ctest)
 #   ./dev.sh build   install missing Debian packages and build
+#   ./dev.sh deps    only install missing Debian packages
 #   ./dev.sh bench   build and run the Google Benchmark suite (JSON under build/bench/)
 #   ./dev.sh test --sanitize   the suite built with AddressSanitizer + UndefinedBehaviorSanitizer
 #                              in its own folder (build-sanitize/); slow, not part of CI
@@ -214,10 +215,11 @@ case "${1:-}" in
     fi
     run_tests ;;
   build) configure_and_build ;;
+  deps) install_missing_packages ;;
   bench) shift; run_bench "$@" ;;
   fuzz) shift; run_fuzz "$@" ;;
   *)
-    echo "usage: ./dev.sh demo|test [--sanitize]|build|bench|fuzz [TARGET…] [--seconds N]" >&2
+    echo "usage: ./dev.sh demo|test [--sanitize]|build|deps|bench|fuzz [TARGET…] [--seconds N]" >&2
     exit 2
     ;;
 esac

@@ -57,8 +57,8 @@ void kill_repeatedly(const std::vector<std::string>& args, const fs::path& dir,
   const auto start_up = time_of("viscera", {"--version"}, dir);
   const auto duration = time_of("viscera", args, dir);
   std::mt19937 random(21);
-  std::uniform_int_distribution<long> moment(
-      start_up.count() * 9 / 10, std::max(start_up.count(), duration.count()));
+  std::uniform_int_distribution<long> moment(start_up.count() * 9 / 10,
+                                             std::max(start_up.count(), duration.count()));
   int killed = 0;
   for (int k = 0; k < kKills; ++k) {
     const auto run =

@@ -27,6 +27,20 @@
 namespace viscera::core {
 namespace {
 
+/// Component `c` of tuple `i` of an index array as an int. A damaged file may hold any double
+/// there (the package_folder fuzz target's finding): it must be a whole number from −1 up that
+/// an int holds before it is converted; range checks against the mesh follow later.
+int index_in(vtkDataArray& array, vtkIdType i, int c, const std::string& name,
+             const std::string& what) {
+  const double value = array.GetComponent(i, c);
+  if (!(value >= -1.0 && value <= static_cast<double>(std::numeric_limits<int>::max())) ||
+      value != std::floor(value)) {
+    throw InputError("\"" + name + "\" entry " + std::to_string(i) + " is not an index",
+                     {what, "", ""});
+  }
+  return static_cast<int>(value);
+}
+
 vtkNew<vtkPoints> to_points(const std::vector<Vec3>& positions) {
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
@@ -172,15 +186,7 @@ void polydata_to_surface(vtkPolyData& polydata, const std::string& what, Surface
     embedding.tet.resize(static_cast<std::size_t>(n));
     embedding.weights.resize(static_cast<std::size_t>(n));
     for (vtkIdType i = 0; i < n; ++i) {
-      // A damaged file may hold any double here (the package_folder fuzz target's finding): a
-      // tet index must be a whole number an int holds before it is converted.
-      const double tet = tets->GetComponent(i, 0);
-      if (!(tet >= -1.0 && tet <= static_cast<double>(std::numeric_limits<int>::max())) ||
-          tet != std::floor(tet)) {
-        throw InputError("embedding_tet of vertex " + std::to_string(i) + " is not a tet index",
-                         {what, "", ""});
-      }
-      embedding.tet[i] = static_cast<int>(tet);
+      embedding.tet[i] = index_in(*tets, i, 0, "embedding_tet", what);
       weights->GetTuple(i, embedding.weights[i].data());
     }
   }
@@ -280,7 +286,7 @@ TetMesh grid_to_tet_mesh(vtkUnstructuredGrid& grid, const std::string& what) {
       body.surface_faces.resize(static_cast<std::size_t>(faces->GetNumberOfTuples()));
       for (vtkIdType f = 0; f < faces->GetNumberOfTuples(); ++f) {
         for (int c = 0; c < 3; ++c)
-          body.surface_faces[f][c] = static_cast<int>(faces->GetComponent(f, c));
+          body.surface_faces[f][c] = index_in(*faces, f, c, "surface_faces", what);
       }
     }
   }

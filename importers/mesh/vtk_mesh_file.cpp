@@ -20,6 +20,7 @@
 #include "core/error.h"
 #include "importers/mesh/mesh_integrity.h"
 #include "importers/mesh/no_tetrahedra_error.h"
+#include "importers/volume/crash_guard.h"
 #include "importers/vtk_error_capture.h"
 
 namespace viscera::importers {
@@ -52,6 +53,10 @@ vtkSmartPointer<vtkDataSet> read_dataset(const std::filesystem::path& path) {
     legacy->SetFileName(file.c_str());
     reader = legacy;
   }
+  // VTK 9.1's XML and legacy readers can crash on damaged files (the tet_mesh_vtu and mesh_vtk
+  // fuzz targets' findings): the read runs first in a forked child (volume/crash_guard.h).
+  if (!detail::survives_in_child([&] { reader->Update(); }))
+    throw core::InputError("the file is damaged: VTK's reader crashes on it", {file, "", ""});
   std::string error;
   {
     VtkErrorCapture capture;  // reported once below, as a typed error

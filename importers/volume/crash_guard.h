@@ -1,12 +1,12 @@
 #pragma once
-/// Some readers of Debian's VTK 9.1 crash on damaged headers instead of reporting an error: the
-/// NIfTI reader takes a SIGBUS in RequestInformation on a few flipped bytes (volume_nifti fuzz
-/// target). The header stage of every VTK volume reader therefore runs first in a forked child,
-/// as GDCM's parse does (gdcm_parse_guard.h): a header that kills the child is refused, never
-/// read in this process. Internal to viscera_importers.
+/// Some readers of Debian's VTK 9.1 crash on damaged files instead of reporting an error (fuzz
+/// findings): the NIfTI reader takes a SIGBUS in RequestInformation and a SEGV in RequestData,
+/// the XML and legacy mesh readers a SEGV. So these reads run first in a forked child, as
+/// GDCM's parse does (gdcm_parse_guard.h): a file that kills the child is refused, never read in
+/// this process. Used for the header stage of every VTK volume reader, the whole NIfTI read and
+/// the whole VTK mesh read. Internal to viscera_importers.
 ///
-/// Cost: one fork and one header read per volume (no voxels); the parent's read then hits the
-/// page cache.
+/// Cost: one fork and the guarded read done twice (the second from the page cache).
 
 #include <functional>
 

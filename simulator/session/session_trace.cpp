@@ -73,7 +73,10 @@ nlohmann::json trace_to_json(const SessionTrace& t) {
           {"end_reason", t.end_reason}};
 }
 
-SessionTrace trace_from_json(const nlohmann::json& j, const std::string& file) {
+namespace {
+
+/// trace_from_json without the net for nlohmann's type errors.
+SessionTrace trace_from_checked_json(const nlohmann::json& j, const std::string& file) {
   if (!j.is_object() || j.value("format", std::string()) != "viscera-trace") {
     throw core::ValidationError("not a Viscera session trace", {file, "/format", ""});
   }
@@ -131,6 +134,16 @@ SessionTrace trace_from_json(const nlohmann::json& j, const std::string& file) {
                                 {file, "/inputs", ""});
   }
   return t;
+}
+
+}  // namespace
+
+SessionTrace trace_from_json(const nlohmann::json& j, const std::string& file) {
+  try {
+    return trace_from_checked_json(j, file);
+  } catch (const nlohmann::json::exception& e) {  // a member of the wrong JSON type
+    throw core::ValidationError(std::string("cannot read the trace: ") + e.what(), {file, "", ""});
+  }
 }
 
 void write_trace(const SessionTrace& trace, const std::filesystem::path& path) {

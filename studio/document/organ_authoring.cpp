@@ -71,11 +71,12 @@ core::Vec3 closest_on_triangle(const core::Vec3& p, const core::Vec3& a, const c
 
 std::string wall_side_of(const std::string& kind) {
   if (kind == "myoma-subserosal") return "serosa";
+  if (kind == "myoma-intramural") return "wall";
   if (kind == "polyp" || kind == "myoma-submucosal" || kind == "myoma-pedunculated")
     return "cavity";
   throw core::UsageError(
-      "a pathology placed on a wall is polyp, myoma-submucosal, myoma-pedunculated or "
-      "myoma-subserosal, not \"" +
+      "a pathology placed on a wall is polyp, myoma-submucosal, myoma-pedunculated, "
+      "myoma-intramural or myoma-subserosal, not \"" +
       kind + "\"");
 }
 
@@ -187,8 +188,10 @@ PathologyParts build_pathology_at(const core::Scenario& scenario, const std::str
   const core::SurfaceMesh wall = textures::welded_surface(host.surface);
   const templates::SurfaceQueries tissue(wall, host_id + " surface");
   // Intracavitary lesions sit on the cavity side of the wall, subserosal ones on the outside,
-  // wherever on the organ the click landed (a hollow organ marks its cavity wall).
-  const core::Vec3 site = snap_to_wall_side(wall, point, side).value_or(point);
+  // wherever on the organ the click landed (a hollow organ marks its cavity wall); an
+  // intramural one lies in the wall beneath the click, whichever side that is.
+  const bool in_wall = side == "wall";
+  const core::Vec3 site = in_wall ? point : snap_to_wall_side(wall, point, side).value_or(point);
   // A subserosal myoma is shaped as a sessile one: bulging out of the wall along its normal.
   const std::string shape_kind = kind == "myoma-subserosal" ? "myoma-submucosal" : kind;
   core::Vec3 hang = -core::Vec3::UnitZ();
@@ -220,11 +223,16 @@ PathologyParts build_pathology_at(const core::Scenario& scenario, const std::str
 
   // The template's own steps on a copy: the shape, tets by gmsh, then the base joined to the
   // nearest knots. A draw that does not fit, or whose tets gmsh leaves with a sliver the
-  // validation refuses, is drawn again, as the variant generator does.
+  // validation refuses, is drawn again, as the variant generator does. An intramural myoma is
+  // drawn once (its sphere is not random) and its host re-meshed around it.
   const templates::ValidationBounds bounds;
+  const auto acceptable = [&](const core::TetMesh& body) {
+    const core::TetQualityReport quality = core::tet_quality(body);
+    return quality.inverted == 0 && quality.min_dihedral_degrees >= bounds.min_dihedral_degrees;
+  };
   std::optional<templates::PlacedPathology> placed;
   core::Scenario copy;
-  for (int attempt = 0; attempt < 20 && !placed; ++attempt) {
+  for (int attempt = 0; attempt < (in_wall ? 1 : 20) && !placed; ++attempt) {
     placed =
         templates::shape_pathology_at(tissue, site, shape_kind, size, hang, shape_request, rng);
     if (!placed) continue;
@@ -232,17 +240,35 @@ PathologyParts build_pathology_at(const core::Scenario& scenario, const std::str
     if (parts.material) copy.materials[material_id] = *parts.material;
     templates::add_tet_object(copy, id, kind, core::ObjectRole::Pathology, material_id, texture,
                               placed->surface, material.density, core::Progress::none());
-    const core::TetQualityReport quality = core::tet_quality(copy.objects.back().body);
-    if (quality.inverted > 0 || quality.min_dihedral_degrees < bounds.min_dihedral_degrees)
-      placed.reset();
+    if (!acceptable(copy.objects.back().body)) placed.reset();
   }
   if (!placed) {
     throw core::InputError("no room for a " + kind + " of " + std::to_string(size * 1000.0) +
-                           " mm on the wall of \"" + host_id + "\" there");
+                           (in_wall ? " mm in the wall of \"" : " mm on the wall of \"") + host_id +
+                           "\" there");
   }
   progress.step();
+  if (in_wall) {
+    parts.host = remesh_around_holes(scenario, host_id, {placed->surface}, progress);
+    progress.begin_stage("joining the " + kind + " to its host", 2);
+    if (!acceptable(parts.host->object.body)) {
+      throw core::InputError("the wall of \"" + host_id + "\" re-meshed around a " +
+                             std::to_string(size * 1000.0) +
+                             " mm myoma there has a sliver tet: place it elsewhere");
+    }
+    for (auto& object : copy.objects) {
+      if (object.id == host_id) object = parts.host->object;
+    }
+    for (auto& connection : copy.connections) {
+      for (const auto& moved : parts.host->connections) {
+        if (moved.id == connection.id) connection = moved;
+      }
+    }
+  }
   progress.step();
-  templates::attach(copy, host_id, id, placed->base, 0.75 * mean_knot_spacing(host.body));
+  // The myoma's sphere lines its hole node for node; a seated base meets the nearest knots.
+  templates::attach(copy, host_id, id, placed->base,
+                    in_wall ? 1e-6 : 0.75 * mean_knot_spacing(host.body));
   progress.step();
 
   parts.object = std::move(copy.objects.back());

@@ -13,6 +13,7 @@
 #include "core/progress.h"
 #include "core/scenario/scenario.h"
 #include "studio/document/scenario_document.h"
+#include "studio/document/wall_remesh.h"
 
 namespace viscera::studio {
 
@@ -61,13 +62,15 @@ core::VesselTree grow_organ_vessels(const core::Scenario& scenario, const std::s
                                     core::Progress& progress = core::Progress::none());
 
 /// Kinds a click can place on an organ wall (templates::shape_pathology_at). Polyps, submucosal
-/// and pedunculated myomas grow into the cavity; a subserosal myoma bulges out of the serosa.
-inline constexpr const char* kWallPathologyKinds[] = {"polyp", "myoma-submucosal",
-                                                      "myoma-pedunculated", "myoma-subserosal"};
+/// and pedunculated myomas grow into the cavity; a subserosal myoma bulges out of the serosa;
+/// an intramural myoma lies inside the wall beneath the click.
+inline constexpr const char* kWallPathologyKinds[] = {
+    "polyp", "myoma-submucosal", "myoma-pedunculated", "myoma-intramural", "myoma-subserosal"};
 
 /// Which side of a hollow organ's wall a pathology of `kind` belongs on: "cavity" for
 /// intracavitary kinds (polyp, myoma-submucosal, myoma-pedunculated), "serosa" for
-/// myoma-subserosal. Throws core::UsageError for any other kind.
+/// myoma-subserosal, "wall" (inside it, beneath the click) for myoma-intramural. Throws
+/// core::UsageError for any other kind.
 std::string wall_side_of(const std::string& kind);
 
 /// The point of `surface`'s `side` ("cavity": triangles whose vertices the "cavity" vertex
@@ -78,19 +81,23 @@ std::optional<core::Vec3> snap_to_wall_side(const core::SurfaceMesh& surface,
                                             const core::Vec3& point, const std::string& side);
 
 /// A pathology as the scenario holds it: its object (a gmsh tet body, attached at its base),
-/// the material to add when the scenario lacks it, its record and its connection to the host.
+/// the material to add when the scenario lacks it, its record and its connection to the host;
+/// for an intramural myoma also the host re-meshed with a hole for it (wall_remesh.h).
 struct PathologyParts {
   core::SceneObject object;
   std::optional<core::Material> material;
   core::Pathology record;
   core::Connection connection;
+  std::optional<RemeshedHost> host;
 };
 
 /// Shapes a pathology of `kind` and `size` m at the wall point of object `host_id` nearest to
 /// `point` (m) on the side of the wall where that kind grows (snap_to_wall_side; a click on
 /// the outside of the uterus seats a polyp on the cavity wall beneath), on the host's welded
 /// surface (a baked, seam-split surface works), as the hysteroscopy template does, fills it with
-/// tets and connects its base to the host's nearest knots. Stalks lean towards the scenario's
+/// tets and connects its base to the host's nearest knots. An intramural myoma is a sphere in
+/// the wall beneath `point`: the host is re-meshed around it (remesh_around_holes) and the
+/// myoma joined to the knots lining its hole. Stalks lean towards the scenario's
 /// "cervix-internal-os" landmark, else down (−z). Material "myoma" or "endometrium" (the
 /// scenario's, else the shipped tissue). Throws core::UsageError for an unknown host or kind,
 /// core::InputError when the shape finds no room there in 20 draws of `seed`'s generator.

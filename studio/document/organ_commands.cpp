@@ -93,11 +93,39 @@ AddPathologyCommand::AddPathologyCommand(ScenarioDocument& document, PathologyPa
                   [&](const auto& p) { return p.id == parts_.record.id; }))
     throw core::UsageError("the scenario already has a \"" + parts_.object.id + "\"");
   if (parts_.material && scenario.materials.contains(parts_.material->id)) parts_.material.reset();
+  if (parts_.host) {
+    const core::SceneObject* host = scenario.find_object(parts_.host->object.id);
+    if (host == nullptr)
+      throw core::UsageError("the scenario has no object \"" + parts_.host->object.id + "\"");
+    old_host_ = RemeshedHost{*host, {}};
+    for (const auto& moved : parts_.host->connections) {
+      const auto it = std::find_if(scenario.connections.begin(), scenario.connections.end(),
+                                   [&](const auto& c) { return c.id == moved.id; });
+      if (it == scenario.connections.end())
+        throw core::UsageError("the scenario has no connection \"" + moved.id + "\"");
+      old_host_->connections.push_back(*it);
+    }
+  }
   setText(QObject::tr("Place %1").arg(q(parts_.record.id)));
+}
+
+void AddPathologyCommand::swap_host(const core::SceneObject& object,
+                                    const std::vector<core::Connection>& connections) {
+  auto& scenario = document_.edit_scenario();
+  for (auto& existing : scenario.objects) {
+    if (existing.id == object.id) existing = object;
+  }
+  for (auto& existing : scenario.connections) {
+    for (const auto& connection : connections) {
+      if (existing.id == connection.id) existing = connection;
+    }
+  }
+  document_.notify_changed(ChangeKind::Objects, q(object.id));
 }
 
 void AddPathologyCommand::redo() {
   auto& scenario = document_.edit_scenario();
+  if (parts_.host) swap_host(parts_.host->object, parts_.host->connections);
   if (parts_.material) scenario.materials[parts_.material->id] = *parts_.material;
   scenario.objects.push_back(parts_.object);
   scenario.pathologies.push_back(parts_.record);
@@ -114,6 +142,7 @@ void AddPathologyCommand::undo() {
   if (parts_.material) scenario.materials.erase(parts_.material->id);
   document_.notify_changed(ChangeKind::Objects, q(parts_.object.id));
   if (parts_.material) document_.notify_changed(ChangeKind::Materials, q(parts_.material->id));
+  if (old_host_) swap_host(old_host_->object, old_host_->connections);
 }
 
 ReplaceMaterialCommand::ReplaceMaterialCommand(ScenarioDocument& document, core::Material material)

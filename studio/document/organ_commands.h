@@ -42,17 +42,24 @@ class AddVesselTreeCommand : public QUndoCommand {
   core::VesselTree tree_;
 };
 
-/// Adds a pathology: its object, its material when new, its record and its connection.
+/// Adds a pathology: its object, its material when new, its record and its connection; for an
+/// intramural myoma it also swaps in the re-meshed host and its moved connections (undo puts
+/// the old host and connections back).
 class AddPathologyCommand : public QUndoCommand {
  public:
-  /// Throws core::UsageError when the object or pathology id is taken.
+  /// Throws core::UsageError when the object or pathology id is taken, or when a re-meshed
+  /// host or one of its connections is not in the scenario.
   AddPathologyCommand(ScenarioDocument& document, PathologyParts parts);
   void redo() override;
   void undo() override;
 
  private:
+  /// Puts `object` and `connections` in place of the scenario's ones with the same ids.
+  void swap_host(const core::SceneObject& object, const std::vector<core::Connection>& connections);
+
   ScenarioDocument& document_;
   PathologyParts parts_;
+  std::optional<RemeshedHost> old_host_;
 };
 
 /// Replaces a scenario material as a whole (a stress–strain fit changes its curve and its

@@ -5,6 +5,7 @@
 /// action is also a public function so tests drive the real window; errors go to a dialog with
 /// a one-line message and leave the document as it was. Long work runs off the UI thread.
 
+#include <QByteArray>
 #include <QMainWindow>
 #include <QStringList>
 #include <array>
@@ -208,6 +209,9 @@ class MainWindow : public QMainWindow {
   DisplayPanel* display_ = nullptr;
   std::array<QDockWidget*, 2> first_layout_docks_{nullptr,
                                                   nullptr};  ///< left, right: sized on show
+  /// The last session's dock layout, applied again on the first show: restoreState before the
+  /// window has its final size lets the layout squeeze the docks to fit the default size.
+  QByteArray restored_state_;
   class QAction* slice_planes_action_ = nullptr;
   std::function<void(const QString&)> error_handler_;
 };

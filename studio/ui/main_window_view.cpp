@@ -165,8 +165,10 @@ void MainWindow::restore_layout() {
   const QByteArray geometry = settings.value(kGeometryKey).toByteArray();
   const QByteArray state = settings.value(kStateKey).toByteArray();
   if (!geometry.isEmpty() && restoreGeometry(geometry) && !state.isEmpty() &&
-      restoreState(state, kLayoutVersion))
+      restoreState(state, kLayoutVersion)) {
+    restored_state_ = state;
     return;
+  }
   // First run: most of the screen, narrow docks, the 3D view the largest pane.
   const QScreen* screen = QGuiApplication::primaryScreen();
   const QRect available = screen != nullptr ? screen->availableGeometry() : QRect(0, 0, 1280, 800);
@@ -185,6 +187,10 @@ void MainWindow::restore_layout() {
 
 void MainWindow::showEvent(QShowEvent* event) {
   QMainWindow::showEvent(event);
+  if (!restored_state_.isEmpty()) {
+    restoreState(restored_state_, kLayoutVersion);
+    restored_state_.clear();
+  }
   const int side = std::clamp(width() / 6, 220, 320);
   if (first_layout_docks_[0] != nullptr)
     resizeDocks({first_layout_docks_[0]}, {side}, Qt::Horizontal);

@@ -23,10 +23,12 @@ PathologyPanel::PathologyPanel(ScenarioDocument& document, QWidget* parent)
   kind_->addItem(tr("Polyp"), QStringLiteral("polyp"));
   kind_->addItem(tr("Submucosal myoma"), QStringLiteral("myoma-submucosal"));
   kind_->addItem(tr("Pedunculated myoma"), QStringLiteral("myoma-pedunculated"));
+  kind_->addItem(tr("Intramural myoma"), QStringLiteral("myoma-intramural"));
   kind_->addItem(tr("Subserosal myoma"), QStringLiteral("myoma-subserosal"));
   kind_->setToolTip(
       tr("Polyps and submucosal or pedunculated myomas are seated on the cavity "
-         "wall nearest to the click; subserosal myomas on the outer wall"));
+         "wall nearest to the click; subserosal myomas on the outer wall; an intramural "
+         "myoma lies inside the wall beneath the click (the organ is re-meshed around it)"));
   form->addRow(tr("Kind"), kind_);
   size_mm_ = new QDoubleSpinBox(this);
   size_mm_->setRange(2.0, 60.0);

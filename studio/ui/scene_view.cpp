@@ -384,11 +384,13 @@ void SceneView::mouseReleaseEvent(QMouseEvent* event) {
   QVTKOpenGLNativeWidget::mouseReleaseEvent(event);
   if (event->button() == Qt::LeftButton &&
       (event->pos() - press_position_).manhattanLength() <= 3) {
+    // Both picks first: selecting fills the side panels, which can resize this view and move
+    // what lies under the cursor.
     const QString id = object_at(event->pos());
+    const auto hit = surface_point_at(event->pos());
     select_object(id);
     emit object_picked(id);
-    if (const auto hit = surface_point_at(event->pos()))
-      emit surface_clicked(hit->first, hit->second);
+    if (hit) emit surface_clicked(hit->first, hit->second);
   }
 }
 

@@ -239,11 +239,18 @@ class Placer {
   std::optional<PlacedPathology> intramural() {
     const double r_drawn = 0.5 * drawn(request_.myoma_diameter);
     const WallSite site = wall_->draw(rng_);
+    return intramural_at(site, r_drawn, 0.5 * 0.75 * request_.myoma_diameter);
+  }
+
+  /// A sphere of radius `r` m centred half-way through the wall beneath `site` (along the
+  /// inward normal to the other side of the wall), shrunk to keep 1.5 mm of wall on both
+  /// sides; nothing when that leaves it smaller than `r_min` (or 2 mm).
+  std::optional<PlacedPathology> intramural_at(const WallSite& site, double r, double r_min) {
     const auto wall = tissue_.ray_hit(site.position, -site.normal, 1e-5);
     if (!wall) return std::nullopt;
     const double margin = 0.0015;
-    const double r = std::min(r_drawn, 0.5 * *wall - margin);
-    if (r < 0.5 * 0.75 * request_.myoma_diameter || r < 0.002) return std::nullopt;
+    r = std::min(r, 0.5 * *wall - margin);
+    if (r < r_min || r < 0.002) return std::nullopt;
     const core::Vec3 centre = site.position - 0.5 * *wall * site.normal;
     PlacedPathology p;
     p.surface = core::make_icosphere(
@@ -385,9 +392,11 @@ std::optional<PlacedPathology> shape_pathology_at(const SurfaceQueries& tissue,
     placed = placer.pedunculated_at(site, 0.5 * size, hang);
   } else if (kind == "polyp") {
     placed = placer.polyp_at(site, size, hang);
+  } else if (kind == "myoma-intramural") {
+    placed = placer.intramural_at(site, 0.5 * size, 0.5 * 0.75 * size);
   } else {
     throw core::UsageError(
-        "a pathology placed on a wall is myoma-submucosal, "
+        "a pathology placed on a wall is myoma-submucosal, myoma-intramural, "
         "myoma-pedunculated or polyp, not \"" +
         kind + "\"");
   }

@@ -49,13 +49,16 @@ std::vector<PlacedPathology> place_pathologies(const UterusShape& uterus,
                                                const SurfaceQueries& tissue,
                                                const PathologyRequest& request, core::Rng& rng);
 
-/// One pathology of `kind` ("myoma-submucosal", "myoma-pedunculated" or "polyp") of `size` m
-/// (myoma diameter, polyp length) shaped and seated exactly as place_pathologies does, at the
-/// wall point of `tissue` nearest to `point`; a stalk leans from the wall normal towards
-/// `hang` (the internal os in the template, down in the studio). The record has kind,
-/// position (the wall point), size; id, host and object are the caller's. Returns nothing
-/// when the shape does not fit there (no room across the cavity, or its stalk would leave
-/// it). Throws core::UsageError for another kind.
+/// One pathology of `kind` ("myoma-submucosal", "myoma-intramural", "myoma-pedunculated" or
+/// "polyp") of `size` m (myoma diameter, polyp length) shaped and seated exactly as
+/// place_pathologies does, at the wall point of `tissue` nearest to `point`; a stalk leans from
+/// the wall normal towards `hang` (the internal os in the template, down in the studio). An
+/// intramural myoma is a sphere centred half-way through the wall beneath that point (in_wall,
+/// base: all its vertices), shrunk to keep 1.5 mm of wall each side but to no less than 0.75 of
+/// `size`. The record has kind, position (the wall point; an intramural myoma's centre), size;
+/// id, host and object are the caller's. Returns nothing when the shape does not fit there (no
+/// room across the cavity or in the wall, or its stalk would leave it). Throws
+/// core::UsageError for another kind.
 std::optional<PlacedPathology> shape_pathology_at(const SurfaceQueries& tissue,
                                                   const core::Vec3& point, const std::string& kind,
                                                   double size, const core::Vec3& hang,

@@ -1,9 +1,10 @@
 // The studio as a clinician uses it (issue 23), driving the real main window under Xvfb: the
 // template form fits a 768-px screen in clinical units; a clipping plane changes the picture; a
-// polyp clicked on the outside of the uterus lands on the cavity wall, also after a bake; the
-// scene tree, the 3D view and the saved package agree after every command, undo, redo and
-// reopen; the first layout and the empty material panel; the README's screenshot. The volume
-// workflow is in volume_workflow_test.cpp.
+// polyp clicked on the outside of the uterus lands on the cavity wall, also after a bake, and an
+// intramural myoma in the wall, its host re-meshed around it; the scene tree, the 3D view and
+// the saved package agree after every command, undo, redo and reopen; the first layout and the
+// empty material panel; the README's screenshot. The volume workflow is in
+// volume_workflow_test.cpp.
 
 #include <QVTKOpenGLNativeWidget.h>
 #include <vtkCamera.h>
@@ -37,8 +38,10 @@
 #include "studio/ui/scene_view.h"
 #include "studio/ui/template_dialog.h"
 #include "studio/ui/texture_panel.h"
+#include "templates/generator/simulation_check.h"
 #include "templates/geometry/surface_queries.h"
 #include "templates/template_catalog.h"
+#include "templates/validation/patient_validation.h"
 #include "tests/studio_gui/clinical_checks.h"
 #include "tests/studio_gui/image_checks.h"
 #include "tests/studio_gui/window_fixture.h"
@@ -211,6 +214,99 @@ class ClinicalUseTest : public QObject, public viscera::studio_tests::WindowFixt
     QVERIFY(!on_cavity_side(wall, tissue, myoma.position));
   }
 
+  void clickedIntramuralMyomaLiesInTheWallAndTheHostIsRemeshedAroundIt() {
+    studio::MainWindow window(options());
+    open_patient(window);
+    studio::SceneView* view = window.scene_view();
+    const core::Scenario before = window.document().scenario();
+    const core::SceneObject& old_host = *before.find_object("uterus");
+    const core::SurfaceMesh wall = textures::welded_surface(old_host.surface);
+    const templates::SurfaceQueries tissue(wall, "uterus");
+
+    // Click the outside of the uterus with an intramural myoma chosen (nothing selected: the
+    // click selects the uterus, which fills the side panels and may resize the view).
+    studio::PathologyPanel* panel = window.organ_panels()->pathologies();
+    panel->set_choice("myoma-intramural", 0.006);
+    panel->set_armed(true);
+    const QPoint centre = view->rect().center();
+    const auto hit = view->surface_point_at(centre);
+    QVERIFY(hit.has_value());
+    QCOMPARE(hit->first, QString("uterus"));
+    QTest::mouseClick(view, Qt::LeftButton, {}, centre);
+    QVERIFY2(errors_.isEmpty(), qPrintable(errors_.join('\n')));
+    const core::Scenario after = window.document().scenario();
+    QCOMPARE(after.pathologies.size(), before.pathologies.size() + 1);
+    const core::Pathology& myoma = after.pathologies.back();
+    QCOMPARE(myoma.kind, std::string("myoma-intramural"));
+    const core::SceneObject* sphere = after.find_object(myoma.object);
+    QVERIFY(sphere != nullptr);
+    QVERIFY(myoma.size >= 0.75 * 0.006 - 1e-12);
+    // Inside the wall, with at least a millimetre of tissue all round.
+    for (const auto& v : sphere->surface.vertices)
+      QVERIFY(tissue.inside(v) && tissue.closest(v).distance > 1e-3);
+
+    // The host is re-meshed around it: its tissue loses exactly the myoma's volume, keeps its
+    // wall layers and its fixed cervix, and everything stays valid and simulates.
+    const core::TetMesh& body = after.find_object("uterus")->body;
+    const double removed = core::total_volume(old_host.body) - core::total_volume(body);
+    const double myoma_volume = core::total_volume(sphere->body);
+    qInfo("host %zu -> %zu tets; removed %.4g ml for a %.4g ml myoma", old_host.body.tets.size(),
+          body.tets.size(), removed * 1e6, myoma_volume * 1e6);
+    QVERIFY(std::abs(removed - myoma_volume) < 1e-6 * core::total_volume(old_host.body));
+    const auto layer_volume = [](const core::TetMesh& mesh, int label) {
+      double volume = 0.0;
+      for (std::size_t t = 0; t < mesh.tets.size(); ++t)
+        if (mesh.tet_labels[t] == label) volume += core::signed_volume(mesh, static_cast<int>(t));
+      return volume;
+    };
+    QCOMPARE(body.tet_labels.size(), body.tets.size());
+    const double endometrium_before = layer_volume(old_host.body, 1);
+    QVERIFY(std::abs(layer_volume(body, 1) - endometrium_before) < 0.1 * endometrium_before);
+    double fixed_top = 0.0;
+    for (std::size_t n = 0; n < old_host.body.nodes.size(); ++n)
+      if (old_host.body.fixed[n]) fixed_top = std::max(fixed_top, old_host.body.nodes[n].z());
+    int fixed = 0;
+    for (std::size_t n = 0; n < body.nodes.size(); ++n) {
+      if (!body.fixed[n]) continue;
+      ++fixed;
+      QVERIFY(body.nodes[n].z() <= fixed_top + 1e-3);
+    }
+    QVERIFY(fixed > 0);
+    double mass_before = 0.0, mass_after = 0.0;
+    for (const double m : old_host.body.node_mass)
+      mass_before += m;
+    for (const double m : body.node_mass)
+      mass_after += m;
+    QVERIFY(mass_after < mass_before);
+    const templates::PatientValidation validation = templates::validate_patient_geometry(after);
+    QVERIFY2(validation.valid(), validation.first_failure().c_str());
+    // The simulated second of the generator's check, with the polyp left out: on its stalk it
+    // swings past the check's bound in this patient, before the myoma as after it.
+    const auto without_polyps = [](core::Scenario scenario) {
+      for (const auto& pathology : scenario.pathologies) {
+        if (pathology.kind != "polyp") continue;
+        std::erase_if(scenario.objects, [&](const auto& o) { return o.id == pathology.object; });
+        std::erase_if(scenario.connections, [&](const auto& c) {
+          return c.object_a == pathology.object || c.object_b == pathology.object;
+        });
+      }
+      std::erase_if(scenario.pathologies, [](const auto& p) { return p.kind == "polyp"; });
+      return scenario;
+    };
+    QVERIFY(templates::simulate_one_second(without_polyps(before)).passed);
+    const templates::ValidationCheck second = templates::simulate_one_second(without_polyps(after));
+    QVERIFY2(second.passed, second.detail.c_str());
+    QCOMPARE(second.measures.at("bodies").get<int>(), 3);
+
+    // Undo puts the old body and connections back exactly; redo the new ones.
+    QUndoStack* undo = window.document().undo_stack();
+    undo->undo();
+    QVERIFY(window.document().scenario() == before);
+    undo->redo();
+    QVERIFY(window.document().scenario() == after);
+    QVERIFY(errors_.isEmpty());
+  }
+
   void visibilityAgreesAfterEveryCommandUndoRedoAndReopen() {
     studio::MainWindow window(options());
     open_patient(window);
@@ -318,11 +414,29 @@ class ClinicalUseTest : public QObject, public viscera::studio_tests::WindowFixt
     // Nothing selected: no material, no numbers.
     QVERIFY(!window.material_panel()->editors_box()->isVisible());
     QVERIFY(!window.display_panel()->opacity_slider()->isEnabled());
-    // The layout is remembered.
+    // The layout is remembered: the window's size and the docks' widths.
     window.resize(1100, 760);
+    QCoreApplication::processEvents();
+    QDockWidget* right = nullptr;
+    for (QDockWidget* dock : window.findChildren<QDockWidget*>()) {
+      if (right == nullptr && dock->isVisible() &&
+          window.dockWidgetArea(dock) == Qt::RightDockWidgetArea)
+        right = dock;
+    }
+    QVERIFY(right != nullptr);
+    window.resizeDocks({right}, {340}, Qt::Horizontal);
+    QCoreApplication::processEvents();
+    const int right_width = right->width();
     window.close();
     studio::MainWindow again(options());
     QCOMPARE(again.size(), QSize(1100, 760));
+    again.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&again));
+    QCoreApplication::processEvents();
+    QDockWidget* restored = again.findChild<QDockWidget*>(right->objectName());
+    QVERIFY(restored != nullptr);
+    qInfo("right dock %d px, restored %d px", right_width, restored->width());
+    QVERIFY(std::abs(restored->width() - right_width) <= 2);
   }
 
   void screenshotOfTheClippedPatient() {

@@ -15,6 +15,7 @@
 #include "core/error.h"
 #include "core/json_text.h"
 #include "core/package/scenario_package.h"
+#include "simulator/app/fluid_command.h"
 #include "simulator/app/live_inputs.h"
 #include "simulator/app/session_output.h"
 #include "simulator/input/input_spec.h"
@@ -376,6 +377,8 @@ int main(int argc, char** argv) {
     std::cout << "html " << write_html(json, report_reference, folder) << "\n";
     exit_code = 0;
   });
+
+  add_fluid_command(app, exit_code);
 
   return viscera::cli::run_command_line(app, argc, argv, exit_code);
 }

@@ -1,0 +1,156 @@
+#include "simulator/fluid/flow_grid.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.h"
+
+namespace viscera::sim::fluid {
+namespace {
+
+constexpr std::array<std::array<int, 3>, 3> kAxis{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+
+}  // namespace
+
+FlowGrid::FlowGrid(int nx, int ny, int nz, double cell_size, const core::Vec3& origin)
+    : nx_(nx), ny_(ny), nz_(nz), h_(cell_size), origin_(origin) {
+  if (nx < 1 || ny < 1 || nz < 1)
+    throw core::UsageError("a flow grid needs at least one cell along each axis");
+  if (!(cell_size > 0.0) || !std::isfinite(cell_size))
+    throw core::UsageError("a flow grid's cell size must be a positive length in m");
+  cells_.assign(static_cast<std::size_t>(cell_count()), FlowCell::Fluid);
+  solid_velocity_.assign(cells_.size(), core::Vec3::Zero());
+  pressure_.assign(cells_.size(), 0.0);
+  for (int axis = 0; axis < 3; ++axis) {
+    velocity_[axis].assign(static_cast<std::size_t>(face_dims(axis).count()), 0.0);
+    states_[axis].assign(velocity_[axis].size(), FaceState::Active);
+  }
+  update_faces();
+}
+
+FaceDims FlowGrid::face_dims(int axis) const {
+  return {nx_ + (axis == 0), ny_ + (axis == 1), nz_ + (axis == 2)};
+}
+
+void FlowGrid::set_cell(int i, int j, int k, FlowCell cell, const core::Vec3& velocity) {
+  const auto c = static_cast<std::size_t>(cell_index(i, j, k));
+  cells_[c] = cell;
+  solid_velocity_[c] = cell == FlowCell::Solid ? velocity : core::Vec3::Zero();
+}
+
+FlowCell FlowGrid::cell(int i, int j, int k) const {
+  return cells_[static_cast<std::size_t>(cell_index(i, j, k))];
+}
+
+FlowCell FlowGrid::cell_or_solid(int i, int j, int k) const {
+  if (i < 0 || j < 0 || k < 0 || i >= nx_ || j >= ny_ || k >= nz_) return FlowCell::Solid;
+  return cell(i, j, k);
+}
+
+const core::Vec3& FlowGrid::solid_velocity(int i, int j, int k) const {
+  static const core::Vec3 rest = core::Vec3::Zero();
+  if (i < 0 || j < 0 || k < 0 || i >= nx_ || j >= ny_ || k >= nz_) return rest;
+  return solid_velocity_[static_cast<std::size_t>(cell_index(i, j, k))];
+}
+
+void FlowGrid::update_faces() {
+  for (int axis = 0; axis < 3; ++axis) {
+    const FaceDims d = face_dims(axis);
+    const auto& e = kAxis[static_cast<std::size_t>(axis)];
+    for (int k = 0; k < d.z; ++k) {
+      for (int j = 0; j < d.y; ++j) {
+        for (int i = 0; i < d.x; ++i) {
+          const bool solid_a = cell_or_solid(i - e[0], j - e[1], k - e[2]) == FlowCell::Solid;
+          const bool solid_b = cell_or_solid(i, j, k) == FlowCell::Solid;
+          const auto f = static_cast<std::size_t>(d.index(i, j, k));
+          // A planar grid has no z flow: its z faces are walls.
+          if (axis == 2 && planar()) {
+            states_[axis][f] = FaceState::Inside;
+            velocity_[axis][f] = 0.0;
+            continue;
+          }
+          if (!solid_a && !solid_b) {
+            states_[axis][f] = FaceState::Active;
+            continue;
+          }
+          const double va = solid_velocity(i - e[0], j - e[1], k - e[2])[axis];
+          const double vb = solid_velocity(i, j, k)[axis];
+          states_[axis][f] = solid_a && solid_b ? FaceState::Inside : FaceState::Prescribed;
+          velocity_[axis][f] = solid_a && solid_b ? 0.5 * (va + vb) : (solid_a ? va : vb);
+        }
+      }
+    }
+  }
+}
+
+core::Vec3 FlowGrid::face_position(int axis, int i, int j, int k) const {
+  core::Vec3 offset(i + 0.5, j + 0.5, k + 0.5);
+  offset[axis] -= 0.5;
+  return origin_ + h_ * offset;
+}
+
+double FlowGrid::sample(int axis, const core::Vec3& point) const {
+  return sample(axis, velocity_[static_cast<std::size_t>(axis)], point);
+}
+
+double FlowGrid::sample(int axis, const std::vector<double>& v, const core::Vec3& point,
+                        double* low, double* high) const {
+  const FaceDims d = face_dims(axis);
+  const std::array<int, 3> n{d.x, d.y, d.z};
+  std::array<int, 3> lo{};
+  std::array<double, 3> t{};
+  for (int a = 0; a < 3; ++a) {
+    // Face coordinates: faces of this component sit at whole indices along its own axis and at
+    // half indices across it.
+    double c = (point[a] - origin_[a]) / h_ - (a == axis ? 0.0 : 0.5);
+    c = std::clamp(c, 0.0, static_cast<double>(n[a] - 1));
+    lo[a] = std::min(static_cast<int>(c), std::max(n[a] - 2, 0));
+    t[a] = n[a] > 1 ? c - lo[a] : 0.0;
+  }
+  const auto at = [&](int di, int dj, int dk) {
+    const int i = std::min(lo[0] + di, n[0] - 1), j = std::min(lo[1] + dj, n[1] - 1),
+              k = std::min(lo[2] + dk, n[2] - 1);
+    return v[static_cast<std::size_t>(d.index(i, j, k))];
+  };
+  const double x00 = at(0, 0, 0) + t[0] * (at(1, 0, 0) - at(0, 0, 0));
+  const double x10 = at(0, 1, 0) + t[0] * (at(1, 1, 0) - at(0, 1, 0));
+  const double x01 = at(0, 0, 1) + t[0] * (at(1, 0, 1) - at(0, 0, 1));
+  const double x11 = at(0, 1, 1) + t[0] * (at(1, 1, 1) - at(0, 1, 1));
+  if (low != nullptr && high != nullptr) {
+    *low = *high = at(0, 0, 0);
+    for (int c = 1; c < 8; ++c) {
+      const double corner = at(c & 1, (c >> 1) & 1, (c >> 2) & 1);
+      *low = std::min(*low, corner);
+      *high = std::max(*high, corner);
+    }
+  }
+  const double y0 = x00 + t[1] * (x10 - x00);
+  const double y1 = x01 + t[1] * (x11 - x01);
+  return y0 + t[2] * (y1 - y0);
+}
+
+core::Vec3 FlowGrid::velocity_at(const core::Vec3& point) const {
+  return {sample(0, point), sample(1, point), planar() ? 0.0 : sample(2, point)};
+}
+
+double FlowGrid::max_divergence() const {
+  double worst = 0.0;
+  const FaceDims du = face_dims(0), dv = face_dims(1), dw = face_dims(2);
+  for (int k = 0; k < nz_; ++k) {
+    for (int j = 0; j < ny_; ++j) {
+      for (int i = 0; i < nx_; ++i) {
+        if (cell(i, j, k) != FlowCell::Fluid) continue;
+        const double div = (velocity_[0][static_cast<std::size_t>(du.index(i + 1, j, k))] -
+                            velocity_[0][static_cast<std::size_t>(du.index(i, j, k))]) +
+                           (velocity_[1][static_cast<std::size_t>(dv.index(i, j + 1, k))] -
+                            velocity_[1][static_cast<std::size_t>(dv.index(i, j, k))]) +
+                           (velocity_[2][static_cast<std::size_t>(dw.index(i, j, k + 1))] -
+                            velocity_[2][static_cast<std::size_t>(dw.index(i, j, k))]);
+        worst = std::max(worst, std::abs(div) / h_);
+      }
+    }
+  }
+  return worst;
+}
+
+}  // namespace viscera::sim::fluid

@@ -1,0 +1,100 @@
+#pragma once
+/// The voxel grid of the distension flow (seed 000 §2.2: "by labeling the voxels of a grid
+/// overlaid on the scene, these elements can be incorporated consistently into the numerical
+/// solver"). A staggered (MAC) grid after Harlow & Welch 1965: pressure at cell centres, each
+/// velocity component on the faces normal to it, so the projection has no checkerboard modes.
+///
+/// Cells are fluid, solid (wall, pathology, instrument, inflow — each with its own velocity, m/s)
+/// or open (an outflow: pressure held at 0). A grid one cell thick in z is planar: no z flow and
+/// no z coupling, a 2D flow (the lid-driven cavity of the validation).
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "core/math_types.h"
+
+namespace viscera::sim::fluid {
+
+enum class FlowCell : std::uint8_t {
+  Fluid,  ///< the flow's unknowns
+  Solid,  ///< no flow through; its velocity drives the faces and the no-slip wall next to it
+  Open,   ///< an outflow: pressure 0, velocity free
+};
+
+/// State of one velocity face, derived from the two cells it separates.
+enum class FaceState : std::uint8_t {
+  Active,      ///< between two non-solid cells: advected, diffused and projected
+  Prescribed,  ///< between a solid and a non-solid cell: the solid's normal velocity
+  Inside,      ///< between two solid cells (or past the grid): their mean velocity
+};
+
+/// Sizes of one component's face array: the cell counts plus one along the component's axis.
+struct FaceDims {
+  int x = 0, y = 0, z = 0;
+  int count() const { return x * y * z; }
+  int index(int i, int j, int k) const { return i + x * (j + y * k); }
+};
+
+class FlowGrid {
+ public:
+  /// `nx`×`ny`×`nz` cells of edge `cell_size` m, the corner of cell (0,0,0) at `origin`; every
+  /// cell fluid and at rest. Throws core::UsageError for a count below 1 or a size ≤ 0.
+  FlowGrid(int nx, int ny, int nz, double cell_size, const core::Vec3& origin = core::Vec3::Zero());
+
+  int nx() const { return nx_; }
+  int ny() const { return ny_; }
+  int nz() const { return nz_; }
+  double cell_size() const { return h_; }
+  const core::Vec3& origin() const { return origin_; }
+  bool planar() const { return nz_ == 1; }
+  int cell_count() const { return nx_ * ny_ * nz_; }
+  int cell_index(int i, int j, int k) const { return i + nx_ * (j + ny_ * k); }
+  FaceDims face_dims(int axis) const;
+
+  /// Labels a cell; `velocity` (m/s) is a solid cell's own (a moving lid, the sheath's inflow).
+  /// Call update_faces() after a batch of labels.
+  void set_cell(int i, int j, int k, FlowCell cell,
+                const core::Vec3& velocity = core::Vec3::Zero());
+  FlowCell cell(int i, int j, int k) const;
+  /// Solid (at rest) outside the grid.
+  FlowCell cell_or_solid(int i, int j, int k) const;
+  const core::Vec3& solid_velocity(int i, int j, int k) const;
+
+  /// Recomputes each face's state from the cells and writes the solid velocities into the
+  /// prescribed and inside faces; active faces keep their values.
+  void update_faces();
+  const std::vector<FaceState>& face_states(int axis) const { return states_[axis]; }
+
+  /// Face velocities of component `axis` (0 x, 1 y, 2 z), m/s.
+  std::vector<double>& velocity(int axis) { return velocity_[axis]; }
+  const std::vector<double>& velocity(int axis) const { return velocity_[axis]; }
+  /// Kinematic pressure p/ρ per cell, m²/s² (0 in open cells).
+  std::vector<double>& pressure() { return pressure_; }
+  const std::vector<double>& pressure() const { return pressure_; }
+
+  /// Position of face (i,j,k) of component `axis`, m.
+  core::Vec3 face_position(int axis, int i, int j, int k) const;
+  /// Component `axis` of the velocity at `point` (m), trilinear over that component's faces,
+  /// clamped to the grid; m/s.
+  double sample(int axis, const core::Vec3& point) const;
+  /// The same interpolation over `values`, one per face of component `axis`; `low` and `high`
+  /// receive the smallest and largest of the corners used (the MacCormack limiter's bounds).
+  double sample(int axis, const std::vector<double>& values, const core::Vec3& point,
+                double* low = nullptr, double* high = nullptr) const;
+  core::Vec3 velocity_at(const core::Vec3& point) const;
+  /// Largest |∇·u| over fluid cells, 1/s.
+  double max_divergence() const;
+
+ private:
+  int nx_, ny_, nz_;
+  double h_;
+  core::Vec3 origin_;
+  std::vector<FlowCell> cells_;
+  std::vector<core::Vec3> solid_velocity_;
+  std::array<std::vector<double>, 3> velocity_;
+  std::array<std::vector<FaceState>, 3> states_;
+  std::vector<double> pressure_;
+};
+
+}  // namespace viscera::sim::fluid

@@ -1,0 +1,16 @@
+#pragma once
+/// Self-advection of the velocity by semi-Lagrangian back-tracing (Stam 1999; seed 000 §2.2):
+/// each active face takes the velocity found where its fluid came from one step earlier,
+/// traced back with the midpoint rule — unconditionally stable. The second-order option is
+/// MacCormack's predictor–corrector as Selle et al. 2008 apply it to semi-Lagrangian steps: a
+/// forward and a backward trace estimate the first-order error, half of it is corrected, and the
+/// result is clamped to the range of the values it was interpolated from.
+
+#include "simulator/fluid/flow_grid.h"
+
+namespace viscera::sim::fluid {
+
+/// Advects every component of `grid`'s active face velocities through `time_step` s.
+void advect_velocity(FlowGrid& grid, double time_step, bool second_order, int threads = 0);
+
+}  // namespace viscera::sim::fluid

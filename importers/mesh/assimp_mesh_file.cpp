@@ -1,15 +1,60 @@
 #include "importers/mesh/assimp_mesh_file.h"
 
+#include <assimp/BaseImporter.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
 #include <assimp/Importer.hpp>
+#include <set>
+#include <string>
+#include <vector>
 
 #include "core/error.h"
 #include "importers/mesh/glb_container.h"
 #include "importers/mesh/mesh_integrity.h"
+#include "importers/mesh/off_header.h"
+#include "importers/mesh/ply_header.h"
 
 namespace viscera::importers {
+namespace {
+
+bool ends_with_any_case(const std::string& text, const std::string& suffix) {
+  if (suffix.size() > text.size()) return false;
+  for (std::size_t i = 0; i < suffix.size(); ++i) {
+    if (std::tolower(static_cast<unsigned char>(text[text.size() - suffix.size() + i])) !=
+        std::tolower(static_cast<unsigned char>(suffix[i])))
+      return false;
+  }
+  return true;
+}
+
+/// The index of the importer Assimp::Importer::ReadFile (5.2) will hand `file` to, by its own
+/// rule: the one importer claiming the file's extension; among several, the first whose
+/// signature check accepts the file; with none, the first of all importers that accepts it.
+/// SIZE_MAX when none would.
+std::size_t importer_reading(const Assimp::Importer& importer, const std::string& file) {
+  std::vector<std::size_t> claiming;
+  for (std::size_t i = 0; i < importer.GetImporterCount(); ++i) {
+    std::set<std::string> extensions;
+    importer.GetImporter(i)->GetExtensionList(extensions);
+    for (const std::string& extension : extensions) {
+      if (ends_with_any_case(file, "." + extension)) {
+        claiming.push_back(i);
+        break;
+      }
+    }
+  }
+  if (claiming.size() == 1) return claiming.front();
+  for (const std::size_t i : claiming) {
+    if (importer.GetImporter(i)->CanRead(file, importer.GetIOHandler(), true)) return i;
+  }
+  for (std::size_t i = 0; i < importer.GetImporterCount(); ++i) {
+    if (importer.GetImporter(i)->CanRead(file, importer.GetIOHandler(), true)) return i;
+  }
+  return static_cast<std::size_t>(-1);
+}
+
+}  // namespace
 
 core::SurfaceMesh read_assimp_surface(const std::filesystem::path& path) {
   const std::string file = path.string();
@@ -18,6 +63,13 @@ core::SurfaceMesh read_assimp_surface(const std::filesystem::path& path) {
   }
   if (is_glb_container(path)) check_glb_container(path);  // assimp trusts chunk lengths
   Assimp::Importer importer;
+  // Assimp's OFF and PLY readers trust the counts a header declares (off_header.h,
+  // ply_header.h): the header is checked first when one of them is about to read the file.
+  const std::size_t reader = importer_reading(importer, file);
+  if (reader != static_cast<std::size_t>(-1)) {
+    if (reader == importer.GetImporterIndex("off")) check_off_counts(path);
+    if (reader == importer.GetImporterIndex("ply")) check_ply_header(path);
+  }
   // Triangulate polygons, bake node transforms, check indices, and drop points and lines.
   importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
                               aiPrimitiveType_POINT | aiPrimitiveType_LINE);

@@ -16,6 +16,7 @@
 #include <vtkXMLUnstructuredGridReader.h>
 
 #include <algorithm>
+#include <new>
 
 #include "core/error.h"
 #include "importers/mesh/mesh_integrity.h"
@@ -58,10 +59,14 @@ vtkSmartPointer<vtkDataSet> read_dataset(const std::filesystem::path& path) {
   if (!detail::survives_in_child([&] { reader->Update(); }))
     throw core::InputError("the file is damaged: VTK's reader crashes on it", {file, "", ""});
   std::string error;
-  {
+  try {
     VtkErrorCapture capture;  // reported once below, as a typed error
     reader->Update();
     error = capture.first_error();
+  } catch (const std::bad_alloc&) {
+    // A size no memory can hold (the mesh_vtp fuzz target's finding: NumberOfPoints of 10¹⁹):
+    // the allocation fails at once and VTK's XML reader lets std::bad_alloc out.
+    throw core::InputError("the file declares more data than memory can hold", {file, "", ""});
   }
   if (!error.empty()) throw core::InputError("VTK cannot read the file: " + error, {file, "", ""});
   vtkSmartPointer<vtkDataSet> data = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0));

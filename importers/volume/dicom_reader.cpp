@@ -14,9 +14,12 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <iomanip>
 #include <iterator>
+#include <sstream>
 
 #include "core/error.h"
+#include "importers/volume/dicom_element_lengths.h"
 #include "importers/volume/dicom_series.h"
 #include "importers/volume/format_readers.h"
 #include "importers/volume/gdcm_parse_guard.h"
@@ -187,6 +190,32 @@ void check_readable(const DicomHeader& header) {
   }
 }
 
+/// Refuses, before any voxel is allocated, a file of uncompressed pixel data smaller than the
+/// image its header declares: rows × columns × frames × samples × Bits Allocated / 8 bytes, with
+/// 2 samples a pixel for chroma-subsampled YBR 4:2:2 and 1.5 for 4:2:0. Compressed and deflated
+/// files may hold fewer bytes than their image and are left to the decoder.
+void check_declared_pixels_fit(const DicomHeader& header) {
+  if (!header.native || header.deflated || header.bits_allocated <= 0) return;
+  const auto ends_with = [&](const char* suffix) {
+    const std::string text = suffix;
+    return header.photometric.size() >= text.size() &&
+           header.photometric.compare(header.photometric.size() - text.size(), text.size(), text) ==
+               0;
+  };
+  const double samples = ends_with("_422") ? 2.0 : ends_with("_420") ? 1.5 : header.samples;
+  const double needed = static_cast<double>(header.rows) * header.columns * header.frames *
+                        samples * header.bits_allocated / 8.0;
+  std::error_code error;
+  const auto size = fs::file_size(header.file, error);
+  if (error || needed <= static_cast<double>(size)) return;
+  std::ostringstream reason;
+  reason << "pixel data is truncated: the header declares " << header.columns << "×" << header.rows
+         << " pixels × " << header.frames << " frames × " << samples << " samples of "
+         << header.bits_allocated << " bits (" << std::fixed << std::setprecision(0) << needed
+         << " bytes), the file has " << size << " bytes";
+  throw core::InputError(reason.str(), {header.file.string(), "", ""});
+}
+
 /// Decodes one file and writes its frames into `volume` from voxel `first` on, each value as
 /// slope·value + intercept. Throws naming the file when GDCM cannot read or decode it.
 void decode_into(const fs::path& path, const DicomHeader& header, double slope, double intercept,
@@ -317,6 +346,8 @@ void assemble(const std::vector<DicomHeader>& slices, double slice_spacing_mm,
   volume.dims = {first.columns, first.rows, static_cast<int>(depth)};
   volume.scalar_type = uniform_rescale ? output_type(pixel_format_of(first), first.file.string())
                                        : core::ScalarType::Float32;
+  for (const auto& slice : slices)
+    check_declared_pixels_fit(slice);
   volume.allocate();
   const std::size_t per_file = static_cast<std::size_t>(first.columns) * first.rows * first.frames;
   for (std::size_t s = 0; s < slices.size(); ++s) {
@@ -379,6 +410,9 @@ LoadedVolume read_dicom(const fs::path& path, const VolumeReadOptions& options) 
     }
     return loaded;
   }
+  // GDCM allocates each value at its declared length before reading it: lengths first.
+  if (const auto problem = dicom_length_problem(path))
+    throw core::InputError(*problem, {path.string(), "", ""});
   if (!gdcm_parses_without_abort({path}).front())
     throw core::InputError(kGdcmAbortReason, {path.string(), "", ""});
   DicomHeader header;

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "importers/volume/dicom_element_lengths.h"
 #include "importers/volume/format_readers.h"
 #include "importers/volume/gdcm_parse_guard.h"
 
@@ -73,8 +74,11 @@ bool read_dicom_header(const fs::path& file, DicomHeader& header) {
   const gdcm::DataSet& data = reader.GetFile().GetDataSet();
   header = DicomHeader{};
   header.file = file;
-  header.deflated = reader.GetFile().GetHeader().GetDataSetTransferSyntax() ==
-                    gdcm::TransferSyntax::DeflatedExplicitVRLittleEndian;
+  const gdcm::TransferSyntax syntax = reader.GetFile().GetHeader().GetDataSetTransferSyntax();
+  header.deflated = syntax == gdcm::TransferSyntax::DeflatedExplicitVRLittleEndian;
+  header.native = syntax == gdcm::TransferSyntax::ImplicitVRLittleEndian ||
+                  syntax == gdcm::TransferSyntax::ExplicitVRLittleEndian ||
+                  syntax == gdcm::TransferSyntax::ExplicitVRBigEndian;
   header.has_number_of_frames = data.FindDataElement(gdcm::Tag(0x0028, 0x0008));
   header.rows = unsigned_short_of<0x0028, 0x0010>(data);
   header.columns = unsigned_short_of<0x0028, 0x0011>(data);
@@ -84,6 +88,7 @@ bool read_dicom_header(const fs::path& file, DicomHeader& header) {
   header.series_uid = text_of(data, gdcm::Tag(0x0020, 0x000e));
   header.description = text_of(data, gdcm::Tag(0x0008, 0x103e));
   header.modality = text_of(data, gdcm::Tag(0x0008, 0x0060));
+  header.photometric = text_of(data, gdcm::Tag(0x0028, 0x0004));
   auto spacing = numbers_of(text_of(data, gdcm::Tag(0x0028, 0x0030)));
   if (spacing.size() != 2) spacing = numbers_of(text_of(data, gdcm::Tag(0x0018, 0x1164)));
   if (spacing.size() == 2 && spacing[0] > 0 && spacing[1] > 0) {
@@ -129,7 +134,14 @@ std::vector<std::vector<DicomHeader>> dicom_series_in(const fs::path& folder,
   directory.Load(folder.string(), true);
   std::vector<std::string> names = directory.GetFilenames();
   std::sort(names.begin(), names.end());
-  const std::vector<fs::path> files(names.begin(), names.end());
+  // A file whose element lengths run past its end is skipped before GDCM allocates them.
+  std::vector<fs::path> files;
+  for (const auto& name : names) {
+    if (auto problem = dicom_length_problem(name))
+      skipped.push_back({name, std::move(*problem)});
+    else
+      files.emplace_back(name);
+  }
   const std::vector<bool> parses = gdcm_parses_without_abort(files);
   std::map<std::string, std::vector<DicomHeader>> by_uid;
   for (std::size_t f = 0; f < files.size(); ++f) {
@@ -143,7 +155,7 @@ std::vector<std::vector<DicomHeader>> dicom_series_in(const fs::path& folder,
   if (by_uid.empty()) {
     const std::string damaged =
         skipped.empty() ? "" : ", " + std::to_string(skipped.size()) + " of them damaged";
-    throw core::InputError("folder holds no DICOM image (" + std::to_string(files.size()) +
+    throw core::InputError("folder holds no DICOM image (" + std::to_string(names.size()) +
                                " files looked at" + damaged + ")",
                            {folder.string(), "", ""});
   }

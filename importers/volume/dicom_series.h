@@ -22,7 +22,9 @@ struct DicomHeader {
   double slope = 1.0, intercept = 0.0;  ///< Rescale Slope/Intercept (modality LUT)
   bool has_number_of_frames = false;
   core::Vec2 pixel_spacing = core::Vec2::Zero();  ///< Pixel Spacing (x, y) in mm, 0 if absent
-  bool deflated = false;                     ///< Deflated Explicit VR: offsets are not file offsets
+  bool deflated = false;    ///< Deflated Explicit VR: offsets are not file offsets
+  bool native = false;      ///< uncompressed pixel data: implicit or explicit VR, either byte order
+  std::string photometric;  ///< Photometric Interpretation, e.g. "MONOCHROME2", "YBR_FULL_422"
   core::Vec3 position = core::Vec3::Zero();  ///< Image Position (Patient), mm
   core::Vec3 row_direction = core::Vec3::UnitX(), column_direction = core::Vec3::UnitY();
 };
@@ -31,8 +33,9 @@ struct DicomHeader {
 bool read_dicom_header(const std::filesystem::path& file, DicomHeader& header);
 
 /// The image files of `folder` and its sub-folders grouped by Series Instance UID, the series
-/// with the most files first (ties by UID, so the choice is deterministic). Files whose parse
-/// aborts GDCM (gdcm_parse_guard.h) are left out and listed in `skipped`. Throws
+/// with the most files first (ties by UID, so the choice is deterministic). Files with an element
+/// length the file cannot hold (dicom_element_lengths.h) or whose parse aborts GDCM
+/// (gdcm_parse_guard.h) are left out and listed in `skipped`. Throws
 /// core::InputError naming the folder when it holds no DICOM image.
 std::vector<std::vector<DicomHeader>> dicom_series_in(const std::filesystem::path& folder,
                                                       std::vector<SkippedFile>& skipped);

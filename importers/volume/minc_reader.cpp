@@ -12,6 +12,7 @@
 
 #include "core/error.h"
 #include "importers/volume/format_readers.h"
+#include "importers/volume/netcdf_header.h"
 #include "importers/volume/volume_geometry.h"
 #include "importers/vtk_error_capture.h"
 
@@ -33,6 +34,8 @@ LoadedVolume read_minc(const std::filesystem::path& path, const VolumeReadOption
       throw core::InputError("not a MINC 1 file (no netCDF CDF magic)", {file, "", ""});
     }
   }
+  // The netCDF library allocates what the header declares before it checks it against the file.
+  check_netcdf_header(path);
   vtkNew<vtkMINCImageReader> reader;
   reader->SetFileName(file.c_str());
   reader->RescaleRealValuesOn();

@@ -4,6 +4,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -143,6 +144,34 @@ fs::path cgal_mesh(const std::string& name) {
     fs::remove_all(staging);
   }
   return path;
+}
+
+std::vector<fs::path> cgal_meshes_ending(const std::string& extension) {
+  const fs::path dir = shared_test_folder() / "cgal";
+  const fs::path meshes = dir / "data" / "meshes";
+  const fs::path done = dir / ("all" + extension);
+  if (!fs::exists(done)) {
+    const fs::path staging = dir / private_name("extract");
+    fs::create_directories(staging);
+    fs::create_directories(meshes);
+    std::string err;
+    const int code = run_shell("tar -xzf /usr/share/doc/libcgal-dev/data.tar.gz -C " +
+                                   shell_quote(staging.string()) + " --wildcards " +
+                                   shell_quote("data/meshes/*" + extension),
+                               dir, err);
+    EXPECT_EQ(code, 0) << err << " (the Debian package libcgal-demo has the archive)";
+    std::error_code none;  // nothing extracted: the EXPECT above reports it
+    for (const auto& entry : fs::directory_iterator(staging / "data" / "meshes", none))
+      if (!fs::exists(meshes / entry.path().filename()))
+        fs::rename(entry.path(), meshes / entry.path().filename());
+    fs::remove_all(staging);
+    if (code == 0) std::ofstream(done).close();
+  }
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::directory_iterator(meshes))
+    if (entry.path().string().ends_with(extension)) files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  return files;
 }
 
 fs::path assimp_model(const std::string& relative) {

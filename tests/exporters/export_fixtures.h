@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "core/scenario/scenario.h"
 #include "exporters/scenario_exporter.h"
@@ -27,6 +28,10 @@ std::filesystem::path export_fixture(exporters::ExportFormat format, const std::
 /// extracted once into the test temp folder, e.g. cgal_mesh("elephant.off"). Fails the test
 /// (ADD_FAILURE) naming the package when it is not installed.
 std::filesystem::path cgal_mesh(const std::string& name);
+
+/// Every mesh of CGAL's data/meshes whose name ends with `extension` (".off", ".ply"), extracted
+/// once like cgal_mesh(), sorted by name.
+std::vector<std::filesystem::path> cgal_meshes_ending(const std::string& extension);
 
 /// A model of assimp's test set (Debian assimp-testmodels: /usr/share/assimp/models), e.g.
 /// assimp_model("glTF2/BoxTextured-glTF/BoxTextured.gltf").

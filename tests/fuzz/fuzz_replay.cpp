@@ -3,9 +3,14 @@
 ///   viscera_fuzz_replay TARGET PATH…   (a PATH may be a folder: every file in it, sorted)
 ///   viscera_fuzz_replay --list
 /// Exit 0 when every input was handled (read or refused with a typed error); a crash or an
-/// untyped exception ends the program as it would end the user's.
+/// untyped exception ends the program as it would end the user's. Each input is read under the
+/// limits of replay_limits.h: an allocation over 2 GiB (here or in a reader's forked child) or
+/// more than 20 s fails the run, naming the input.
+
+#include <unistd.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -13,6 +18,7 @@
 #include <vector>
 
 #include "tests/fuzz/fuzz_target.h"
+#include "tests/fuzz/replay_limits.h"
 
 namespace fs = std::filesystem;
 
@@ -45,14 +51,25 @@ int main(int argc, char** argv) {
     }
   }
   std::sort(inputs.begin(), inputs.end());
+  const char* tmp = std::getenv("TMPDIR");
+  const fs::path scratch =
+      fs::path(tmp && *tmp ? tmp : "/tmp") / ("viscera-fuzz-replay-" + std::to_string(::getpid()));
+  fs::create_directories(scratch);
+  viscera::fuzz::start_replay_limits(scratch);
   for (const auto& input : inputs) {
     std::ifstream in(input, std::ios::binary);
     const std::vector<std::uint8_t> bytes{std::istreambuf_iterator<char>(in),
                                           std::istreambuf_iterator<char>()};
     std::cout << argv[1] << ": " << input.string() << " (" << bytes.size() << " bytes)"
               << std::endl;
+    viscera::fuzz::begin_input(input.string());
     (*target)(viscera::fuzz::Bytes(bytes.data(), bytes.size()));
+    if (const std::string note = viscera::fuzz::end_input(); !note.empty()) {
+      std::cerr << "viscera_fuzz_replay: " << note;
+      return 1;
+    }
   }
+  fs::remove_all(scratch);
   std::cout << argv[1] << ": " << inputs.size() << " input(s) handled\n";
   return 0;
 }

@@ -28,10 +28,6 @@ FlowGrid::FlowGrid(int nx, int ny, int nz, double cell_size, const core::Vec3& o
   update_faces();
 }
 
-FaceDims FlowGrid::face_dims(int axis) const {
-  return {nx_ + (axis == 0), ny_ + (axis == 1), nz_ + (axis == 2)};
-}
-
 void FlowGrid::set_cell(int i, int j, int k, FlowCell cell, const core::Vec3& velocity) {
   const auto c = static_cast<std::size_t>(cell_index(i, j, k));
   cells_[c] = cell;

@@ -50,7 +50,9 @@ class FlowGrid {
   bool planar() const { return nz_ == 1; }
   int cell_count() const { return nx_ * ny_ * nz_; }
   int cell_index(int i, int j, int k) const { return i + nx_ * (j + ny_ * k); }
-  FaceDims face_dims(int axis) const;
+  FaceDims face_dims(int axis) const {
+    return {nx_ + (axis == 0), ny_ + (axis == 1), nz_ + (axis == 2)};
+  }
 
   /// Labels a cell; `velocity` (m/s) is a solid cell's own (a moving lid, the sheath's inflow).
   /// Call update_faces() after a batch of labels.

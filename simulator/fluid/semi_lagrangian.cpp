@@ -26,29 +26,29 @@ void advect_velocity(FlowGrid& grid, double time_step, bool second_order, int th
     const auto& old = grid.velocity(axis);
     auto& forward = advected[static_cast<std::size_t>(axis)];
     forward = old;
+    // The MacCormack limiter's bounds: the corners each forward value came from.
+    std::vector<double> low, high;
+    if (second_order) low.assign(old.size(), 0.0), high.assign(old.size(), 0.0);
     for_each_line(d.y, d.z, threads, [&](int j, int k) {
       for (int i = 0; i < d.x; ++i) {
         const auto f = static_cast<std::size_t>(d.index(i, j, k));
         if (states[f] != FaceState::Active) continue;
         const core::Vec3 from = trace(grid, grid.face_position(axis, i, j, k), -time_step);
-        forward[f] = grid.sample(axis, old, from);
+        forward[f] = second_order ? grid.sample(axis, old, from, &low[f], &high[f])
+                                  : grid.sample(axis, old, from);
       }
     });
     if (!second_order) continue;
     // MacCormack: trace the advected field forward again; half the round trip's error corrects
-    // the first-order value, within the bounds of the corners it came from.
+    // the first-order value, clamped to the corners it came from.
     std::vector<double> corrected = forward;
     for_each_line(d.y, d.z, threads, [&](int j, int k) {
       for (int i = 0; i < d.x; ++i) {
         const auto f = static_cast<std::size_t>(d.index(i, j, k));
         if (states[f] != FaceState::Active) continue;
         const core::Vec3 x = grid.face_position(axis, i, j, k);
-        const core::Vec3 from = trace(grid, x, -time_step);
-        double low = 0.0, high = 0.0;
-        grid.sample(axis, old, from, &low, &high);
         const double back = grid.sample(axis, forward, trace(grid, x, time_step));
-        const double value = forward[f] + 0.5 * (old[f] - back);
-        corrected[f] = std::clamp(value, low, high);
+        corrected[f] = std::clamp(forward[f] + 0.5 * (old[f] - back), low[f], high[f]);
       }
     });
     forward = std::move(corrected);

@@ -129,6 +129,30 @@ core::Vec3 FlowGrid::velocity_at(const core::Vec3& point) const {
   return {sample(0, point), sample(1, point), planar() ? 0.0 : sample(2, point)};
 }
 
+core::Vec3 FlowGrid::face_velocity(int axis, int i, int j, int k) const {
+  core::Vec3 velocity = core::Vec3::Zero();
+  velocity[axis] = velocity_[static_cast<std::size_t>(axis)]
+                            [static_cast<std::size_t>(face_dims(axis).index(i, j, k))];
+  for (int other = 0; other < (planar() ? 2 : 3); ++other) {
+    if (other == axis) continue;
+    // The four faces of `other` around this one: its two cells (back along `axis`) and the next
+    // faces along `other`.
+    const FaceDims d = face_dims(other);
+    const auto& v = velocity_[static_cast<std::size_t>(other)];
+    std::array<int, 3> at{i, j, k};
+    at[axis] -= 1;
+    std::array<int, 3> next = at;
+    next[other] += 1;
+    std::array<int, 3> here{i, j, k}, here_next{i, j, k};
+    here_next[other] += 1;
+    const auto value = [&](const std::array<int, 3>& c) {
+      return v[static_cast<std::size_t>(d.index(c[0], c[1], c[2]))];
+    };
+    velocity[other] = 0.25 * (value(at) + value(next) + value(here) + value(here_next));
+  }
+  return velocity;
+}
+
 double FlowGrid::max_divergence() const {
   double worst = 0.0;
   const FaceDims du = face_dims(0), dv = face_dims(1), dw = face_dims(2);

@@ -85,6 +85,9 @@ class FlowGrid {
   double sample(int axis, const std::vector<double>& values, const core::Vec3& point,
                 double* low = nullptr, double* high = nullptr) const;
   core::Vec3 velocity_at(const core::Vec3& point) const;
+  /// The whole velocity at the centre of face (i,j,k) of component `axis`: its own component,
+  /// the other two averaged over the four faces around it (m/s). The face must be active.
+  core::Vec3 face_velocity(int axis, int i, int j, int k) const;
   /// Largest |∇·u| over fluid cells, 1/s.
   double max_divergence() const;
 

@@ -8,10 +8,10 @@
 namespace viscera::sim::fluid {
 namespace {
 
-/// Where the fluid at `x` is `dt` s later (dt < 0: earlier), by the midpoint rule in `grid`'s
-/// current velocity field.
-core::Vec3 trace(const FlowGrid& grid, const core::Vec3& x, double dt) {
-  const core::Vec3 middle = x + 0.5 * dt * grid.velocity_at(x);
+/// Where the fluid at `x` (moving at `start` m/s there) is `dt` s later (dt < 0: earlier), by
+/// the midpoint rule in `grid`'s current velocity field.
+core::Vec3 trace(const FlowGrid& grid, const core::Vec3& x, const core::Vec3& start, double dt) {
+  const core::Vec3 middle = x + 0.5 * dt * start;
   return x + dt * grid.velocity_at(middle);
 }
 
@@ -33,7 +33,8 @@ void advect_velocity(FlowGrid& grid, double time_step, bool second_order, int th
       for (int i = 0; i < d.x; ++i) {
         const auto f = static_cast<std::size_t>(d.index(i, j, k));
         if (states[f] != FaceState::Active) continue;
-        const core::Vec3 from = trace(grid, grid.face_position(axis, i, j, k), -time_step);
+        const core::Vec3 from = trace(grid, grid.face_position(axis, i, j, k),
+                                      grid.face_velocity(axis, i, j, k), -time_step);
         forward[f] = second_order ? grid.sample(axis, old, from, &low[f], &high[f])
                                   : grid.sample(axis, old, from);
       }
@@ -47,7 +48,8 @@ void advect_velocity(FlowGrid& grid, double time_step, bool second_order, int th
         const auto f = static_cast<std::size_t>(d.index(i, j, k));
         if (states[f] != FaceState::Active) continue;
         const core::Vec3 x = grid.face_position(axis, i, j, k);
-        const double back = grid.sample(axis, forward, trace(grid, x, time_step));
+        const double back = grid.sample(
+            axis, forward, trace(grid, x, grid.face_velocity(axis, i, j, k), time_step));
         corrected[f] = std::clamp(forward[f] + 0.5 * (old[f] - back), low[f], high[f]);
       }
     });

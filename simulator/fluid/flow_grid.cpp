@@ -92,34 +92,35 @@ double FlowGrid::sample(int axis, const core::Vec3& point) const {
 double FlowGrid::sample(int axis, const std::vector<double>& v, const core::Vec3& point,
                         double* low, double* high) const {
   const FaceDims d = face_dims(axis);
-  const std::array<int, 3> n{d.x, d.y, d.z};
-  std::array<int, 3> lo{};
-  std::array<double, 3> t{};
+  const int n[3] = {d.x, d.y, d.z};
+  const int stride[3] = {1, d.x, d.x * d.y};
+  const double inverse_h = 1.0 / h_;
+  int base = 0;
+  double t[3];
+  int step[3];  // index offset to the upper corner along each axis (0 on a one-face axis)
   for (int a = 0; a < 3; ++a) {
     // Face coordinates: faces of this component sit at whole indices along its own axis and at
     // half indices across it.
-    double c = (point[a] - origin_[a]) / h_ - (a == axis ? 0.0 : 0.5);
+    double c = (point[a] - origin_[a]) * inverse_h - (a == axis ? 0.0 : 0.5);
     c = std::clamp(c, 0.0, static_cast<double>(n[a] - 1));
-    lo[a] = std::min(static_cast<int>(c), std::max(n[a] - 2, 0));
-    t[a] = n[a] > 1 ? c - lo[a] : 0.0;
+    const int lo = std::min(static_cast<int>(c), std::max(n[a] - 2, 0));
+    t[a] = n[a] > 1 ? c - lo : 0.0;
+    step[a] = n[a] > 1 ? stride[a] : 0;
+    base += lo * stride[a];
   }
-  const auto at = [&](int di, int dj, int dk) {
-    const int i = std::min(lo[0] + di, n[0] - 1), j = std::min(lo[1] + dj, n[1] - 1),
-              k = std::min(lo[2] + dk, n[2] - 1);
-    return v[static_cast<std::size_t>(d.index(i, j, k))];
-  };
-  const double x00 = at(0, 0, 0) + t[0] * (at(1, 0, 0) - at(0, 0, 0));
-  const double x10 = at(0, 1, 0) + t[0] * (at(1, 1, 0) - at(0, 1, 0));
-  const double x01 = at(0, 0, 1) + t[0] * (at(1, 0, 1) - at(0, 0, 1));
-  const double x11 = at(0, 1, 1) + t[0] * (at(1, 1, 1) - at(0, 1, 1));
+  const double* p = v.data() + base;
+  const double c000 = p[0], c100 = p[step[0]];
+  const double c010 = p[step[1]], c110 = p[step[0] + step[1]];
+  const double c001 = p[step[2]], c101 = p[step[0] + step[2]];
+  const double c011 = p[step[1] + step[2]], c111 = p[step[0] + step[1] + step[2]];
   if (low != nullptr && high != nullptr) {
-    *low = *high = at(0, 0, 0);
-    for (int c = 1; c < 8; ++c) {
-      const double corner = at(c & 1, (c >> 1) & 1, (c >> 2) & 1);
-      *low = std::min(*low, corner);
-      *high = std::max(*high, corner);
-    }
+    *low = std::min({c000, c100, c010, c110, c001, c101, c011, c111});
+    *high = std::max({c000, c100, c010, c110, c001, c101, c011, c111});
   }
+  const double x00 = c000 + t[0] * (c100 - c000);
+  const double x10 = c010 + t[0] * (c110 - c010);
+  const double x01 = c001 + t[0] * (c101 - c001);
+  const double x11 = c011 + t[0] * (c111 - c011);
   const double y0 = x00 + t[1] * (x10 - x00);
   const double y1 = x01 + t[1] * (x11 - x01);
   return y0 + t[2] * (y1 - y0);

@@ -6,7 +6,6 @@
 
 #include <omp.h>
 
-#include <algorithm>
 #include <vector>
 
 namespace viscera::sim::fluid {
@@ -33,21 +32,6 @@ double sum_over_lines(int ny, int nz, int threads, std::vector<double>& partials
   for (const double p : partials)
     total += p;
   return total;
-}
-
-/// Largest over lines of `line(j, k)` (each line's largest, ≥ 0); `partials` is scratch.
-template <typename Line>
-double max_over_lines(int ny, int nz, int threads, std::vector<double>& partials,
-                      const Line& line) {
-  const int lines = ny * nz;
-  partials.resize(static_cast<std::size_t>(lines));
-#pragma omp parallel for schedule(static) num_threads(threads > 0 ? threads : omp_get_max_threads())
-  for (int l = 0; l < lines; ++l)
-    partials[static_cast<std::size_t>(l)] = line(l % ny, l / ny);
-  double largest = 0.0;
-  for (const double p : partials)
-    largest = std::max(largest, p);
-  return largest;
 }
 
 }  // namespace viscera::sim::fluid

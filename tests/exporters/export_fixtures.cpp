@@ -9,7 +9,9 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/error.h"
 #include "core/primitives/icosphere.h"
+#include "importers/mesh_reader.h"
 #include "templates/template_catalog.h"
 #include "tests/support/command_runner.h"
 #include "tests/support/test_paths.h"
@@ -222,6 +224,15 @@ bool message_has(const std::string& message, std::initializer_list<std::string> 
     if (message.find(part) == std::string::npos) return false;
   }
   return true;
+}
+
+std::string mesh_read_error(const std::filesystem::path& path) {
+  try {
+    importers::read_mesh(path);
+  } catch (const core::InputError& e) {
+    return e.what();
+  }
+  return "no error";
 }
 
 }  // namespace viscera::testing

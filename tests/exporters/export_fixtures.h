@@ -49,4 +49,7 @@ std::filesystem::path shared_test_folder();
 /// True when the message of `thrown` contains every one of `parts`.
 bool message_has(const std::string& message, std::initializer_list<std::string> parts);
 
+/// What importers::read_mesh says of `path`: the InputError's message, or "no error".
+std::string mesh_read_error(const std::filesystem::path& path);
+
 }  // namespace viscera::testing

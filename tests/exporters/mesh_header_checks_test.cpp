@@ -20,14 +20,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string error_of(const fs::path& path) {
-  try {
-    read_mesh(path);
-  } catch (const core::InputError& e) {
-    return e.what();
-  }
-  return "no error";
-}
+using testing::mesh_read_error;
 
 fs::path regression(const std::string& target, const std::string& name) {
   return testing::source_dir() / "tests" / "fuzz" / "regressions" / target / name;
@@ -49,50 +42,51 @@ fs::path patched(const fs::path& source, const std::string& from, const std::str
 TEST(MeshHeaderChecks, the_off_finding_is_refused_for_its_vertex_count_before_assimp_reads_it) {
   const fs::path path = regression("mesh_off", "vertex_count_past_32_bits.off");
   EXPECT_TRUE(testing::message_has(
-      error_of(path),
+      mesh_read_error(path),
       {path.string(), "line 2", "declares 499999999999999 vertices", "32-bit count"}))
-      << error_of(path);
+      << mesh_read_error(path);
   // assimp's own test file for the same fault.
   const fs::path assimps = testing::assimp_model("invalid/OutOfMemory.off");
-  EXPECT_TRUE(testing::message_has(error_of(assimps), {"declares 353535235358 vertices"}))
-      << error_of(assimps);
+  EXPECT_TRUE(testing::message_has(mesh_read_error(assimps), {"declares 353535235358 vertices"}))
+      << mesh_read_error(assimps);
 }
 
 TEST(MeshHeaderChecks, an_off_file_declaring_more_vertices_than_it_has_lines_is_refused) {
   const fs::path cube = testing::assimp_model("OFF/Cube.off");
   const fs::path path = patched(cube, "8 6 0", "100000000 6 0", "many.off");
   EXPECT_TRUE(testing::message_has(
-      error_of(path), {"many.off", "declares 100000000 vertices and 6 faces", "at least"}))
-      << error_of(path);
+      mesh_read_error(path), {"many.off", "declares 100000000 vertices and 6 faces", "at least"}))
+      << mesh_read_error(path);
   EXPECT_EQ(read_mesh(patched(cube, "8 6 0", "8 6 0", "same.off")).triangles.size(), 12u);
 }
 
 TEST(MeshHeaderChecks, the_ply_finding_is_refused_for_its_missing_end_header) {
   const fs::path path = regression("mesh_ply", "no_end_header.ply");
-  EXPECT_TRUE(testing::message_has(error_of(path), {path.string(), "has no end_header line"}))
-      << error_of(path);
+  EXPECT_TRUE(
+      testing::message_has(mesh_read_error(path), {path.string(), "has no end_header line"}))
+      << mesh_read_error(path);
   // Assimp picks its reader by content when the extension is not one it knows: still checked.
   const fs::path renamed = testing::scratch_dir() / "no_end_header.scan";
   fs::copy_file(path, renamed);
-  EXPECT_TRUE(testing::message_has(error_of(renamed), {"has no end_header line"}))
-      << error_of(renamed);
+  EXPECT_TRUE(testing::message_has(mesh_read_error(renamed), {"has no end_header line"}))
+      << mesh_read_error(renamed);
 }
 
 TEST(MeshHeaderChecks, ascii_and_binary_ply_declaring_more_elements_than_they_hold_are_refused) {
   const fs::path ascii = patched(testing::assimp_model("PLY/cube.ply"), "element vertex 8",
                                  "element vertex 400000000", "ascii.ply");
-  EXPECT_TRUE(testing::message_has(error_of(ascii), {"ascii.ply", "400000000 \"vertex\"",
-                                                     "bytes in ascii", "follow end_header"}))
-      << error_of(ascii);
+  EXPECT_TRUE(testing::message_has(mesh_read_error(ascii), {"ascii.ply", "400000000 \"vertex\"",
+                                                            "bytes in ascii", "follow end_header"}))
+      << mesh_read_error(ascii);
   const fs::path binary = patched(testing::assimp_model("PLY/cube_binary.ply"), "element vertex 8",
                                   "element vertex 400000000", "binary.ply");
-  EXPECT_TRUE(testing::message_has(error_of(binary),
+  EXPECT_TRUE(testing::message_has(mesh_read_error(binary),
                                    {"binary.ply", "at least 4800000", "binary_little_endian"}))
-      << error_of(binary);
+      << mesh_read_error(binary);
   const fs::path wide = patched(testing::assimp_model("PLY/cube.ply"), "element face 6",
                                 "element face 99999999999", "wide.ply");
-  EXPECT_TRUE(testing::message_has(error_of(wide), {"99999999999 \"face\"", "32-bit count"}))
-      << error_of(wide);
+  EXPECT_TRUE(testing::message_has(mesh_read_error(wide), {"99999999999 \"face\"", "32-bit count"}))
+      << mesh_read_error(wide);
   EXPECT_EQ(read_mesh(testing::assimp_model("PLY/cube_binary.ply")).triangles.size(), 12u);
 }
 
@@ -120,20 +114,22 @@ TEST(MeshHeaderChecks, every_real_off_and_ply_file_passes_the_header_checks) {
 TEST(MeshHeaderChecks, a_real_binary_ply_cut_short_is_refused_as_such) {
   // assimp's pond.0.ply: 70051 vertices of 31 bytes need 2171581 bytes; 2171512 follow its header.
   const fs::path pond = testing::assimp_model("PLY/pond.0.ply");
-  EXPECT_TRUE(testing::message_has(error_of(pond), {"70051 \"vertex\"", "at least 2171581 bytes",
-                                                    "only 2171512 follow end_header"}))
-      << error_of(pond);
+  EXPECT_TRUE(testing::message_has(
+      mesh_read_error(pond),
+      {"70051 \"vertex\"", "at least 2171581 bytes", "only 2171512 follow end_header"}))
+      << mesh_read_error(pond);
 }
 
 TEST(MeshHeaderChecks, the_vtk_findings_are_refused_without_a_crash_or_an_untyped_error) {
   const fs::path legacy = regression("mesh_vtk", "read_string_crashes_vtk.vtk");
-  EXPECT_TRUE(testing::message_has(error_of(legacy), {legacy.string(), "VTK's reader crashes"}))
-      << error_of(legacy);
+  EXPECT_TRUE(
+      testing::message_has(mesh_read_error(legacy), {legacy.string(), "VTK's reader crashes"}))
+      << mesh_read_error(legacy);
   // NumberOfPoints of 8.9·10¹⁸: the allocation fails at once and VTK lets std::bad_alloc out.
   const fs::path xml = regression("mesh_vtp", "number_of_points_beyond_memory.vtp");
-  EXPECT_TRUE(testing::message_has(error_of(xml),
+  EXPECT_TRUE(testing::message_has(mesh_read_error(xml),
                                    {xml.string(), "declares more data than memory can hold"}))
-      << error_of(xml);
+      << mesh_read_error(xml);
 }
 
 }  // namespace

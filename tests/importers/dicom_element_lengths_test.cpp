@@ -19,18 +19,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string error_of(const fs::path& path) {
-  try {
-    read_volume(path);
-  } catch (const core::InputError& e) {
-    return e.what();
-  }
-  return "no error";
-}
-
-bool has(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
+using testing::contains;
+using testing::volume_read_error;
 
 fs::path finding() {
   return testing::source_dir() /
@@ -38,10 +28,10 @@ fs::path finding() {
 }
 
 TEST(DicomElementLengths, the_fuzz_finding_is_refused_for_its_element_before_gdcm_reads_it) {
-  const std::string message = error_of(finding());
-  EXPECT_TRUE(has(message, finding().string()) &&
-              has(message, "damaged DICOM data element (EB00,CD00) at byte 9692") &&
-              has(message, "declares 3019946752 bytes, the file holds 33 after it"))
+  const std::string message = volume_read_error(finding());
+  EXPECT_TRUE(contains(message, finding().string()) &&
+              contains(message, "damaged DICOM data element (EB00,CD00) at byte 9692") &&
+              contains(message, "declares 3019946752 bytes, the file holds 33 after it"))
       << message;
 }
 
@@ -55,7 +45,7 @@ TEST(DicomElementLengths, a_folder_is_read_without_the_file_and_lists_it_with_th
   EXPECT_EQ(loaded.files.front().filename(), "good.dcm");
   ASSERT_EQ(loaded.skipped_files.size(), 1u);
   EXPECT_EQ(loaded.skipped_files.front().file.filename(), "stray.dcm");
-  EXPECT_TRUE(has(loaded.skipped_files.front().reason, "(EB00,CD00)"))
+  EXPECT_TRUE(contains(loaded.skipped_files.front().reason, "(EB00,CD00)"))
       << loaded.skipped_files.front().reason;
 }
 
@@ -70,7 +60,7 @@ TEST(DicomElementLengths, every_real_file_walks_clean_but_those_cut_short) {
                              "/usr/lib/python3/dist-packages/nibabel"}) {
     for (const auto& entry : fs::recursive_directory_iterator(folder)) {
       const fs::path& file = entry.path();
-      const bool dicom = file.extension() == ".dcm" || has(file.string(), "dicomdirtests");
+      const bool dicom = file.extension() == ".dcm" || contains(file.string(), "dicomdirtests");
       if (!entry.is_regular_file() || !dicom) continue;
       ++walked;
       const auto problem = detail::dicom_length_problem(file);
@@ -78,7 +68,7 @@ TEST(DicomElementLengths, every_real_file_walks_clean_but_those_cut_short) {
       if (expected == cut_short.end()) {
         EXPECT_FALSE(problem) << file << ": " << problem.value_or("");
       } else {
-        EXPECT_TRUE(problem && has(*problem, expected->second))
+        EXPECT_TRUE(problem && contains(*problem, expected->second))
             << file << ": " << problem.value_or("no problem found");
       }
     }
@@ -93,9 +83,9 @@ TEST(DicomElementLengths, uncompressed_pixels_the_file_cannot_hold_are_refused_b
   bytes.replace(1370, 2, "\xff\xff");
   const fs::path path = testing::scratch_dir() / "rows.dcm";
   std::ofstream(path, std::ios::binary) << bytes;
-  const std::string message = error_of(path);
-  EXPECT_TRUE(has(message, "rows.dcm") && has(message, "pixel data is truncated") &&
-              has(message, "64×65535 pixels") && has(message, "(8388480 bytes)"))
+  const std::string message = volume_read_error(path);
+  EXPECT_TRUE(contains(message, "rows.dcm") && contains(message, "pixel data is truncated") &&
+              contains(message, "64×65535 pixels") && contains(message, "(8388480 bytes)"))
       << message;
 }
 

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <fstream>
 
+#include "core/error.h"
 #include "tests/support/command_runner.h"
 
 namespace viscera::testing {
@@ -39,6 +40,16 @@ fs::path copy_to(const fs::path& source, const fs::path& dir, const std::string&
   const fs::path target = dir / name;
   fs::copy_file(source, target, fs::copy_options::overwrite_existing);
   return target;
+}
+
+std::string volume_read_error(const std::filesystem::path& path,
+                              const importers::VolumeReadOptions& options) {
+  try {
+    importers::read_volume(path, options);
+  } catch (const core::InputError& e) {
+    return e.what();
+  }
+  return "no error";
 }
 
 }  // namespace viscera::testing

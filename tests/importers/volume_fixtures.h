@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "importers/volume/volume_reader.h"
 #include "tests/support/test_paths.h"
 
 namespace viscera::testing {
@@ -22,5 +23,14 @@ nlohmann::json real_volume_headers(const std::filesystem::path& scratch);
 /// A copy of `source` in `dir` named `name`.
 std::filesystem::path copy_to(const std::filesystem::path& source, const std::filesystem::path& dir,
                               const std::string& name);
+
+/// What read_volume says of `path`: the InputError's message, or "no error".
+std::string volume_read_error(const std::filesystem::path& path,
+                              const importers::VolumeReadOptions& options = {});
+
+/// True when `text` contains `part`.
+inline bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
 
 }  // namespace viscera::testing

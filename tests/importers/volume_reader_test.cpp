@@ -32,18 +32,8 @@ const std::map<std::string, std::string> kUnreadable = {
     {"minc1-no-att.mnc", "The attribute zspace:step was not found"},
 };
 
-std::string error_of(const fs::path& path, const VolumeReadOptions& options = {}) {
-  try {
-    read_volume(path, options);
-  } catch (const core::InputError& e) {
-    return e.what();
-  }
-  return "no error";
-}
-
-bool has(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
+using testing::contains;
+using testing::volume_read_error;
 
 std::vector<core::Vec3> corners_mm(const core::ImageVolume& v) {
   std::vector<core::Vec3> corners;
@@ -81,7 +71,7 @@ void expect_geometry(const nlohmann::json& entry, const LoadedVolume& loaded) {
   if (entry["format"] == "DICOM" && spacing.is_null()) {
     EXPECT_EQ(v.spacing.head<2>(), core::Vec2(0.001, 0.001)) << name;
     EXPECT_TRUE(std::any_of(loaded.notes.begin(), loaded.notes.end(), [](const auto& n) {
-      return has(n, "no Pixel Spacing");
+      return contains(n, "no Pixel Spacing");
     })) << name;
   }
   if (entry.contains("corners_lps_mm")) {
@@ -121,8 +111,8 @@ TEST(VolumeReader, every_real_file_reads_with_the_geometry_its_header_states) {
     if (entry.contains("error") || unreadable != kUnreadable.end()) {
       const std::string reason =
           unreadable != kUnreadable.end() ? unreadable->second : entry["error"].get<std::string>();
-      const std::string message = error_of(path);
-      EXPECT_TRUE(has(message, path.string()) && has(message, reason))
+      const std::string message = volume_read_error(path);
+      EXPECT_TRUE(contains(message, path.string()) && contains(message, reason))
           << path << " should be refused for \"" << reason << "\", got: " << message;
       ++refused[format];
       continue;
@@ -178,20 +168,24 @@ TEST(VolumeReader, a_dicom_folder_reads_its_largest_series_ordered_along_the_nor
 }
 
 TEST(VolumeReader, dicom_folders_whose_slices_do_not_stack_are_refused_naming_why) {
-  const std::string radial = error_of(testing::pydicom_file("dicomdirtests/98892003"));
-  EXPECT_TRUE(has(radial, "98892003") && has(radial, "slices are not parallel")) << radial;
-  const std::string gap = error_of(testing::pydicom_file("dicomdirtests/77654033"));
-  EXPECT_TRUE(has(gap, "77654033") && has(gap, "not evenly spaced") && has(gap, "202.5 mm")) << gap;
+  const std::string radial = volume_read_error(testing::pydicom_file("dicomdirtests/98892003"));
+  EXPECT_TRUE(contains(radial, "98892003") && contains(radial, "slices are not parallel"))
+      << radial;
+  const std::string gap = volume_read_error(testing::pydicom_file("dicomdirtests/77654033"));
+  EXPECT_TRUE(contains(gap, "77654033") && contains(gap, "not evenly spaced") &&
+              contains(gap, "202.5 mm"))
+      << gap;
   const fs::path empty = testing::scratch_dir();
   std::ofstream(empty / "notes.txt") << "no images here\n";
-  EXPECT_TRUE(has(error_of(empty), "folder holds no DICOM image")) << error_of(empty);
+  EXPECT_TRUE(contains(volume_read_error(empty), "folder holds no DICOM image"))
+      << volume_read_error(empty);
 }
 
 TEST(VolumeReader, a_truncated_dicom_is_refused_naming_the_file) {
   const fs::path path = testing::pydicom_file("MR_truncated.dcm");
-  const std::string message = error_of(path);
-  EXPECT_TRUE(has(message, path.string()) && has(message, "pixel data is truncated") &&
-              has(message, "8192 bytes"))
+  const std::string message = volume_read_error(path);
+  EXPECT_TRUE(contains(message, path.string()) && contains(message, "pixel data is truncated") &&
+              contains(message, "8192 bytes"))
       << message;
 }
 
@@ -199,8 +193,9 @@ TEST(VolumeReader, a_truncated_nifti_is_refused_naming_the_file) {
   const fs::path dir = testing::scratch_dir();
   const fs::path path = testing::copy_to(testing::nibabel_file("anatomical.nii"), dir, "cut.nii");
   fs::resize_file(path, fs::file_size(path) / 2);
-  const std::string message = error_of(path);
-  EXPECT_TRUE(has(message, path.string()) && has(message, "file is truncated")) << message;
+  const std::string message = volume_read_error(path);
+  EXPECT_TRUE(contains(message, path.string()) && contains(message, "file is truncated"))
+      << message;
 }
 
 TEST(VolumeReader, a_nifti_header_claiming_huge_dims_is_refused_before_allocation) {
@@ -218,16 +213,16 @@ TEST(VolumeReader, a_nifti_header_claiming_huge_dims_is_refused_before_allocatio
       file.write(huge, 2);
     }
   }
-  const std::string message = error_of(path);
-  EXPECT_TRUE(has(message, path.string()) &&
-              has(message, "header claims 30000×30000×30000 voxels") &&
-              has(message, "memory limit of 4096 MiB"))
+  const std::string message = volume_read_error(path);
+  EXPECT_TRUE(contains(message, path.string()) &&
+              contains(message, "header claims 30000×30000×30000 voxels") &&
+              contains(message, "memory limit of 4096 MiB"))
       << message;
   // A real file over a small stated limit is refused the same way.
   VolumeReadOptions small;
   small.max_bytes = 1024;
-  const std::string limited = error_of(testing::nibabel_file("anatomical.nii"), small);
-  EXPECT_TRUE(has(limited, "header claims 33×41×25 voxels")) << limited;
+  const std::string limited = volume_read_error(testing::nibabel_file("anatomical.nii"), small);
+  EXPECT_TRUE(contains(limited, "header claims 33×41×25 voxels")) << limited;
 }
 
 TEST(VolumeReader, nan_voxels_are_refused_naming_the_voxel) {
@@ -239,22 +234,24 @@ TEST(VolumeReader, nan_voxels_are_refused_naming_the_voxel) {
   const float values[4] = {1.0f, 2.0f, std::numeric_limits<float>::quiet_NaN(), 4.0f};
   out.write(reinterpret_cast<const char*>(values), sizeof values);
   out.close();
-  const std::string message = error_of(path);
-  EXPECT_TRUE(has(message, path.string()) && has(message, "voxel (0, 1, 0) is NaN or infinite"))
+  const std::string message = volume_read_error(path);
+  EXPECT_TRUE(contains(message, path.string()) &&
+              contains(message, "voxel (0, 1, 0) is NaN or infinite"))
       << message;
 }
 
 TEST(VolumeReader, missing_empty_and_unknown_files_are_refused) {
   const fs::path dir = testing::scratch_dir();
-  EXPECT_TRUE(has(error_of(dir / "absent.nii"), "no such file or folder"));
+  EXPECT_TRUE(contains(volume_read_error(dir / "absent.nii"), "no such file or folder"));
   std::ofstream(dir / "empty.nii").close();
-  EXPECT_TRUE(has(error_of(dir / "empty.nii"), "file is empty"));
+  EXPECT_TRUE(contains(volume_read_error(dir / "empty.nii"), "file is empty"));
   std::ofstream(dir / "photo.png") << "not a volume";
-  const std::string unknown = error_of(dir / "photo.png");
-  EXPECT_TRUE(has(unknown, "photo.png") && has(unknown, "not an image volume format")) << unknown;
+  const std::string unknown = volume_read_error(dir / "photo.png");
+  EXPECT_TRUE(contains(unknown, "photo.png") && contains(unknown, "not an image volume format"))
+      << unknown;
   std::ofstream(dir / "garbage.nii") << std::string(400, 'x');
-  const std::string garbage = error_of(dir / "garbage.nii");
-  EXPECT_TRUE(has(garbage, "garbage.nii")) << garbage;
+  const std::string garbage = volume_read_error(dir / "garbage.nii");
+  EXPECT_TRUE(contains(garbage, "garbage.nii")) << garbage;
 }
 
 }  // namespace

@@ -134,7 +134,7 @@ run_fuzz() {
       *) targets+=("$1"); shift ;;
     esac
   done
-  packages+=(clang-14 libclang-rt-14-dev)  # libFuzzer; only this command needs them
+  packages+=(clang-14 libclang-rt-14-dev libomp-14-dev)  # libFuzzer, and OpenMP for the flow solver under clang; only this command needs them
   install_missing_packages
   local fuzz_build="${VISCERA_FUZZ_BUILD_DIR:-$root/build-fuzz}"
   if [ ! -f "$fuzz_build/CMakeCache.txt" ]; then

@@ -14,8 +14,9 @@ namespace viscera::importers {
 /// count does not fit a 32-bit count, or the declared elements need more bytes than follow
 /// end_header. The least an element can take: in ASCII 2 bytes per property (a character and a
 /// separator; a list at least its count), in binary the size of each scalar property and of each
-/// list's count. Files that do not start with "ply", and formats other than ascii,
-/// binary_little_endian and binary_big_endian, are left to assimp.
+/// list's count. Called only for files assimp's PLY reader will read, whatever their first line;
+/// formats other than ascii, binary_little_endian and binary_big_endian are left to assimp (it
+/// refuses them).
 void check_ply_header(const std::filesystem::path& path);
 
 }  // namespace viscera::importers

@@ -57,7 +57,8 @@ vtkSmartPointer<vtkDataSet> read_dataset(const std::filesystem::path& path) {
   // VTK 9.1's XML and legacy readers can crash on damaged files (the tet_mesh_vtu and mesh_vtk
   // fuzz targets' findings): the read runs first in a forked child (volume/crash_guard.h).
   if (!detail::survives_in_child([&] { reader->Update(); }))
-    throw core::InputError("the file is damaged: VTK's reader crashes on it", {file, "", ""});
+    throw core::InputError("the file is damaged: VTK's reader crashes or hangs on it",
+                           {file, "", ""});
   std::string error;
   try {
     VtkErrorCapture capture;  // reported once below, as a typed error

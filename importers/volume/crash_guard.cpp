@@ -1,6 +1,7 @@
 #include "importers/volume/crash_guard.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -12,14 +13,21 @@
 
 namespace viscera::importers::detail {
 
+void prepare_guard_child() {
+  if (const int null = ::open("/dev/null", O_WRONLY); null >= 0) ::dup2(null, 2);
+  for (const int deadly : {SIGABRT, SIGSEGV, SIGBUS, SIGFPE, SIGILL})
+    ::signal(deadly, SIG_DFL);
+}
+
 bool survives_in_child(const std::function<void()>& attempt) {
   const pid_t child = ::fork();
   if (child < 0)
     throw core::Error(std::string("cannot start a process to check the file: ") +
                       std::strerror(errno));
   if (child == 0) {
-    // The library's own messages would reach the user's terminal: the parent reports instead.
-    if (const int null = ::open("/dev/null", O_WRONLY); null >= 0) ::dup2(null, 2);
+    prepare_guard_child();
+    ::signal(SIGALRM, SIG_DFL);
+    ::alarm(kGuardSeconds);  // a reader that loops is ended like one that crashes
     try {
       attempt();
     } catch (...) {  // a refusal: the parent's own attempt reports it

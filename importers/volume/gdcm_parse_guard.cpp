@@ -11,6 +11,7 @@
 #include <cstring>
 
 #include "core/error.h"
+#include "importers/volume/crash_guard.h"
 
 namespace viscera::importers::detail {
 namespace {
@@ -25,7 +26,7 @@ namespace fs = std::filesystem;
   gdcm::Trace::SetError(false);
   gdcm::Trace::SetDebug(false);
   // Assertion messages would reach the user's terminal: the parent reports instead.
-  if (const int null = ::open("/dev/null", O_WRONLY); null >= 0) ::dup2(null, 2);
+  prepare_guard_child();
   for (std::size_t i = first; i < files.size(); ++i) {
     const auto index = static_cast<std::int64_t>(i);
     if (::write(out, &index, sizeof index) != sizeof index) ::_exit(2);

@@ -94,7 +94,8 @@ LoadedVolume read_nifti(const fs::path& path, const VolumeReadOptions& options) 
   // VTK 9.1's NIfTI reader can also crash reading the voxels of a damaged file (volume_nifti
   // fuzz target): the whole read runs first in a forked child, at the cost of reading twice.
   if (!survives_in_child([&] { reader->Update(); }))
-    throw core::InputError("the file is damaged: VTK's NIfTI reader crashes on it", {file, "", ""});
+    throw core::InputError("the file is damaged: VTK's NIfTI reader crashes or hangs on it",
+                           {file, "", ""});
   std::string error;
   {
     VtkErrorCapture capture;

@@ -73,7 +73,8 @@ void check_voxel_budget(const std::array<std::int64_t, 3>& dims, std::int64_t co
 void check_reader_budget(vtkImageReader2& reader, const VolumeReadOptions& options,
                          const std::string& file) {
   if (!survives_in_child([&] { reader.UpdateInformation(); })) {
-    throw core::InputError("the header is damaged: VTK's reader crashes on it", {file, "", ""});
+    throw core::InputError("the header is damaged: VTK's reader crashes or hangs on it",
+                           {file, "", ""});
   }
   std::string error;
   {

@@ -14,6 +14,7 @@
 #include "importers/mesh/mesh_integrity.h"
 #include "importers/mesh/off_header.h"
 #include "importers/mesh/ply_header.h"
+#include "importers/volume/crash_guard.h"
 
 namespace viscera::importers {
 namespace {
@@ -79,6 +80,15 @@ core::SurfaceMesh read_assimp_surface(const std::filesystem::path& path) {
   // are joined; drop those normals and compute smooth ones from the welded mesh instead.
   const bool facet_normals_only = path.extension() == ".stl" || path.extension() == ".STL";
   if (facet_normals_only) flags |= aiProcess_DropNormals;
+  // Assimp can crash on a damaged file (mesh_ply fuzz target: a SEGV in its post-processing): the
+  // read runs first in a forked child, as the VTK readers' do (volume/crash_guard.h).
+  if (!detail::survives_in_child([&] {
+        Assimp::Importer trial;
+        trial.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
+                                 aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+        trial.ReadFile(file, flags);
+      }))
+    throw core::InputError("the file is damaged: assimp crashes or hangs on it", {file, "", ""});
   const aiScene* scene = importer.ReadFile(file, flags);
   if (scene == nullptr) {
     throw core::InputError(std::string("cannot read mesh: ") + importer.GetErrorString(),

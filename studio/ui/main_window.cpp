@@ -122,12 +122,7 @@ void MainWindow::update_title() {
 void MainWindow::on_document_changed(ChangeKind kind, const QString& /*id*/) {
   if (kind == ChangeKind::Materials) return;  // the panel follows by itself
   // One view state for the tree, the 3D view and the package (issue 23 §4).
-  ViewState state;
-  try {
-    state = view_state_of(document_.files());
-  } catch (const std::exception& e) {
-    show_error(QString::fromUtf8(e.what()));
-  }
+  const ViewState state = read_view_state().value_or(ViewState{});
   if (kind == ChangeKind::View) {
     view_->apply_view_state(state);
     tree_->apply_view_state(state);

@@ -20,6 +20,7 @@
 #include "studio/document/primitive_objects.h"
 #include "studio/document/scenario_document.h"
 #include "studio/document/variant_batch.h"
+#include "studio/document/view_state.h"
 #include "studio/ui/training_launcher.h"
 
 class QAction;
@@ -179,6 +180,9 @@ class MainWindow : public QMainWindow {
   /// Restores the window geometry and dock layout of the last session (QSettings), else sizes
   /// the window to most of the screen with the 3D view the largest pane.
   void restore_layout();
+  /// The document's view state (studio/view.json); nothing after showing the error of a
+  /// damaged one.
+  std::optional<ViewState> read_view_state();
   void save_layout() const;
   bool ask_save_as();
   /// Exports the document for the next training session; false after showing the error.

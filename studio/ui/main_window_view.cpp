@@ -67,14 +67,19 @@ void MainWindow::build_view_menu_items(QMenu* file, QMenu* view) {
           [this](bool on) { set_slice_planes_shown(on); });
 }
 
-bool MainWindow::set_visible(const QStringList& keys, bool visible) {
-  ViewState state;
+std::optional<ViewState> MainWindow::read_view_state() {
   try {
-    state = view_state_of(document_.files());
+    return view_state_of(document_.files());
   } catch (const std::exception& e) {
     show_error(QString::fromUtf8(e.what()));
-    return false;
+    return std::nullopt;
   }
+}
+
+bool MainWindow::set_visible(const QStringList& keys, bool visible) {
+  const std::optional<ViewState> current = read_view_state();
+  if (!current) return false;
+  ViewState state = *current;
   const ViewState before = state;
   for (const QString& key : keys) {
     if (key == SceneTree::kImageVolumeKey) {
@@ -99,13 +104,9 @@ bool MainWindow::set_object_opacity(const QString& id, double opacity) {
     show_error(tr("There is no object \"%1\" to change the opacity of.").arg(id));
     return false;
   }
-  ViewState state;
-  try {
-    state = view_state_of(document_.files());
-  } catch (const std::exception& e) {
-    show_error(QString::fromUtf8(e.what()));
-    return false;
-  }
+  const std::optional<ViewState> current = read_view_state();
+  if (!current) return false;
+  ViewState state = *current;
   const double value = std::clamp(opacity, 0.05, 1.0);
   if (value >= 1.0) {
     state.opacity.erase(id.toStdString());

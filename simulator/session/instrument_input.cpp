@@ -103,6 +103,12 @@ ScriptedTrajectory ScriptedTrajectory::from_json(const nlohmann::json& json,
       s.inflow = w.value("inflow", s.inflow);
       s.outflow = w.value("outflow", s.outflow);
       s.abort = w.value("abort", false);
+      // The pedal, 0 or 1, held from this waypoint until a later one changes it.
+      if (w.contains("activate")) {
+        const int pedal = w["activate"].get<int>();
+        if (pedal != 0 && pedal != 1) fail(pointer + "/activate", "activate must be 0 or 1");
+        s.electrode = pedal == 1;
+      }
       if (w.contains("look_at")) {
         const InstrumentState looking =
             look_at(s.tip, w["look_at"].get<core::Vec3>(), s.axis, optics_angle);

@@ -43,12 +43,14 @@ class InstrumentInput {
 ///   {"format": "viscera-script", "version": 1 or 2, "body": "uterus", "stiffness": 200,
 ///    "optics_angle": 30,
 ///    "waypoints": [{"t": 0.0, "tip": [x, y, z], "axis": [x, y, z], "up": [x, y, z],
-///                   "look_at": [x, y, z], "inflow": 1, "outflow": 0.5, "abort": false}, …]}
+///                   "look_at": [x, y, z], "inflow": 1, "outflow": 0.5, "abort": false,
+///                   "activate": 1}, …]}
 ///
 /// t in s, positions in m, stiffness in N/m, optics angle in degrees. Version 1 scripts carry
 /// only "tip"; "axis" (default: the previous waypoint's, or +z) and "up" set the shaft and the
 /// roll of the optics, or "look_at" points the angled optics at a point (the shaft stays on the
-/// side of the previous axis). Valve openings are in [0, 1] and hold until changed. "body"
+/// side of the previous axis). Valve openings are in [0, 1] and hold until changed; so does
+/// "activate", the cutting pedal (0 or 1), which switches at its waypoint. "body"
 /// names the object the tool touches (optional: the first simulated body). "tip" and "look_at"
 /// may name landmarks once resolve_script_landmarks has replaced them.
 class ScriptedTrajectory final : public InstrumentInput {

@@ -52,6 +52,7 @@ InstrumentState blend(const InstrumentState& a, const InstrumentState& b, double
   s.inflow = (1.0 - f) * a.inflow + f * b.inflow;
   s.outflow = (1.0 - f) * a.outflow + f * b.outflow;
   s.abort = f >= 1.0 && b.abort;
+  s.electrode = f >= 1.0 ? b.electrode : a.electrode;
   orthonormalise(s);
   return s;
 }

@@ -15,6 +15,10 @@ struct InstrumentState {
   double inflow = 0.0;                    ///< inflow valve opening, 0 (closed) … 1 (open)
   double outflow = 0.0;                   ///< outflow valve opening, 0 … 1
   bool abort = false;                     ///< the trainee ends the session
+  /// The resectoscope's loop electrode is energised (the cutting pedal is down, seed 000 §5):
+  /// while it is, the loop's sweep through tissue is recorded, and the cut is made once the
+  /// loop has left the tissue again (LoopResection).
+  bool electrode = false;
 
   bool operator==(const InstrumentState&) const = default;
 };
@@ -34,7 +38,8 @@ InstrumentState look_at(const core::Vec3& tip, const core::Vec3& target,
                         const core::Vec3& axis_hint, double optics_angle);
 
 /// Blends two states: positions linearly, directions by normalised linear blend, valves
-/// linearly; `f` in [0, 1]. Abort is taken from `b` once f reaches 1.
+/// linearly; `f` in [0, 1]. Abort is taken from `b` once f reaches 1; the electrode (a pedal,
+/// not a blend) stays as in `a` until then.
 InstrumentState blend(const InstrumentState& a, const InstrumentState& b, double f);
 
 }  // namespace viscera::sim

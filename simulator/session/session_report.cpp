@@ -69,6 +69,41 @@ nlohmann::json path_json(const SessionReport& r) {
   return path;
 }
 
+/// The cuts (issue 17 §5) in s, m³ and degrees, or null when the instrument cannot cut.
+nlohmann::json cutting_json(const SessionReport& r) {
+  if (!r.cutting) return nullptr;
+  const CuttingSummary& c = *r.cutting;
+  std::vector<double> times = c.cut_seconds;
+  std::sort(times.begin(), times.end());
+  const auto median = [&]() -> nlohmann::json {
+    if (times.empty()) return nullptr;
+    const std::size_t h = times.size() / 2;
+    return times.size() % 2 == 1 ? times[h] : 0.5 * (times[h - 1] + times[h]);
+  };
+  nlohmann::json bodies = nlohmann::json::array();
+  for (const auto& b : c.bodies) {
+    bodies.push_back({{"body", b.body},
+                      {"initial_volume", b.initial_volume},
+                      {"resected_volume", b.resected_volume},
+                      {"resected_fraction", b.resected_fraction()},
+                      {"chips", b.chips}});
+  }
+  const auto angle = [&](double degrees) -> nlohmann::json {
+    return c.cuts > 0 ? nlohmann::json(degrees) : nlohmann::json(nullptr);
+  };
+  return {{"sweeps", c.sweeps},
+          {"cuts", c.cuts},
+          {"released_in_tissue", c.released_in_tissue},
+          {"tets_created", c.tets_created},
+          {"cut_time_median", median()},
+          {"cut_time_max", times.empty() ? nlohmann::json(nullptr) : nlohmann::json(times.back())},
+          {"min_dihedral_before", angle(c.min_dihedral_before_degrees)},
+          {"min_dihedral_after", angle(c.min_dihedral_after_degrees)},
+          {"volume_before", c.volume_before},
+          {"volume_after", c.volume_after},
+          {"pathologies", bodies}};
+}
+
 /// The distension fluid's balance in m³ and Pa, or null without fluid.
 nlohmann::json fluid_json(const SessionReport& r) {
   if (!r.fluid) return nullptr;
@@ -176,6 +211,7 @@ nlohmann::json report_to_json(const SessionReport& r) {
           {"score_reason", reason_json(r.score, r.score_reason)},
           {"path", path_json(r)},
           {"fluid", fluid_json(r)},
+          {"cutting", cutting_json(r)},
           {"realtime", realtime_json(r)},
           {"end_reason", r.end_reason},
           {"events", events},

@@ -5,6 +5,7 @@
 /// As JSON: format "viscera-session-report", version 3, schema docs/session-report.schema.json.
 /// A score is absent (null) with its reason when nothing of the period could be assessed.
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -85,6 +86,31 @@ struct RealtimeStats {
   bool device_real_time = false;     ///< the device thread ran at a real-time priority
 };
 
+/// What one pathology lost to the resection loop (issue 17 §5).
+struct BodyResection {
+  std::string body;
+  double initial_volume = 0.0;   ///< m³, rest volume at the start of the session
+  double resected_volume = 0.0;  ///< m³, rest volume of its chips (fragments without anchor)
+  int chips = 0;
+  double resected_fraction() const {
+    return initial_volume > 0.0 ? std::min(1.0, resected_volume / initial_volume) : 0.0;
+  }
+};
+
+/// The cuts of a session (issue 17 §5); absent when the instrument cannot cut.
+struct CuttingSummary {
+  int sweeps = 0;              ///< pedal presses with a sweep that moved
+  int cuts = 0;                ///< bodies cut (one sweep through two bodies counts two)
+  int released_in_tissue = 0;  ///< bodies a sweep ended inside: not cut (seed 000 §5.1)
+  long long tets_created = 0;
+  std::vector<double> cut_seconds;  ///< wall time of each cut, s (the run, not the state)
+  double min_dihedral_before_degrees = 180.0;  ///< over the tets the cuts replaced
+  double min_dihedral_after_degrees = 180.0;   ///< over the tets the cuts created
+  double volume_before = 0.0;  ///< m³, rest volume of the cuttable bodies at the start
+  double volume_after = 0.0;   ///< m³, the same now (a cut keeps it, to rounding)
+  std::vector<BodyResection> bodies;
+};
+
 /// The result of a session.
 struct SessionReport {
   std::string package;
@@ -119,6 +145,7 @@ struct SessionReport {
   std::optional<FluidTotals> fluid;
   double final_cavity_pressure = 0.0;     ///< Pa
   std::optional<RealtimeStats> realtime;  ///< of a threaded window session
+  std::optional<CuttingSummary> cutting;  ///< with a cutting instrument
   std::string end_reason = "duration";    ///< "duration", "time-limit", "completed", "perforation",
                                           ///< "fluid-overload", "tissue-tear", "abort"
 };

@@ -101,6 +101,7 @@ SessionRunner::SessionRunner(const core::Scenario& scenario, const HeadlessRunOp
     report_.has_instrument = true;
     if (scenario.fluid.enabled) fluid_.emplace(scenario.fluid);
     if (tissue_->body() != nullptr) surface_object = tissue_->name();
+    if (scenario.session.instrument.kind == "resectoscope") start_resection(scenario);
   }
 
   // The camera observes the surface the instrument works in, restricted to the region the
@@ -281,6 +282,8 @@ void SessionRunner::step(const InstrumentState& input) {
   }
   step_world();
   const double now = world_.time();
+  if (resection_ != nullptr)
+    resection_->follow(state_, world_, now, *report_.cutting, report_.events);
   if (has_instrument) {
     const core::Vec3 force = tissue_->force();
     const bool contact = tissue_->in_contact();
@@ -305,7 +308,9 @@ void SessionRunner::step(const InstrumentState& input) {
   }
   const long long s = world_.steps();
   if (options_.checkpoint_interval > 0 && s % options_.checkpoint_interval == 0) {
-    report_.checkpoints.emplace_back(s, state_hash());
+    const long long index = s / options_.checkpoint_interval;
+    if (checkpoint_series_.due(index))  // the hash is only worth computing when it is kept
+      checkpoint_series_.offer(report_.checkpoints, index, {s, state_hash()});
   }
   if (coverage_ != nullptr && has_instrument && s % look_every_ == 0) look();
   if (s % sample_every_ == 0 || s >= total_steps_ || finished_) sample();
@@ -316,6 +321,20 @@ void SessionRunner::step(const InstrumentState& input) {
         limit ? "the procedure's time limit of " + std::to_string(time_limit_) + " s is reached"
               : "end of the session");
   }
+}
+
+void SessionRunner::start_resection(const core::Scenario& scenario) {
+  std::vector<int> bodies;
+  for (const auto& model : world_.models()) {
+    const core::SceneObject* object = scenario.find_object(model->name);
+    if (object != nullptr && object->role == core::ObjectRole::Pathology &&
+        model->kind == BodyModelKind::Teschner && !model->mesh.tets.empty())
+      bodies.push_back(model->body);
+  }
+  resection_ =
+      std::make_unique<LoopResection>(world_, std::move(bodies), standard_resection_loop());
+  report_.cutting.emplace();
+  resection_->begin(world_, *report_.cutting);
 }
 
 void SessionRunner::step_world() {
@@ -371,12 +390,15 @@ void SessionRunner::sample() {
   double displacement = 0.0;
   for (const auto& body : world_.bodies())
     displacement = std::max(displacement, body.max_displacement());
-  report_.samples.push_back({world_.time(), e.kinetic, e.elastic, e.gravitational, displacement,
-                             world_.contacts().colliding_points,
-                             world_.contacts().max_penetration});
+  const long long index = world_.steps() / sample_every_;
+  const bool last = finished_ || world_.steps() >= total_steps_;
+  energy_series_.offer(report_.samples, index,
+                       {world_.time(), e.kinetic, e.elastic, e.gravitational, displacement,
+                        world_.contacts().colliding_points, world_.contacts().max_penetration},
+                       last);
   report_.max_displacement = std::max(report_.max_displacement, displacement);
   const bool has_instrument = options_.instrument != nullptr;
-  if (has_instrument) {
+  if (has_instrument && (last || path_series_.due(index))) {
     PathSample p;
     p.time = world_.time();
     p.tip = state_.tip;
@@ -384,7 +406,7 @@ void SessionRunner::sample() {
     p.in_contact = tissue_->in_contact();
     p.step = current_ < static_cast<int>(report_.procedure_steps.size()) ? current_ : -1;
     if (coverage_ != nullptr) p.wall_distance = coverage_->bvh().nearest(state_.tip).distance;
-    report_.path.push_back(p);
+    path_series_.offer(report_.path, index, p, last);
   }
   TaskContext context;
   context.time = world_.time();

@@ -14,6 +14,8 @@
 #include "simulator/fluid/distension_balance.h"
 #include "simulator/session/instrument_input.h"
 #include "simulator/session/instrument_tissue.h"
+#include "simulator/session/loop_resection.h"
+#include "simulator/session/series_thinning.h"
 #include "simulator/session/session_report.h"
 #include "simulator/world/world.h"
 
@@ -83,6 +85,8 @@ class SessionRunner {
  private:
   struct Monitor;
   void sample();
+  /// Sets up the loop on every pathology body of the world (LoopResection).
+  void start_resection(const core::Scenario& scenario);
   void look();
   /// world_.step(), with any failure turned into a core::SimulationError naming body, node,
   /// step and likely cause (simulation_check.h).
@@ -100,11 +104,17 @@ class SessionRunner {
   InstrumentState state_;
   std::unique_ptr<InstrumentTissue> tissue_;
   std::unique_ptr<SurfaceCoverage> coverage_;
+  /// The resection loop, with a "resectoscope" instrument: it cuts the pathology bodies.
+  std::unique_ptr<LoopResection> resection_;
   std::vector<core::Vec3> coverage_rest_;  ///< visual vertices when the surface has no embedding
   std::vector<Monitor> monitors_;
   int current_ = -1;
   double time_limit_ = 0.0, force_warning_ = 0.0, perforation_depth_ = 0.0;
   long long total_steps_ = 0, sample_every_ = 1, look_every_ = 1;
+  /// The report's series, bounded however long the session (SeriesThinning): 16,384 energy
+  /// and path samples each (5.5 min at the default 50 Hz before the first thinning) and 8,192
+  /// replay checkpoints (13.6 min at 1 ms steps and the default interval of 100 steps).
+  SeriesThinning energy_series_{16384}, path_series_{16384}, checkpoint_series_{8192};
   bool finished_ = false, over_force_ = false;
   bool instrument_moved_ = false;  ///< the input has changed the instrument's state
   double last_view_distance_ = -1.0;

@@ -24,7 +24,7 @@ std::string package_manifest_sha256(const std::filesystem::path& package) {
 namespace {
 
 nlohmann::json state_to_json(long long step, const InstrumentState& s) {
-  return {step, s.tip, s.axis, s.up, s.inflow, s.outflow, s.abort};
+  return {step, s.tip, s.axis, s.up, s.inflow, s.outflow, s.abort, s.electrode};
 }
 
 std::pair<long long, InstrumentState> state_from_json(const nlohmann::json& j) {
@@ -35,6 +35,7 @@ std::pair<long long, InstrumentState> state_from_json(const nlohmann::json& j) {
   j.at(4).get_to(s.inflow);
   j.at(5).get_to(s.outflow);
   j.at(6).get_to(s.abort);
+  if (j.size() > 7) j.at(7).get_to(s.electrode);  // traces before the electrode have 7 members
   return {j.at(0).get<long long>(), s};
 }
 

@@ -13,8 +13,8 @@ namespace {
 /// one shaft whose tip carries the haptic proxy and the camera).
 const std::set<std::string> kDetectedKinds = {"reach",    "centre-target", "inspect-surface",
                                               "withdraw", "touch",         "settle"};
-const std::set<std::string> kSimulatedTools = {"hysteroscope", "cystoscope", "laparoscope",
-                                               "resectoscope-optics", "probe"};
+const std::set<std::string> kSimulatedTools = {"hysteroscope",        "cystoscope",   "laparoscope",
+                                               "resectoscope-optics", "resectoscope", "probe"};
 
 /// The tool a task kind needs when it names none.
 std::string tool_needed(const std::string& kind) {

@@ -55,6 +55,12 @@ void BM_HysteroscopySessionSoak(benchmark::State& state) {
     state.counters["real_time_factor"] =
         report.wall_time > 0.0 ? report.simulated_time / report.wall_time : 0.0;
     state.counters["simulated_s"] = report.simulated_time;
+    // What the report keeps: each series is bounded (SeriesThinning), the events are not.
+    state.counters["samples"] = static_cast<double>(report.samples.size());
+    state.counters["path"] = static_cast<double>(report.path.size());
+    state.counters["checkpoints"] = static_cast<double>(report.checkpoints.size());
+    state.counters["events"] = static_cast<double>(report.events.size());
+    state.counters["inputs"] = static_cast<double>(report.inputs.size());
     if (report.simulated_time < duration - 1e-6) {
       state.SkipWithError(("the session ended (" + report.end_reason + ") after " +
                            std::to_string(report.simulated_time) + " s, short of the soak")

@@ -1,0 +1,221 @@
+#include "simulator/session/loop_resection.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "core/error.h"
+#include "simulator/cutting/fragments.h"
+#include "simulator/dynamics/attachment_term.h"
+
+namespace viscera::sim {
+
+namespace {
+
+/// A tenth of the radius, or 5°, between recorded poses of the sweep.
+constexpr double kPoseSpacingOfRadius = 0.1;
+const double kPoseTurnCosine = std::cos(5.0 * std::numbers::pi / 180.0);
+
+/// The cut's node sources as the core's per-node origins (at most four: an unchanged or copied
+/// node has one, a node on a cut edge two, a relaxed node the four corners of its old tet).
+std::vector<NodeOrigin> node_origins(const cutting::TopologyChange& change) {
+  std::vector<NodeOrigin> origins(change.mesh.nodes.size());
+  for (std::size_t i = 0; i < origins.size(); ++i) {
+    auto [begin, end] = change.sources(static_cast<int>(i));
+    std::vector<cutting::NodeSource> sources(begin, end);
+    if (sources.size() > 4) {
+      // Not produced by the cut's rules; kept safe: the four heaviest, renormalised.
+      std::stable_sort(sources.begin(), sources.end(),
+                       [](const auto& a, const auto& b) { return a.weight > b.weight; });
+      sources.resize(4);
+    }
+    double total = 0.0;
+    for (const auto& s : sources)
+      total += s.weight;
+    for (std::size_t k = 0; k < sources.size(); ++k) {
+      origins[i].node[k] = sources[k].old_node;
+      origins[i].weight[k] = total > 0.0 ? sources[k].weight / total : 0.0;
+    }
+  }
+  return origins;
+}
+
+struct Box {
+  core::Vec3 lo = core::Vec3::Constant(std::numeric_limits<double>::infinity());
+  core::Vec3 hi = -core::Vec3::Constant(std::numeric_limits<double>::infinity());
+  void add(const core::Vec3& p) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  bool overlaps(const Box& o) const {
+    return (lo.array() <= o.hi.array()).all() && (o.lo.array() <= hi.array()).all();
+  }
+};
+
+}  // namespace
+
+cutting::LoopElectrode standard_resection_loop() {
+  cutting::LoopElectrode loop;
+  loop.radius = 0.0025;
+  loop.arc_radians = std::numbers::pi;
+  loop.segments = 12;
+  return loop;
+}
+
+cutting::LoopPose loop_pose(const InstrumentState& state) {
+  cutting::LoopPose pose;
+  pose.position = state.tip;
+  const core::Vec3 z = state.axis.normalized();
+  const core::Vec3 y = -(state.up - state.up.dot(z) * z).normalized();  // hangs towards up
+  pose.rotation.col(0) = y.cross(z);
+  pose.rotation.col(1) = y;
+  pose.rotation.col(2) = z;
+  return pose;
+}
+
+LoopResection::LoopResection(const World& world, std::vector<int> bodies,
+                             cutting::LoopElectrode loop)
+    : bodies_(std::move(bodies)), loop_(loop) {
+  for (const int b : bodies_)
+    initial_volume_.push_back(
+        core::total_volume(world.models()[static_cast<std::size_t>(b)]->mesh));
+}
+
+void LoopResection::record_pose(const InstrumentState& state) {
+  const cutting::LoopPose pose = loop_pose(state);
+  if (!sweep_.empty()) {
+    const cutting::LoopPose& last = sweep_.back();
+    const bool moved =
+        (pose.position - last.position).norm() >= kPoseSpacingOfRadius * loop_.radius;
+    const bool turned = pose.rotation.col(2).dot(last.rotation.col(2)) < kPoseTurnCosine ||
+                        pose.rotation.col(1).dot(last.rotation.col(1)) < kPoseTurnCosine;
+    if (!moved && !turned) return;
+  }
+  sweep_.push_back(pose);
+}
+
+void LoopResection::follow(const InstrumentState& state, World& world, double time,
+                           CuttingSummary& summary, std::vector<SessionEvent>& events) {
+  if (state.electrode) {
+    if (!sweeping_) sweep_.clear();
+    sweeping_ = true;
+    record_pose(state);
+    return;
+  }
+  if (!sweeping_) return;
+  sweeping_ = false;
+  // The pose at release ends the sweep, however little it moved since the last one kept.
+  const cutting::LoopPose last = loop_pose(state);
+  if (sweep_.empty() || (sweep_.back().position - last.position).norm() > 0.0)
+    sweep_.push_back(last);
+  cut(world, time, summary, events);
+  sweep_.clear();
+}
+
+std::vector<std::uint8_t> LoopResection::anchored_nodes(const World& world, int body) const {
+  const auto inverse = world.state().range(world.state().inverse_masses, body);
+  std::vector<std::uint8_t> anchored(inverse.size(), 0);
+  for (std::size_t i = 0; i < inverse.size(); ++i)
+    anchored[i] = inverse[i] == 0.0 ? 1 : 0;
+  for (const auto& term : world.terms()) {
+    const auto* attachments = dynamic_cast<const AttachmentTerm*>(term.get());
+    if (attachments == nullptr) continue;
+    for (const Attachment& a : attachments->attachments())
+      if (a.body == body && a.node >= 0 && static_cast<std::size_t>(a.node) < anchored.size())
+        anchored[static_cast<std::size_t>(a.node)] = 1;
+  }
+  return anchored;
+}
+
+void LoopResection::cut(World& world, double time, CuttingSummary& summary,
+                        std::vector<SessionEvent>& events) {
+  cutting::CutSurface surface;
+  try {
+    surface = cutting::swept_loop_surface(loop_, sweep_);
+  } catch (const core::InputError&) {
+    return;  // the loop did not move while the pedal was down: nothing was swept
+  }
+  ++summary.sweeps;
+  Box swept;
+  for (const auto& v : surface.vertices)
+    swept.add(v);
+  for (std::size_t k = 0; k < bodies_.size(); ++k) {
+    const int b = bodies_[k];
+    const BodyModel& model = *world.models()[static_cast<std::size_t>(b)];
+    const auto positions = world.state().range(world.state().positions, b);
+    const std::vector<core::Vec3> current(positions.begin(), positions.end());
+    Box body;
+    for (const auto& p : current)
+      body.add(p);
+    if (!swept.overlaps(body)) continue;
+    try {
+      cutting::require_sweep_leaves_tissue(model.mesh, current, loop_, sweep_);
+    } catch (const core::InputError&) {
+      ++summary.released_in_tissue;
+      events.push_back({time, "cut-released-in-tissue",
+                        "the pedal came up with the loop inside " + model.name +
+                            ": no cut (a cut is made once the loop has left the tissue)"});
+      continue;
+    }
+    const auto start = std::chrono::steady_clock::now();
+    const cutting::TopologyChange change =
+        cutting::hybrid_cut(model.mesh, current, surface, options_);
+    if (!change.changed) continue;
+    BodyTopology topology;
+    topology.rest_mesh = change.mesh;
+    topology.positions = change.current;
+    topology.origin = node_origins(change);
+    topology.tet_parent = change.tet_parent;
+    world.topology_changed(b, topology);
+    summary.cut_seconds.push_back(
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+
+    const cutting::CutStatistics& s = change.statistics;
+    ++summary.cuts;
+    summary.tets_created +=
+        static_cast<long long>(s.tets_after) - static_cast<long long>(s.tets_before);
+    summary.min_dihedral_before_degrees =
+        std::min(summary.min_dihedral_before_degrees, s.min_dihedral_before_degrees);
+    summary.min_dihedral_after_degrees =
+        std::min(summary.min_dihedral_after_degrees, s.min_dihedral_after_degrees);
+    summary.volume_after += s.rest_volume_after - s.rest_volume_before;
+
+    // Chips: fragments without an anchor. A body that never had one keeps its largest piece.
+    const core::TetMesh& cut_mesh = world.models()[static_cast<std::size_t>(b)]->mesh;
+    const auto fragments = cutting::body_fragments(cut_mesh, anchored_nodes(world, b));
+    const bool any_anchor =
+        std::any_of(fragments.begin(), fragments.end(), [](const auto& f) { return f.anchored; });
+    std::size_t largest = 0;
+    for (std::size_t f = 1; f < fragments.size(); ++f)
+      if (fragments[f].rest_volume > fragments[largest].rest_volume) largest = f;
+    BodyResection& resection = summary.bodies[k];
+    resection.resected_volume = 0.0;
+    resection.chips = 0;
+    for (std::size_t f = 0; f < fragments.size(); ++f) {
+      if (fragments[f].anchored || (!any_anchor && f == largest)) continue;
+      resection.resected_volume += fragments[f].rest_volume;
+      ++resection.chips;
+    }
+    events.push_back({time, "cut",
+                      "the loop cut " + model.name + ": " + std::to_string(s.tets_traversed) +
+                          " tets traversed, " + std::to_string(resection.chips) + " chip(s), " +
+                          std::to_string(std::lround(100.0 * resection.resected_fraction())) +
+                          " % resected"});
+  }
+}
+
+void LoopResection::begin(const World& world, CuttingSummary& summary) const {
+  summary = CuttingSummary{};
+  for (std::size_t k = 0; k < bodies_.size(); ++k) {
+    BodyResection resection;
+    resection.body = world.models()[static_cast<std::size_t>(bodies_[k])]->name;
+    resection.initial_volume = initial_volume_[k];
+    summary.bodies.push_back(resection);
+    summary.volume_before += initial_volume_[k];
+  }
+  summary.volume_after = summary.volume_before;
+}
+
+}  // namespace viscera::sim

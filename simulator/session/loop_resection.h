@@ -1,0 +1,69 @@
+#pragma once
+/// The resectoscope's loop electrode in a session (seed 000 §5 and §5.1; issue 17 §1, §4, §5).
+///
+/// While the cutting pedal is down (InstrumentState::electrode) the loop's sweep is sampled:
+/// one pose whenever the loop has moved a tenth of its radius or turned 5° since the last.
+/// When the pedal comes up, the sweep is cut into every pathology body it traverses, once
+/// ("object meshes are decomposed only once they have been completely traversed", §5.1): the
+/// swept surface (cutting::swept_loop_surface) goes to the hybrid cut (cutting::hybrid_cut), the
+/// world takes the new topology (World::topology_changed, which rebuilds every cache) and the
+/// fragments that lost every anchor — the nodes bound to the wall, or held fixed — are chips:
+/// excised tissue that moves freely, falls and meets the wall through body contact. A sweep
+/// released with the loop still inside a body does not cut that body (the seed's rule); the
+/// report counts it.
+///
+/// Decisions where the seed is silent: the loop hangs from the tip on the side the angled optics
+/// look towards (InstrumentState::up), in the plane across the shaft, so it is in view; the cut
+/// reaches pathology bodies only (polyps, myomas), not the wall they grow on, whose cutting
+/// needs the perforation rules of issue 17 §5. Chips stay in their body's node range.
+
+#include <string>
+#include <vector>
+
+#include "simulator/cutting/cut_surface.h"
+#include "simulator/cutting/hybrid_cut.h"
+#include "simulator/session/instrument_state.h"
+#include "simulator/session/session_report.h"
+#include "simulator/world/world.h"
+
+namespace viscera::sim {
+
+/// The loop of a standard 26 Fr resectoscope: a half ring of 2.5 mm radius (a 5 mm wide cut).
+cutting::LoopElectrode standard_resection_loop();
+
+/// The loop frame at the instrument's pose: origin at the tip, local z along the shaft, the
+/// loop hanging (local −y) towards `up`.
+cutting::LoopPose loop_pose(const InstrumentState& state);
+
+class LoopResection {
+ public:
+  /// `bodies`: indices of the world bodies the loop may cut; `names` their names for the report.
+  LoopResection(const World& world, std::vector<int> bodies, cutting::LoopElectrode loop);
+
+  /// The summary before any cut: every cuttable body with its rest volume.
+  void begin(const World& world, CuttingSummary& summary) const;
+
+  /// After every physics step: follows the pedal and the loop at `state`; when the pedal comes
+  /// up, cuts and records the cut in `summary` and its events in `events` (at `time` s).
+  void follow(const InstrumentState& state, World& world, double time, CuttingSummary& summary,
+              std::vector<SessionEvent>& events);
+
+  /// True while the pedal is down.
+  bool sweeping() const { return sweeping_; }
+  const cutting::LoopElectrode& loop() const { return loop_; }
+
+ private:
+  void cut(World& world, double time, CuttingSummary& summary, std::vector<SessionEvent>& events);
+  void record_pose(const InstrumentState& state);
+  /// Nodes of `body` that hold it in place: fixed nodes and nodes bound to another body.
+  std::vector<std::uint8_t> anchored_nodes(const World& world, int body) const;
+
+  std::vector<int> bodies_;
+  std::vector<double> initial_volume_;  ///< m³ rest volume of each cuttable body at the start
+  cutting::LoopElectrode loop_;
+  cutting::HybridCutOptions options_;
+  bool sweeping_ = false;
+  std::vector<cutting::LoopPose> sweep_;
+};
+
+}  // namespace viscera::sim

@@ -1,0 +1,192 @@
+// The resection loop in a session (issue 17 §1, §4, §5): on the hysteroscopy template with a
+// resectoscope, a pedal-down sweep that scoops the polyp's apex cuts it once the loop has left
+// the tissue; the chip is free, the mesh stays sound, volume is kept and the run replays.
+
+#include "simulator/session/loop_resection.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "simulator/dynamics/attachment_term.h"
+#include "simulator/session/instrument_input.h"
+#include "simulator/session/session_runner.h"
+#include "templates/template_catalog.h"
+
+namespace viscera::sim {
+namespace {
+
+constexpr double kRadius = 0.0025;  // standard_resection_loop()
+
+core::Scenario resectoscope_patient(int seed = 1) {
+  core::Scenario s = templates::build_from_template("hysteroscopy", {}, seed);
+  s.session.instrument.kind = "resectoscope";
+  return s;
+}
+
+/// Where the polyp grows: its attached nodes' centre (base), its apex and the unit axis between.
+struct PolypFrame {
+  int body = -1;
+  core::Vec3 base, apex, axis, across;
+  double half_width = 0.0;  ///< m, largest distance of a node from the axis
+};
+
+PolypFrame polyp_frame(const World& world) {
+  PolypFrame f;
+  f.body = world.body_index("polyp-1");
+  const auto x = world.state().range(world.state().positions, f.body);
+  core::Vec3 sum = core::Vec3::Zero();
+  int count = 0;
+  for (const auto& term : world.terms())
+    if (const auto* a = dynamic_cast<const AttachmentTerm*>(term.get()))
+      for (const auto& at : a->attachments())
+        if (at.body == f.body) {
+          sum += x[static_cast<std::size_t>(at.node)];
+          ++count;
+        }
+  f.base = sum / std::max(count, 1);
+  f.apex = *std::max_element(x.begin(), x.end(), [&](const auto& p, const auto& q) {
+    return (p - f.base).squaredNorm() < (q - f.base).squaredNorm();
+  });
+  f.axis = (f.apex - f.base).normalized();
+  f.across = f.axis.unitOrthogonal();
+  for (const auto& p : x) {
+    const core::Vec3 d = p - f.base;
+    f.half_width = std::max(f.half_width, (d - d.dot(f.axis) * f.axis).norm());
+  }
+  return f;
+}
+
+/// A script: rest beside the polyp, pedal down, draw the loop across the apex `depth` m deep
+/// (its arc's lowest point below the apex), pedal up beyond it, then rest. The shaft points
+/// against the motion: the loop is drawn back towards the optics (seed 000 §5).
+nlohmann::json scoop_script(const PolypFrame& f, double depth, double release_fraction = 1.0) {
+  const double reach = f.half_width + 2.0 * kRadius + 0.002;
+  const core::Vec3 height = f.apex + (kRadius - depth) * f.axis;
+  const core::Vec3 from = height + reach * f.across, to = height - reach * f.across;
+  const core::Vec3 release = from + release_fraction * (to - from);
+  const auto point = [](const core::Vec3& p) { return nlohmann::json{p.x(), p.y(), p.z()}; };
+  const nlohmann::json axis = point(f.across), up = point(-f.axis);
+  return {{"format", "viscera-script"},
+          {"version", 2},
+          {"body", "uterus"},
+          {"waypoints",
+           {{{"t", 0.0}, {"tip", point(from)}, {"axis", axis}, {"up", up}},
+            {{"t", 0.2}, {"tip", point(from)}, {"activate", 1}},
+            {{"t", 0.7}, {"tip", point(release)}},
+            {{"t", 0.72}, {"tip", point(release)}, {"activate", 0}},
+            {{"t", 1.5}, {"tip", point(release)}}}}};
+}
+
+struct ScoopRun {
+  SessionReport report;
+  std::vector<core::Vec3> polyp_at_release, polyp_at_end;
+  int everted_at_end = -1;
+};
+
+ScoopRun run(const core::Scenario& scenario, const nlohmann::json& script) {
+  const auto input = ScriptedTrajectory::from_json(script, "scoop", 30.0);
+  HeadlessRunOptions options;
+  options.duration = 1.5;
+  options.instrument = &input;
+  options.instrument_body = "uterus";
+  SessionRunner runner(scenario, options);
+  ScoopRun r;
+  const int polyp = runner.world().body_index("polyp-1");
+  while (!runner.finished()) {
+    runner.step(input.state(runner.world().steps() + 1, runner.world().time()));
+    const auto x = runner.world().state().range(runner.world().state().positions, polyp);
+    if (std::abs(runner.world().time() - 0.73) < 5e-4)
+      r.polyp_at_release.assign(x.begin(), x.end());
+  }
+  const auto x = runner.world().state().range(runner.world().state().positions, polyp);
+  r.polyp_at_end.assign(x.begin(), x.end());
+  r.everted_at_end = runner.world().everted_tets();
+  r.report = runner.finish();
+  return r;
+}
+
+PolypFrame frame_of(const core::Scenario& scenario) {
+  const World world(scenario);
+  return polyp_frame(world);
+}
+
+TEST(LoopResection, a_sweep_across_the_polyp_apex_scoops_a_chip_that_then_moves_freely) {
+  const core::Scenario scenario = resectoscope_patient();
+  const PolypFrame frame = frame_of(scenario);
+  ASSERT_GE(frame.body, 0);
+  const ScoopRun r = run(scenario, scoop_script(frame, 2.0e-3));
+  ASSERT_TRUE(r.report.cutting.has_value());
+  const CuttingSummary& c = *r.report.cutting;
+  EXPECT_EQ(c.sweeps, 1);
+  EXPECT_EQ(c.released_in_tissue, 0);
+  ASSERT_GE(c.cuts, 1);
+  EXPECT_GT(c.tets_created, 0);
+  EXPECT_GE(c.min_dihedral_after_degrees, 1.0);
+  EXPECT_NEAR(c.volume_after, c.volume_before, 1e-9 * c.volume_before);
+  const auto polyp = std::find_if(c.bodies.begin(), c.bodies.end(),
+                                  [](const auto& b) { return b.body == "polyp-1"; });
+  ASSERT_NE(polyp, c.bodies.end());
+  EXPECT_GE(polyp->chips, 1);
+  EXPECT_GT(polyp->resected_fraction(), 0.01);
+  EXPECT_LT(polyp->resected_fraction(), 0.9);  // the apex, not the whole polyp
+  // Sound afterwards: no inverted tet, finite energy, and the chip moved away from where it was
+  // cut (it is free: gravity, the flow of the wall and contact move it).
+  EXPECT_EQ(r.everted_at_end, 0);
+  for (const auto& s : r.report.samples)
+    EXPECT_TRUE(std::isfinite(s.total()));
+  ASSERT_EQ(r.polyp_at_release.size(), r.polyp_at_end.size());
+  double moved = 0.0;
+  for (std::size_t i = 0; i < r.polyp_at_end.size(); ++i)
+    moved = std::max(moved, (r.polyp_at_end[i] - r.polyp_at_release[i]).norm());
+  EXPECT_GT(moved, 1e-4);
+  const auto cut_event = std::find_if(r.report.events.begin(), r.report.events.end(),
+                                      [](const auto& e) { return e.kind == "cut"; });
+  EXPECT_NE(cut_event, r.report.events.end());
+}
+
+TEST(LoopResection, the_same_sweep_replays_to_the_same_state) {
+  const core::Scenario scenario = resectoscope_patient();
+  const auto script = scoop_script(frame_of(scenario), 2.0e-3);
+  const ScoopRun a = run(scenario, script), b = run(scenario, script);
+  EXPECT_EQ(a.report.final_state_hash, b.report.final_state_hash);
+  EXPECT_EQ(a.report.checkpoints, b.report.checkpoints);
+}
+
+TEST(LoopResection, a_pedal_released_inside_the_polyp_cuts_nothing) {
+  const core::Scenario scenario = resectoscope_patient();
+  const PolypFrame frame = frame_of(scenario);
+  // Released half-way across: the loop is still in the tissue.
+  const ScoopRun r = run(scenario, scoop_script(frame, 2.0e-3, 0.5));
+  ASSERT_TRUE(r.report.cutting.has_value());
+  EXPECT_EQ(r.report.cutting->cuts, 0);
+  EXPECT_EQ(r.report.cutting->released_in_tissue, 1);
+  EXPECT_EQ(r.report.cutting->tets_created, 0);
+}
+
+TEST(LoopResection, a_diagnostic_hysteroscope_has_no_loop) {
+  core::Scenario scenario = resectoscope_patient();
+  scenario.session.instrument.kind = "hysteroscope";
+  const ScoopRun r = run(scenario, scoop_script(frame_of(scenario), 2.0e-3));
+  EXPECT_FALSE(r.report.cutting.has_value());
+}
+
+TEST(LoopResection, the_loop_hangs_towards_the_optics_view_across_the_shaft) {
+  InstrumentState s;
+  s.tip = core::Vec3(0.01, 0.0, 0.0);
+  s.axis = core::Vec3::UnitX();
+  s.up = core::Vec3::UnitZ();
+  const cutting::LoopPose pose = loop_pose(s);
+  EXPECT_TRUE(pose.rotation.isUnitary(1e-12));
+  EXPECT_NEAR(pose.rotation.determinant(), 1.0, 1e-12);
+  const auto points = cutting::loop_points(standard_resection_loop(), pose);
+  // The arc's middle point lies one radius from the tip on the up side, in the plane across
+  // the shaft.
+  const core::Vec3 middle = points[points.size() / 2];
+  EXPECT_NEAR((middle - (s.tip + kRadius * s.up)).norm(), 0.0, 1e-12);
+  for (const auto& p : points)
+    EXPECT_NEAR((p - s.tip).dot(s.axis), 0.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace viscera::sim

@@ -21,6 +21,8 @@ constexpr int kDepthLimit = 32;
 struct Syntax {
   bool explicit_vr = true;
   bool big_endian = false;
+  /// A compressed transfer syntax: pixel data is encapsulated in fragments (PS3.5 §A.4).
+  bool encapsulated = false;
 };
 
 struct Tag {
@@ -164,6 +166,14 @@ class ElementWalk {
     if (h.length == kUndefinedLength) {
       // A sequence, an explicit UN holding one in implicit VR (CP-246), or encapsulated pixels.
       const bool pixels = h.tag == kPixelData && (h.vr == "OB" || h.vr == "OW" || h.vr.empty());
+      // Only a compressed transfer syntax encapsulates pixel data (undefined length, then
+      // fragments); in a native one the length is the image's (PS3.5 §A.4). GDCM reads such a
+      // file on as elements out of the pixels and allocates what their bytes declare.
+      if (pixels && depth == 0 && !syntax.encapsulated) {
+        throw Refusal{"pixel data is damaged: " + tag_text(h.tag) + " at byte " +
+                      std::to_string(at) +
+                      " has an undefined length, which only a compressed transfer syntax allows"};
+      }
       if (syntax.explicit_vr && h.vr != "SQ" && h.vr != "UN" && !pixels) throw NotFollowed{};
       Syntax nested = syntax;
       if (h.vr == "UN") nested.explicit_vr = false;
@@ -187,6 +197,10 @@ class ElementWalk {
     for (;;) {
       const Header h = header(at, syntax, false);
       if (h.tag == kSequenceEnd) return h.value;
+      if (fragments && !(h.tag == kItem)) {
+        throw Refusal{"pixel data is damaged: encapsulated pixel data holds " + tag_text(h.tag) +
+                      " at byte " + std::to_string(at) + " where a fragment item must be"};
+      }
       at = item_end(h, at, end, syntax, depth, fragments);
     }
   }
@@ -241,7 +255,9 @@ std::optional<std::string> dicom_length_problem(const fs::path& path) {
     }
     // No transfer syntax (GDCM guesses one) or a deflated data set: not walked.
     if (uid.empty() || uid == "1.2.840.10008.1.2.1.99") return std::nullopt;
-    const Syntax syntax{uid != "1.2.840.10008.1.2", uid == "1.2.840.10008.1.2.2"};
+    const bool native =
+        uid == "1.2.840.10008.1.2" || uid == "1.2.840.10008.1.2.1" || uid == "1.2.840.10008.1.2.2";
+    const Syntax syntax{uid != "1.2.840.10008.1.2", uid == "1.2.840.10008.1.2.2", !native};
     walk.elements(at, size, syntax, 0, false);
   } catch (const NotFollowed&) {
     return std::nullopt;

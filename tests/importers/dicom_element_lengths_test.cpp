@@ -35,6 +35,22 @@ TEST(DicomElementLengths, the_fuzz_finding_is_refused_for_its_element_before_gdc
       << message;
 }
 
+TEST(DicomElementLengths, native_pixels_of_undefined_length_are_refused_before_gdcm_reads_on) {
+  // The fourth fuzz pass's finding: a big-endian slice whose Pixel Data lost its VR and length
+  // to 0xFF bytes; GDCM read the pixels on as elements and asked for 4 GB in the parse guard.
+  const fs::path file =
+      testing::source_dir() /
+      "tests/fuzz/regressions/volume_dicom_file/native_pixels_of_undefined_length.dcm";
+  const auto problem = detail::dicom_length_problem(file);
+  ASSERT_TRUE(problem.has_value());
+  EXPECT_TRUE(contains(*problem,
+                       "pixel data is damaged: (7FE0,0010) at byte 1504 has an "
+                       "undefined length"))
+      << *problem;
+  const std::string message = volume_read_error(file);
+  EXPECT_TRUE(contains(message, file.string()) && contains(message, "(7FE0,0010)")) << message;
+}
+
 TEST(DicomElementLengths, a_folder_is_read_without_the_file_and_lists_it_with_the_reason) {
   const fs::path folder = testing::scratch_dir() / "series";
   fs::create_directories(folder);

@@ -26,4 +26,18 @@ nlohmann::json read_json_file(const std::string& path) {
   return parse_json_text(text.str(), path);
 }
 
+bool has_format(const nlohmann::json& j, const std::string& format) {
+  if (!j.is_object()) return false;
+  const auto it = j.find("format");
+  return it != j.end() && it->is_string() && it->get<std::string>() == format;
+}
+
+int format_version(const nlohmann::json& j) {
+  if (!j.is_object()) return -1;
+  const auto it = j.find("version");
+  if (it == j.end() || !it->is_number_integer()) return -1;
+  const auto v = it->get<long long>();
+  return v >= 0 && v <= 1'000'000 ? static_cast<int>(v) : -1;
+}
+
 }  // namespace viscera::core

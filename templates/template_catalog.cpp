@@ -18,6 +18,7 @@ const std::vector<std::unique_ptr<ScenarioTemplate>>& template_catalog() {
     std::vector<std::unique_ptr<ScenarioTemplate>> list;
     list.push_back(std::make_unique<BallTemplate>());
     list.push_back(std::make_unique<HysteroscopyTemplate>());
+    list.push_back(std::make_unique<HysteroscopyTemplate>(true));
     list.push_back(std::make_unique<LaparoscopyGynTemplate>());
     list.push_back(std::make_unique<UrethraTemplate>());
     list.push_back(std::make_unique<AgentTissueTemplate>());

@@ -1,6 +1,7 @@
 #include "core/materials/material_file.h"
 
 #include "core/error.h"
+#include "core/json_text.h"
 #include "core/scenario/scenario_json.h"
 
 namespace viscera::core {
@@ -13,7 +14,7 @@ nlohmann::json material_file_json(const Material& material, const nlohmann::json
 }
 
 Material material_from_file_json(const nlohmann::json& json, const std::string& file) {
-  if (!json.is_object() || json.value("format", std::string()) != kMaterialFormat)
+  if (!has_format(json, kMaterialFormat))
     throw InputError(
         std::string("not a Viscera material (format is not \"") + kMaterialFormat + "\")",
         {file, "/format", ""});

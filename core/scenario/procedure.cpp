@@ -5,6 +5,7 @@
 #include <set>
 
 #include "core/error.h"
+#include "core/json_text.h"
 #include "core/scenario/procedure_data.h"
 #include "core/scenario/scenario_json.h"
 
@@ -60,11 +61,11 @@ const std::map<std::string, ProcedureDefinition>& builtin_procedures() {
 }  // namespace
 
 ProcedureDefinition procedure_from_json(const nlohmann::json& j, const std::string& file) {
-  if (!j.is_object() || j.value("format", std::string()) != "viscera-procedure") {
+  if (!has_format(j, "viscera-procedure")) {
     throw ValidationError("not a Viscera procedure (format must be \"viscera-procedure\")",
                           {file, "/format", ""});
   }
-  if (j.value("version", 0) != 1)
+  if (format_version(j) != 1)
     throw ValidationError("procedure version must be 1", {file, "/version", ""});
   ProcedureDefinition p;
   std::string member;

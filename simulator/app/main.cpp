@@ -370,7 +370,7 @@ int main(int argc, char** argv) {
                              "Folder of the page (default: beside the report)");
   report_command->callback([&] {
     const nlohmann::json json = read_json_file(report_json);
-    if (!json.is_object() || json.value("format", std::string()) != "viscera-session-report")
+    if (!viscera::core::has_format(json, "viscera-session-report"))
       throw viscera::core::InputError("is not a viscera session report", {report_json, "", ""});
     const fs::path folder =
         report_out.empty() ? fs::absolute(report_json).parent_path() : fs::path(report_out);

@@ -34,7 +34,7 @@ std::string write_html(const nlohmann::json& json, const std::string& reference,
   nlohmann::json expert;
   if (!reference.empty()) {
     expert = viscera::core::read_json_file(reference);
-    if (!expert.is_object() || expert.value("format", std::string()) != "viscera-session-report")
+    if (!core::has_format(expert, "viscera-session-report"))
       throw viscera::core::InputError("is not a viscera session report", {reference, "", ""});
   }
   const auto written =

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/json_text.h"
 #include "core/xml_text.h"
 #include "simulator/report/report_plots.h"
 #include "simulator/view/image_files.h"
@@ -73,7 +74,7 @@ std::string compare_metric(const MetricSpec& metric, double trainee, double refe
 
 std::vector<std::filesystem::path> write_html_report(const json& report, const json* reference,
                                                      const std::filesystem::path& folder) {
-  if (!report.is_object() || report.value("format", std::string()) != "viscera-session-report")
+  if (!core::has_format(report, "viscera-session-report"))
     throw core::InputError("is not a viscera session report",
                            {(folder / "report.json").string(), "", ""});
   std::vector<std::filesystem::path> written;

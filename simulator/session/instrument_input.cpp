@@ -28,7 +28,36 @@ nlohmann::json resolve_script_landmarks(const nlohmann::json& script,
     }
     return *it;
   };
+  // A landmark's frame: u across (horizontal when the normal is not vertical), v = n × u, n.
+  const auto frame_offset = [](const core::Landmark& mark, const nlohmann::json& abc) {
+    const core::Vec3 n = mark.normal.norm() > 0.0 ? core::Vec3(mark.normal.normalized())
+                                                  : core::Vec3(core::Vec3::UnitZ());
+    core::Vec3 u = n.cross(core::Vec3::UnitZ());
+    if (u.norm() < 1e-6) u = n.cross(core::Vec3::UnitX());
+    u.normalize();
+    const core::Vec3 v = n.cross(u);
+    const auto c = abc.get<core::Vec3>();
+    return core::Vec3(c.x() * u + c.y() * v + c.z() * n);
+  };
   for (std::size_t i = 0; i < out["waypoints"].size(); ++i) {
+    // Directions in a landmark's frame: {"landmark": id, "frame": [a, b, c]}.
+    for (const char* key : {"axis", "up"}) {
+      nlohmann::json& direction = out["waypoints"][i][key];
+      if (!direction.is_object()) {
+        if (direction.is_null()) out["waypoints"][i].erase(key);
+        continue;
+      }
+      const std::string pointer = "/waypoints/" + std::to_string(i) + "/" + key;
+      try {
+        const core::Landmark mark = find(direction.at("landmark").get<std::string>(), pointer);
+        direction = frame_offset(mark, direction.at("frame"));
+      } catch (const nlohmann::json::exception& e) {
+        throw core::InputError(std::string("a direction in a landmark's frame needs "
+                                           "\"landmark\" and \"frame\" [a, b, c]: ") +
+                                   e.what(),
+                               {file, pointer, ""});
+      }
+    }
     for (const char* key : {"tip", "look_at"}) {
       nlohmann::json& place = out["waypoints"][i][key];
       const std::string pointer = "/waypoints/" + std::to_string(i) + "/" + key;
@@ -45,11 +74,12 @@ nlohmann::json resolve_script_landmarks(const nlohmann::json& script,
         }
         p += place.value("along_normal", 0.0) * from.normal;
         if (place.contains("offset")) p += place["offset"].get<core::Vec3>();
+        if (place.contains("frame")) p += frame_offset(from, place["frame"]);
         place = p;
       } catch (const nlohmann::json::exception& e) {
         throw core::InputError(std::string("a landmark place needs \"landmark\" and optional "
                                            "\"towards\", \"fraction\", \"along_normal\", "
-                                           "\"offset\" [x, y, z]: ") +
+                                           "\"offset\" [x, y, z], \"frame\" [a, b, c]: ") +
                                    e.what(),
                                {file, pointer, ""});
       }
@@ -63,10 +93,10 @@ ScriptedTrajectory ScriptedTrajectory::from_json(const nlohmann::json& json,
   const auto fail = [&file](const std::string& pointer, const std::string& message) {
     throw core::InputError(message, {file, pointer, ""});
   };
-  if (!json.is_object() || json.value("format", std::string()) != "viscera-script") {
+  if (!core::has_format(json, "viscera-script")) {
     fail("/format", "not a Viscera script (format must be \"viscera-script\")");
   }
-  const int version = json.value("version", 0);
+  const int version = core::format_version(json);
   if (version != 1 && version != 2) fail("/version", "script version must be 1 or 2");
   ScriptedTrajectory script;
   try {
@@ -109,6 +139,7 @@ ScriptedTrajectory ScriptedTrajectory::from_json(const nlohmann::json& json,
         if (pedal != 0 && pedal != 1) fail(pointer + "/activate", "activate must be 0 or 1");
         s.electrode = pedal == 1;
       }
+      s.loop_extension = w.value("loop_extension", s.loop_extension);
       if (w.contains("look_at")) {
         const InstrumentState looking =
             look_at(s.tip, w["look_at"].get<core::Vec3>(), s.axis, optics_angle);
@@ -128,6 +159,9 @@ ScriptedTrajectory ScriptedTrajectory::from_json(const nlohmann::json& json,
     }
     if (s.inflow < 0.0 || s.inflow > 1.0 || s.outflow < 0.0 || s.outflow > 1.0) {
       fail(pointer, "valve openings must lie in [0, 1]");
+    }
+    if (!(s.loop_extension >= 0.0 && s.loop_extension <= kMaxLoopExtension)) {
+      fail(pointer + "/loop_extension", "the loop extension must lie in [0, 0.02] m");
     }
     orthonormalise(s);
     if (s.abort && script.abort_time_ < 0.0) script.abort_time_ = t;

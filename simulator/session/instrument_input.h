@@ -17,11 +17,14 @@ namespace viscera::sim {
 /// Wherever a waypoint's "tip" or "look_at" is an object instead of [x, y, z]:
 ///
 ///   {"landmark": "cervix-external-os", "towards": "fundus", "fraction": 0.4,
-///    "along_normal": 0.008, "offset": [x, y, z]}
+///    "along_normal": 0.008, "offset": [x, y, z], "frame": [a, b, c]}
 ///
-/// the place is  L + fraction · (T − L) + along_normal · n_L + offset,  with L and n_L the
-/// position and unit normal of "landmark" (the normal points away from the tissue) and T the
-/// position of "towards" (optional, as are the others; lengths in m). Throws core::InputError
+/// the place is  L + fraction · (T − L) + along_normal · n_L + offset + a u + b v + c n_L,
+/// with L and n_L the position and unit normal of "landmark" (the normal points away from the
+/// tissue; a pathology's runs from its base to its apex), T the position of "towards" (optional,
+/// as are the others; lengths in m), and (u, v, n_L) the landmark's frame: u = n_L × ẑ made unit
+/// (n_L × x̂ when n_L is vertical), v = n_L × u. A waypoint's "axis" or "up" may likewise be
+/// {"landmark": id, "frame": [a, b, c]}, the direction a u + b v + c n_L. Throws core::InputError
 /// naming `file` and the JSON pointer of a place whose landmark the scenario lacks.
 nlohmann::json resolve_script_landmarks(const nlohmann::json& script,
                                         const std::vector<core::Landmark>& landmarks,
@@ -44,13 +47,14 @@ class InstrumentInput {
 ///    "optics_angle": 30,
 ///    "waypoints": [{"t": 0.0, "tip": [x, y, z], "axis": [x, y, z], "up": [x, y, z],
 ///                   "look_at": [x, y, z], "inflow": 1, "outflow": 0.5, "abort": false,
-///                   "activate": 1}, …]}
+///                   "activate": 1, "loop_extension": 0.01}, …]}
 ///
 /// t in s, positions in m, stiffness in N/m, optics angle in degrees. Version 1 scripts carry
 /// only "tip"; "axis" (default: the previous waypoint's, or +z) and "up" set the shaft and the
 /// roll of the optics, or "look_at" points the angled optics at a point (the shaft stays on the
 /// side of the previous axis). Valve openings are in [0, 1] and hold until changed; so does
-/// "activate", the cutting pedal (0 or 1), which switches at its waypoint. "body"
+/// "activate", the cutting pedal (0 or 1), which switches at its waypoint, and
+/// "loop_extension", the resection loop's travel in front of the sheath (m, 0 … 0.02). "body"
 /// names the object the tool touches (optional: the first simulated body). "tip" and "look_at"
 /// may name landmarks once resolve_script_landmarks has replaced them.
 class ScriptedTrajectory final : public InstrumentInput {

@@ -7,6 +7,9 @@
 
 namespace viscera::sim {
 
+/// Longest travel of a resection loop in front of the sheath, m.
+inline constexpr double kMaxLoopExtension = 0.02;
+
 /// Instrument pose and controls. Positions in m; `axis` and `up` unit and orthogonal.
 struct InstrumentState {
   core::Vec3 tip = core::Vec3::Zero();
@@ -19,6 +22,10 @@ struct InstrumentState {
   /// while it is, the loop's sweep through tissue is recorded, and the cut is made once the
   /// loop has left the tissue again (LoopResection).
   bool electrode = false;
+  /// m the loop stands out in front of the sheath tip along the shaft: the working element's
+  /// travel. The surgeon extends the loop behind the tissue and draws it back towards the
+  /// sheath to cut (seed 000 §5), so the sheath itself need not move through the tissue.
+  double loop_extension = 0.0;
 
   bool operator==(const InstrumentState&) const = default;
 };

@@ -66,7 +66,7 @@ cutting::LoopElectrode standard_resection_loop() {
 
 cutting::LoopPose loop_pose(const InstrumentState& state) {
   cutting::LoopPose pose;
-  pose.position = state.tip;
+  pose.position = state.tip + state.loop_extension * state.axis.normalized();
   const core::Vec3 z = state.axis.normalized();
   const core::Vec3 y = -(state.up - state.up.dot(z) * z).normalized();  // hangs towards up
   pose.rotation.col(0) = y.cross(z);

@@ -31,8 +31,8 @@ namespace viscera::sim {
 /// The loop of a standard 26 Fr resectoscope: a half ring of 2.5 mm radius (a 5 mm wide cut).
 cutting::LoopElectrode standard_resection_loop();
 
-/// The loop frame at the instrument's pose: origin at the tip, local z along the shaft, the
-/// loop hanging (local −y) towards `up`.
+/// The loop frame at the instrument's pose: origin on the shaft, `loop_extension` in front of the
+/// tip, local z along the shaft, the loop hanging (local −y) towards `up`.
 cutting::LoopPose loop_pose(const InstrumentState& state);
 
 class LoopResection {

@@ -6,7 +6,8 @@
 
 namespace viscera::sim {
 
-PeriodScore period_score(const SessionMetrics& m, double force_warning) {
+PeriodScore period_score(const SessionMetrics& m, double force_warning,
+                         std::optional<double> resection) {
   if (!(m.path_length() > 0.0) || !(m.duration() > 0.0)) {
     return {std::nullopt,
             "the instrument never moved, so nothing of the trainee's work can be assessed"};
@@ -15,6 +16,7 @@ PeriodScore period_score(const SessionMetrics& m, double force_warning) {
   if (m.tasks_available() > 0)
     terms.push_back(static_cast<double>(m.tasks_completed()) / m.tasks_available());
   terms.push_back(m.economy());
+  if (resection) terms.push_back(std::clamp(*resection, 0.0, 1.0));
   if (m.view_time() > 0.0) terms.push_back(m.view_quality());
   terms.push_back(1.0 - std::clamp(m.contact_time() / m.duration(), 0.0, 1.0));
   if (force_warning > 0.0)

@@ -162,7 +162,11 @@ struct PeriodScore {
 /// data (no assessable task, no warning level, no look through the optics) are left out. The
 /// trainee's work is assessable only once the instrument has moved: a period in which the tool
 /// never moved has no score (its reason says so), so doing nothing never earns the safety terms.
-PeriodScore period_score(const SessionMetrics& metrics, double force_warning);
+/// `resection`, when the period holds "resect" tasks, is one more term: how much of what they
+/// ask was taken off (each task's resected fraction over its required one, capped at 1, averaged),
+/// so a half-done resection weighs as much as the way it was done.
+PeriodScore period_score(const SessionMetrics& metrics, double force_warning,
+                         std::optional<double> resection = std::nullopt);
 
 /// The report as JSON (format "viscera-session-report", version 3): "score" is null with
 /// "score_reason" when absent, in total and per procedure step.

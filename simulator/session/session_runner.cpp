@@ -172,9 +172,20 @@ SessionRunner::SessionRunner(const core::Scenario& scenario, const HeadlessRunOp
             attribute + "\" = " + std::to_string(value) + ")";
     }
     if ((task.kind == "touch" || task.kind == "centre-target" || task.kind == "reach" ||
-         task.kind == "withdraw") &&
+         task.kind == "withdraw" || task.kind == "resect") &&
         options.instrument == nullptr && missing.empty()) {
       missing = "the session has no instrument";
+    }
+    if (task.kind == "resect" && missing.empty()) {
+      const auto named =
+          task.parameters.is_object() ? task.parameters.find("object") : task.parameters.end();
+      const std::string object =
+          named != task.parameters.end() && named->is_string() ? named->get<std::string>() : "";
+      if (resection_ == nullptr)
+        missing = "needs a resectoscope's loop; the session's instrument is a " + instrument_.kind;
+      else if (std::none_of(report_.cutting->bodies.begin(), report_.cutting->bodies.end(),
+                            [&](const BodyResection& b) { return b.body == object; }))
+        missing = "names \"" + object + "\", which is not a pathology body the loop can cut";
     }
     monitors_.push_back(
         {TaskMonitor(task, step_id, substep_id, target, missing, instrument_.kind), step});
@@ -218,7 +229,7 @@ void SessionRunner::close_step(int index) {
     if (m.task.result().status == "completed") ++completed;
   }
   step.metrics.set_tasks(completed, available);
-  const PeriodScore score = period_score(step.metrics, force_warning_);
+  const PeriodScore score = period_score(step.metrics, force_warning_, resection_share(index));
   step.score = score.value;
   step.score_reason = score.reason;
 }
@@ -323,6 +334,26 @@ void SessionRunner::step(const InstrumentState& input) {
   }
 }
 
+std::optional<double> SessionRunner::resection_share(int step) const {
+  if (!report_.cutting) return std::nullopt;
+  double sum = 0.0;
+  int tasks = 0;
+  for (const auto& m : monitors_) {
+    const core::TaskSpec& task = m.task.spec();
+    if (task.kind != "resect" || (step != -2 && m.step != step)) continue;
+    if (!task.parameters.is_object()) continue;
+    const auto o = task.parameters.find("object"), f = task.parameters.find("fraction");
+    const std::string object =
+        o != task.parameters.end() && o->is_string() ? o->get<std::string>() : "";
+    const double required = f != task.parameters.end() && f->is_number() ? f->get<double>() : 0.9;
+    for (const BodyResection& b : report_.cutting->bodies)
+      if (b.body == object) sum += std::min(1.0, b.resected_fraction() / std::max(required, 1e-9));
+    ++tasks;
+  }
+  if (tasks == 0) return std::nullopt;
+  return sum / tasks;
+}
+
 void SessionRunner::start_resection(const core::Scenario& scenario) {
   std::vector<int> bodies;
   for (const auto& model : world_.models()) {
@@ -419,6 +450,7 @@ void SessionRunner::sample() {
   context.camera = coverage_.get();
   context.fraction_seen = coverage_ ? coverage_->fraction_seen() : 0.0;
   context.instrument_moved = instrument_moved_;
+  context.cutting = report_.cutting ? &*report_.cutting : nullptr;
   for (auto& m : monitors_) {
     const bool watched = m.step < 0 || m.step == current_ || m.step == current_ + 1;
     if (!watched || m.task.done()) continue;
@@ -479,7 +511,7 @@ SessionReport SessionRunner::finish() {
     report_.score_reason =
         "the session has no instrument, so nothing of a trainee's work can be assessed";
   } else {
-    const PeriodScore score = period_score(report_.metrics, force_warning_);
+    const PeriodScore score = period_score(report_.metrics, force_warning_, resection_share(-2));
     report_.score = score.value;
     report_.score_reason = score.reason;
   }

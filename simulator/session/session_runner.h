@@ -85,6 +85,8 @@ class SessionRunner {
  private:
   struct Monitor;
   void sample();
+  /// The resection term of a step's score (−2: the whole session): see period_score.
+  std::optional<double> resection_share(int step) const;
   /// Sets up the loop on every pathology body of the world (LoopResection).
   void start_resection(const core::Scenario& scenario);
   void look();

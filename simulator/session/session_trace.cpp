@@ -24,7 +24,7 @@ std::string package_manifest_sha256(const std::filesystem::path& package) {
 namespace {
 
 nlohmann::json state_to_json(long long step, const InstrumentState& s) {
-  return {step, s.tip, s.axis, s.up, s.inflow, s.outflow, s.abort, s.electrode};
+  return {step, s.tip, s.axis, s.up, s.inflow, s.outflow, s.abort, s.electrode, s.loop_extension};
 }
 
 std::pair<long long, InstrumentState> state_from_json(const nlohmann::json& j) {
@@ -35,7 +35,9 @@ std::pair<long long, InstrumentState> state_from_json(const nlohmann::json& j) {
   j.at(4).get_to(s.inflow);
   j.at(5).get_to(s.outflow);
   j.at(6).get_to(s.abort);
-  if (j.size() > 7) j.at(7).get_to(s.electrode);  // traces before the electrode have 7 members
+  // Traces before the resection loop have 7 members.
+  if (j.size() > 7) j.at(7).get_to(s.electrode);
+  if (j.size() > 8) j.at(8).get_to(s.loop_extension);
   return {j.at(0).get<long long>(), s};
 }
 
@@ -78,10 +80,10 @@ namespace {
 
 /// trace_from_json without the net for nlohmann's type errors.
 SessionTrace trace_from_checked_json(const nlohmann::json& j, const std::string& file) {
-  if (!j.is_object() || j.value("format", std::string()) != "viscera-trace") {
+  if (!core::has_format(j, "viscera-trace")) {
     throw core::ValidationError("not a Viscera session trace", {file, "/format", ""});
   }
-  const int version = j.value("version", 0);
+  const int version = core::format_version(j);
   if (version != 1 && version != 2)
     throw core::ValidationError("trace version must be 1 or 2", {file, "/version", ""});
   SessionTrace t;

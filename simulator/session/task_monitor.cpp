@@ -5,14 +5,15 @@
 #include <set>
 
 #include "simulator/camera/surface_coverage.h"
+#include "simulator/session/session_report.h"
 
 namespace viscera::sim {
 namespace {
 
 /// Task kinds this runtime detects, and the tools it simulates (a rigid endoscope or probe:
 /// one shaft whose tip carries the haptic proxy and the camera).
-const std::set<std::string> kDetectedKinds = {"reach",    "centre-target", "inspect-surface",
-                                              "withdraw", "touch",         "settle"};
+const std::set<std::string> kDetectedKinds = {
+    "reach", "centre-target", "inspect-surface", "withdraw", "touch", "settle", "resect"};
 const std::set<std::string> kSimulatedTools = {"hysteroscope",        "cystoscope",   "laparoscope",
                                                "resectoscope-optics", "resectoscope", "probe"};
 
@@ -21,6 +22,7 @@ std::string tool_needed(const std::string& kind) {
   if (kind == "grasp" || kind == "pull") return "grasper";
   if (kind == "clip") return "clip-applier";
   if (kind == "cut") return "scissors";
+  if (kind == "resect") return "resectoscope";
   return "";
 }
 
@@ -113,6 +115,19 @@ bool TaskMonitor::holds(const TaskContext& c) {
   }
   if (spec_.kind == "settle")
     return c.kinetic_energy < parameter(spec_, "kinetic_energy_below", 1e-6);
+  if (spec_.kind == "resect") {
+    // The named pathology's resected fraction (chips: fragments that lost every anchor).
+    if (c.cutting == nullptr) return false;
+    const auto named = spec_.parameters.find("object");
+    const std::string object =
+        named != spec_.parameters.end() && named->is_string() ? named->get<std::string>() : "";
+    for (const BodyResection& b : c.cutting->bodies) {
+      if (b.body != object) continue;
+      track_best(b.resected_fraction(), false);
+      return b.resected_fraction() >= parameter(spec_, "fraction", 0.9);
+    }
+    return false;
+  }
   return false;
 }
 

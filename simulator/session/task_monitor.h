@@ -20,6 +20,8 @@ struct TaskTarget {
 };
 
 /// The session as a task sees it at one moment.
+struct CuttingSummary;  // session_report.h
+
 struct TaskContext {
   double time = 0.0;  ///< s
   InstrumentState state;
@@ -35,6 +37,8 @@ struct TaskContext {
   /// (reach, centre-target, inspect-surface, withdraw, touch) complete only then: a condition
   /// that holds at the starting pose alone is not the trainee's work.
   bool instrument_moved = true;
+  /// The resection loop's cuts so far, or null when the instrument cannot cut ("resect" tasks).
+  const CuttingSummary* cutting = nullptr;
 };
 
 /// What became of a task. Status "completed", "not-completed" or "unavailable".

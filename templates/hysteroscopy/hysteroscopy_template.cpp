@@ -1,5 +1,6 @@
 #include "templates/hysteroscopy/hysteroscopy_template.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/meshing/tet_mesher.h"
@@ -15,6 +16,10 @@
 namespace viscera::templates {
 
 std::string HysteroscopyTemplate::description() const {
+  if (polypectomy_) {
+    return "the hysteroscopy patient with at least one endometrial polyp, a resectoscope and "
+           "the hysteroscopic polypectomy procedure";
+  }
   return "uterus with cavity, cervical canal, tubal orifices, endometrium and myometrium, fixed "
          "cervix, arterial tree and random myomas, polyps and adhesions";
 }
@@ -43,7 +48,7 @@ std::vector<TemplateParameter> HysteroscopyTemplate::parameters() const {
       {"submucosal_myomas", "count", "sessile myomas bulging into the cavity", 0, 3, 1, true},
       {"intramural_myomas", "count", "myomas inside the wall", 0, 2, 0, true},
       {"pedunculated_myomas", "count", "myomas on a stalk", 0, 2, 0, true},
-      {"polyps", "count", "endometrial polyps", 0, 4, 1, true},
+      {"polyps", "count", "endometrial polyps", polypectomy_ ? 1.0 : 0.0, 4, 1, true},
       {"adhesions", "count", "bands between opposite walls (synechiae)", 0, 3, 0, true},
       {"myoma_diameter", "m", "mean myoma diameter (each drawn within 25 %)", 0.004, 0.014, 0.008,
        false},
@@ -79,7 +84,7 @@ std::vector<core::VariabilityRule> HysteroscopyTemplate::default_variability() c
       integer_range_rule("submucosal_myomas", 0, 2),
       integer_range_rule("intramural_myomas", 0, 1),
       choice_rule("pedunculated_myomas", {0, 1}, {3, 1}),
-      integer_range_rule("polyps", 0, 3),
+      integer_range_rule("polyps", polypectomy_ ? 1 : 0, 3),
       choice_rule("adhesions", {0, 1, 2}, {6, 2, 1}),
       uniform_rule("myoma_diameter", 0.005, 0.012),
       uniform_rule("polyp_length", 0.004, 0.011),
@@ -240,6 +245,26 @@ core::Scenario HysteroscopyTemplate::build(const ParameterValues& p, std::uint64
   // sit in front of the smooth funnel's apex, so the landmarks move onto the mesh (a camera
   // centring one sees it, not the facet in front of it).
   scenario.landmarks = shape.landmarks;
+  // Each pathology in the cavity is a landmark at its apex and one ("ID-base") at the centre of
+  // its base on the wall, both with the normal from base to apex: scripts and centring tasks
+  // find it, and script places take offsets in its frame (resolve_script_landmarks).
+  for (const auto& pathology : pathologies) {
+    if (pathology.in_wall || pathology.record.kind == "adhesion") continue;
+    const auto& v = pathology.surface.vertices;
+    core::Vec3 base = core::Vec3::Zero();
+    for (const int i : pathology.base)
+      base += v[static_cast<std::size_t>(i)];
+    base /= static_cast<double>(std::max<std::size_t>(pathology.base.size(), 1));
+    const core::Vec3 apex =
+        *std::max_element(v.begin(), v.end(), [&](const auto& a, const auto& b) {
+          return (a - base).squaredNorm() < (b - base).squaredNorm();
+        });
+    const core::Vec3 axis = (apex - base).normalized();
+    scenario.landmarks.push_back(
+        {pathology.record.id, "apex of " + pathology.record.id, pathology.record.id, apex, axis});
+    scenario.landmarks.push_back({pathology.record.id + "-base", "base of " + pathology.record.id,
+                                  pathology.record.id, base, axis});
+  }
   for (auto& mark : scenario.landmarks) {
     if (mark.id.starts_with("tubal-orifice"))
       mark.position = tissue.closest(mark.position).position;
@@ -255,7 +280,9 @@ core::Scenario HysteroscopyTemplate::build(const ParameterValues& p, std::uint64
   scenario.session.contact_stiffness = 500.0;
   // Seed 000 §11: the diagnostic procedure, its tasks referring to the shape's landmarks (the
   // internal and external os, both tubal orifices) and the cavity region of the surface.
-  core::apply_procedure(scenario.session, core::procedure_definition("diagnostic-hysteroscopy"));
+  core::apply_procedure(scenario.session,
+                        core::procedure_definition(polypectomy_ ? "hysteroscopic-polypectomy"
+                                                                : "diagnostic-hysteroscopy"));
   scenario.session.metrics = {"path_length", "economy_of_movement", "wall_contacts", "max_force",
                               "cavity_seen"};
   progress.step();

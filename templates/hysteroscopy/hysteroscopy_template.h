@@ -13,7 +13,13 @@ namespace viscera::templates {
 /// Builds a virtual patient for diagnostic and operative hysteroscopy.
 class HysteroscopyTemplate final : public ScenarioTemplate {
  public:
-  std::string name() const override { return "hysteroscopy"; }
+  /// The diagnostic patient ("hysteroscopy", procedure diagnostic-hysteroscopy), or with
+  /// `polypectomy` the operative one ("hysteroscopy-polypectomy"): at least one polyp, a
+  /// resectoscope, and the hysteroscopic-polypectomy procedure (issue 17 §5).
+  explicit HysteroscopyTemplate(bool polypectomy = false) : polypectomy_(polypectomy) {}
+  std::string name() const override {
+    return polypectomy_ ? "hysteroscopy-polypectomy" : "hysteroscopy";
+  }
   std::string description() const override;
   std::string version() const override { return "1"; }
   std::string procedure() const override { return "hysteroscopy"; }
@@ -21,6 +27,9 @@ class HysteroscopyTemplate final : public ScenarioTemplate {
   std::vector<core::VariabilityRule> default_variability() const override;
   core::Scenario build(const ParameterValues& parameters, std::uint64_t seed,
                        core::Progress& progress) const override;
+
+ private:
+  bool polypectomy_ = false;
 };
 
 }  // namespace viscera::templates

@@ -11,11 +11,11 @@
 namespace viscera::core {
 namespace {
 
-TEST(Procedure, ships_the_four_procedures_of_issue_8) {
+TEST(Procedure, ships_the_procedures_of_issues_8_and_17) {
   EXPECT_EQ(procedure_definition_names(),
-            (std::vector<std::string>{"agent-tissue-lab", "diagnostic-hysteroscopy",
-                                      "laparoscopic-tubal-sterilisation",
-                                      "urethral-endoscope-insertion"}));
+            (std::vector<std::string>{
+                "agent-tissue-lab", "diagnostic-hysteroscopy", "hysteroscopic-polypectomy",
+                "laparoscopic-tubal-sterilisation", "urethral-endoscope-insertion"}));
   const ProcedureDefinition& hysteroscopy = procedure_definition("diagnostic-hysteroscopy");
   EXPECT_EQ(hysteroscopy.procedure, "hysteroscopy");
   EXPECT_EQ(hysteroscopy.instrument.kind, "hysteroscope");

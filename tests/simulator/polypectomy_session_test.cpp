@@ -1,0 +1,102 @@
+// Operative hysteroscopy (issue 17 §5): the hysteroscopy-polypectomy template's patient, its
+// resectoscope and procedure, and the shipped expert and novice scripts placed at the polyp's
+// landmarks. The expert's sweep through the stalk takes the polyp off as one chip; the novice's
+// first sweep ends inside the polyp (no cut) and the second goes through its head.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "core/error.h"
+#include "core/json_text.h"
+#include "simulator/session/headless_session.h"
+#include "simulator/session/instrument_input.h"
+#include "templates/template_catalog.h"
+#include "tests/support/test_paths.h"
+
+namespace viscera::sim {
+namespace {
+
+const core::Scenario& patient() {
+  static const core::Scenario s = templates::build_from_template("hysteroscopy-polypectomy", {}, 1);
+  return s;
+}
+
+SessionReport run_script(const std::string& who) {
+  const std::string file =
+      (testing::source_dir() / ("data/scripts/hysteroscopy-polypectomy-" + who + ".json")).string();
+  const auto json = resolve_script_landmarks(core::read_json_file(file), patient().landmarks, file);
+  const auto input = ScriptedTrajectory::from_json(json, file, 12.0);
+  HeadlessRunOptions options;
+  options.duration = input.duration();
+  options.instrument = &input;
+  options.instrument_body = "uterus";
+  return run_headless(patient(), options);
+}
+
+const BodyResection& polyp_of(const SessionReport& r) {
+  const auto& bodies = r.cutting->bodies;
+  return *std::find_if(bodies.begin(), bodies.end(),
+                       [](const auto& b) { return b.body == "polyp-1"; });
+}
+
+std::string task_status(const SessionReport& r, const std::string& id) {
+  for (const auto& t : r.tasks)
+    if (t.id == id) return t.status;
+  return "";
+}
+
+TEST(PolypectomySession, the_template_gives_a_resectoscope_a_polyp_and_its_landmarks) {
+  const core::Scenario& s = patient();
+  EXPECT_EQ(s.session.instrument.kind, "resectoscope");
+  EXPECT_EQ(s.session.procedure_definition, "hysteroscopic-polypectomy");
+  const auto has = [&](const std::string& id) {
+    return std::any_of(s.landmarks.begin(), s.landmarks.end(),
+                       [&](const auto& l) { return l.id == id; });
+  };
+  EXPECT_TRUE(has("polyp-1") && has("polyp-1-base"));
+}
+
+TEST(PolypectomySession,
+     the_expert_takes_off_more_of_the_polyp_than_the_novice_and_both_stay_sound) {
+  const SessionReport expert = run_script("expert"), novice = run_script("novice");
+  ASSERT_TRUE(expert.cutting && novice.cutting);
+  EXPECT_EQ(expert.cutting->cuts, 1);
+  EXPECT_EQ(expert.cutting->released_in_tissue, 0);
+  EXPECT_EQ(novice.cutting->released_in_tissue, 1);
+  EXPECT_GE(polyp_of(expert).chips, 1);
+  EXPECT_GT(polyp_of(expert).resected_fraction(), polyp_of(novice).resected_fraction() + 0.15);
+  for (const SessionReport* r : {&expert, &novice}) {
+    EXPECT_NEAR(r->cutting->volume_after, r->cutting->volume_before,
+                1e-9 * r->cutting->volume_before);
+    EXPECT_GE(r->cutting->min_dihedral_after_degrees, 1.0);
+    EXPECT_NE(r->end_reason, "perforation");
+    // The resect task is completed exactly when 90 % of the polyp is off.
+    EXPECT_EQ(task_status(*r, "resect-polyp-1"),
+              polyp_of(*r).resected_fraction() >= 0.9 ? "completed" : "not-completed");
+  }
+}
+
+TEST(PolypectomySession, script_pedal_and_loop_values_out_of_range_are_refused_with_their_place) {
+  nlohmann::json script = {
+      {"format", "viscera-script"},
+      {"version", 2},
+      {"waypoints", {{{"t", 0.0}, {"tip", {0.0, 0.0, 0.0}}, {"activate", 2}}}}};
+  try {
+    (void)ScriptedTrajectory::from_json(script, "s.json", 12.0);
+    ADD_FAILURE() << "activate 2 accepted";
+  } catch (const core::InputError& e) {
+    EXPECT_EQ(e.location().json_pointer, "/waypoints/0/activate");
+  }
+  script["waypoints"][0].erase("activate");
+  script["waypoints"][0]["loop_extension"] = 0.05;
+  try {
+    (void)ScriptedTrajectory::from_json(script, "s.json", 12.0);
+    ADD_FAILURE() << "a 5 cm loop extension accepted";
+  } catch (const core::InputError& e) {
+    EXPECT_EQ(e.location().json_pointer, "/waypoints/0/loop_extension");
+  }
+}
+
+}  // namespace
+}  // namespace viscera::sim

@@ -1,6 +1,7 @@
 #include "simulator/session/loop_resection.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -24,19 +25,25 @@ std::vector<NodeOrigin> node_origins(const cutting::TopologyChange& change) {
   std::vector<NodeOrigin> origins(change.mesh.nodes.size());
   for (std::size_t i = 0; i < origins.size(); ++i) {
     auto [begin, end] = change.sources(static_cast<int>(i));
-    std::vector<cutting::NodeSource> sources(begin, end);
-    if (sources.size() > 4) {
-      // Not produced by the cut's rules; kept safe: the four heaviest, renormalised.
-      std::stable_sort(sources.begin(), sources.end(),
-                       [](const auto& a, const auto& b) { return a.weight > b.weight; });
-      sources.resize(4);
+    // At most four by the cut's rules; anything longer keeps its four heaviest, renormalised.
+    std::array<cutting::NodeSource, 4> kept{};
+    std::size_t count = 0;
+    for (const cutting::NodeSource* s = begin; s != end; ++s) {
+      if (count < kept.size()) {
+        kept[count++] = *s;
+        continue;
+      }
+      auto lightest = std::min_element(kept.begin(), kept.end(), [](const auto& a, const auto& b) {
+        return a.weight < b.weight;
+      });
+      if (s->weight > lightest->weight) *lightest = *s;
     }
     double total = 0.0;
-    for (const auto& s : sources)
-      total += s.weight;
-    for (std::size_t k = 0; k < sources.size(); ++k) {
-      origins[i].node[k] = sources[k].old_node;
-      origins[i].weight[k] = total > 0.0 ? sources[k].weight / total : 0.0;
+    for (std::size_t k = 0; k < count; ++k)
+      total += kept[k].weight;
+    for (std::size_t k = 0; k < count; ++k) {
+      origins[i].node[k] = kept[k].old_node;
+      origins[i].weight[k] = total > 0.0 ? kept[k].weight / total : 0.0;
     }
   }
   return origins;

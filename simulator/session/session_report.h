@@ -109,6 +109,13 @@ struct CuttingSummary {
   double volume_before = 0.0;  ///< m³, rest volume of the cuttable bodies at the start
   double volume_after = 0.0;   ///< m³, the same now (a cut keeps it, to rounding)
   std::vector<BodyResection> bodies;
+
+  /// The resection of body `name`, or null when the loop cannot cut it.
+  const BodyResection* find(const std::string& name) const {
+    for (const BodyResection& b : bodies)
+      if (b.body == name) return &b;
+    return nullptr;
+  }
 };
 
 /// The result of a session.

@@ -183,8 +183,7 @@ SessionRunner::SessionRunner(const core::Scenario& scenario, const HeadlessRunOp
           named != task.parameters.end() && named->is_string() ? named->get<std::string>() : "";
       if (resection_ == nullptr)
         missing = "needs a resectoscope's loop; the session's instrument is a " + instrument_.kind;
-      else if (std::none_of(report_.cutting->bodies.begin(), report_.cutting->bodies.end(),
-                            [&](const BodyResection& b) { return b.body == object; }))
+      else if (report_.cutting->find(object) == nullptr)
         missing = "names \"" + object + "\", which is not a pathology body the loop can cut";
     }
     monitors_.push_back(
@@ -346,8 +345,8 @@ std::optional<double> SessionRunner::resection_share(int step) const {
     const std::string object =
         o != task.parameters.end() && o->is_string() ? o->get<std::string>() : "";
     const double required = f != task.parameters.end() && f->is_number() ? f->get<double>() : 0.9;
-    for (const BodyResection& b : report_.cutting->bodies)
-      if (b.body == object) sum += std::min(1.0, b.resected_fraction() / std::max(required, 1e-9));
+    if (const BodyResection* b = report_.cutting->find(object))
+      sum += std::min(1.0, b->resected_fraction() / std::max(required, 1e-9));
     ++tasks;
   }
   if (tasks == 0) return std::nullopt;

@@ -121,12 +121,10 @@ bool TaskMonitor::holds(const TaskContext& c) {
     const auto named = spec_.parameters.find("object");
     const std::string object =
         named != spec_.parameters.end() && named->is_string() ? named->get<std::string>() : "";
-    for (const BodyResection& b : c.cutting->bodies) {
-      if (b.body != object) continue;
-      track_best(b.resected_fraction(), false);
-      return b.resected_fraction() >= parameter(spec_, "fraction", 0.9);
-    }
-    return false;
+    const BodyResection* b = c.cutting->find(object);
+    if (b == nullptr) return false;
+    track_best(b->resected_fraction(), false);
+    return b->resected_fraction() >= parameter(spec_, "fraction", 0.9);
   }
   return false;
 }

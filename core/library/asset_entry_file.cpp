@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
+#include "core/json_numbers.h"
 #include "core/package/zip_archive.h"
 #include "core/sha256.h"
 
@@ -85,7 +86,7 @@ AssetEntry import_asset_entry(const std::filesystem::path& file) {
     if (json.at("format").get<std::string>() != kAssetEntryFormat)
       throw InputError("not a Viscera library entry", {where, pointer, ""});
     pointer = "/version";
-    if (json.at("version").get<int>() > kAssetEntryFormatVersion)
+    if (whole_number<int>(json.at("version"), where, pointer) > kAssetEntryFormatVersion)
       throw UnsupportedVersionError(
           "entry format version " + json.at("version").dump() + " is newer than this build reads",
           {where, pointer, ""});
@@ -94,7 +95,7 @@ AssetEntry import_asset_entry(const std::filesystem::path& file) {
     pointer = "/type";
     s.type = asset_type_from_string(json.at("type").get<std::string>());
     pointer = "/entry_version";
-    s.version = json.at("entry_version").get<int>();
+    s.version = whole_number<int>(json.at("entry_version"), where, pointer);
     pointer = "/tags";
     s.tags = json.at("tags").get<std::vector<std::string>>();
     pointer = "/provenance";

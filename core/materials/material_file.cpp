@@ -1,6 +1,7 @@
 #include "core/materials/material_file.h"
 
 #include "core/error.h"
+#include "core/json_numbers.h"
 #include "core/json_text.h"
 #include "core/scenario/scenario_json.h"
 
@@ -19,7 +20,7 @@ Material material_from_file_json(const nlohmann::json& json, const std::string& 
         std::string("not a Viscera material (format is not \"") + kMaterialFormat + "\")",
         {file, "/format", ""});
   const auto version = json.find("version");
-  if (version == json.end() || !version->is_number_integer())
+  if (version == json.end() || !whole_number_fits<int>(*version))
     throw InputError("missing or mistyped version", {file, "/version", ""});
   if (version->get<int>() > kMaterialFormatVersion)
     throw UnsupportedVersionError(

@@ -5,6 +5,7 @@
 #include <set>
 
 #include "core/error.h"
+#include "core/json_numbers.h"
 #include "core/json_schema/json_schema_validator.h"
 #include "core/json_text.h"
 #include "core/package/package_schema.h"
@@ -51,7 +52,7 @@ void check_format_and_migrate(nlohmann::json& manifest, const std::string& file)
         {file, "/format", ""});
   }
   const auto version = manifest.find("version");
-  if (version == manifest.end() || !version->is_number_integer() || version->get<int>() < 1) {
+  if (version == manifest.end() || !whole_number_fits<int>(*version) || version->get<int>() < 1) {
     throw InputError("version must be a whole number from 1", {file, "/version", ""});
   }
   int v = version->get<int>();

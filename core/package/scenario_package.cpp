@@ -9,6 +9,7 @@
 
 #include "core/atomic_replace.h"
 #include "core/error.h"
+#include "core/json_numbers.h"
 #include "core/package/package_manifest.h"
 #include "core/package/vtk_mesh_io.h"
 #include "core/package/zip_archive.h"
@@ -312,17 +313,20 @@ PackageSummary summarize_package(const fs::path& path) {
 
   PackageSummary summary;
   summary.format = manifest.at("format").get<std::string>();
-  summary.version = manifest.at("version").get<int>();
+  summary.version = whole_number<int>(manifest.at("version"), path.string(), "/version");
   const auto& scenario = manifest.at("scenario");
   summary.name = scenario.at("metadata").at("name").get<std::string>();
   summary.procedure = scenario.at("procedure").get<std::string>();
   const auto provenance = scenario.value("provenance", nlohmann::json::object());
   summary.template_name = provenance.value("template", std::string());
-  summary.seed = provenance.value("seed", std::uint64_t{0});
+  if (provenance.contains("seed"))
+    summary.seed =
+        whole_number<std::uint64_t>(provenance["seed"], path.string(), "/scenario/provenance/seed");
   summary.object_count = static_cast<int>(scenario.at("objects").size());
   for (const auto& [relative, entry] : manifest.at("files").items()) {
     ++summary.file_count;
-    summary.total_bytes += entry.at("bytes").get<std::uint64_t>();
+    summary.total_bytes += whole_number<std::uint64_t>(entry.at("bytes"), path.string(),
+                                                       "/files/" + relative + "/bytes");
   }
   // Mesh sizes need the meshes: read them only for the counts.
   const Scenario loaded = read_package(path);

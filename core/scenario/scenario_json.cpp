@@ -2,46 +2,16 @@
 
 #include <charconv>
 #include <cstdint>
-#include <limits>
-#include <type_traits>
 
 #include "core/error.h"
 #include "core/json_eigen.h"
+#include "core/json_numbers.h"
 
 namespace viscera::core {
 
 // nlohmann::json conversions for every part, found by argument-dependent lookup. Optional
-// members fall back to the struct's defaults so older manifests stay readable.
-
-namespace {
-
-/// True when `n` is a whole number T can hold. nlohmann converts a float to an integer by a
-/// cast, undefined out of range (the scenario_json fuzz target's finding: a seed of 1.1e67).
-template <typename T>
-bool whole_number_fits(const nlohmann::json& n) {
-  if (n.is_number_unsigned())
-    return n.get<std::uint64_t>() <= static_cast<std::uint64_t>(std::numeric_limits<T>::max());
-  if (!n.is_number_integer()) return false;
-  const std::int64_t v = n.get<std::int64_t>();
-  if constexpr (std::is_signed_v<T>)
-    return v >= std::numeric_limits<T>::min() && v <= std::numeric_limits<T>::max();
-  else
-    return v >= 0 && static_cast<std::uint64_t>(v) <= std::numeric_limits<T>::max();
-}
-
-template <typename T>
-void read_optional(const nlohmann::json& j, const char* key, T& value) {
-  const auto it = j.find(key);
-  if (it == j.end()) return;
-  if constexpr (std::is_integral_v<T> && !std::is_same_v<T, bool>) {
-    if (!whole_number_fits<T>(*it))
-      throw ValidationError(std::string("\"") + key + "\" must be a whole number in range",
-                            {"", std::string("/") + key, ""});
-  }
-  it->get_to(value);
-}
-
-}  // namespace
+// members fall back to the struct's defaults so older manifests stay readable. Integers go
+// through core/json_numbers.h.
 
 void to_json(nlohmann::json& j, const StressStrainCurve& c) {
   j = {{"strain", c.strain},
@@ -53,9 +23,9 @@ void to_json(nlohmann::json& j, const StressStrainCurve& c) {
 void from_json(const nlohmann::json& j, StressStrainCurve& c) {
   j.at("strain").get_to(c.strain);
   j.at("stress").get_to(c.stress);
-  read_optional(j, "cubic", c.cubic);
-  read_optional(j, "fit_rms_error", c.fit_rms_error);
-  read_optional(j, "fit_max_error", c.fit_max_error);
+  read_optional_member(j, "cubic", c.cubic);
+  read_optional_member(j, "fit_rms_error", c.fit_rms_error);
+  read_optional_member(j, "fit_max_error", c.fit_max_error);
 }
 
 void to_json(nlohmann::json& j, const Material& m) {
@@ -73,15 +43,15 @@ void to_json(nlohmann::json& j, const Material& m) {
 }
 void from_json(const nlohmann::json& j, Material& m) {
   j.at("id").get_to(m.id);
-  read_optional(j, "name", m.name);
-  read_optional(j, "density", m.density);
-  read_optional(j, "distance_stiffness", m.distance_stiffness);
-  read_optional(j, "area_stiffness", m.area_stiffness);
-  read_optional(j, "volume_stiffness", m.volume_stiffness);
-  read_optional(j, "distance_damping", m.distance_damping);
-  read_optional(j, "tearing_threshold", m.tearing_threshold);
-  read_optional(j, "plastic_yield", m.plastic_yield);
-  read_optional(j, "source", m.source);
+  read_optional_member(j, "name", m.name);
+  read_optional_member(j, "density", m.density);
+  read_optional_member(j, "distance_stiffness", m.distance_stiffness);
+  read_optional_member(j, "area_stiffness", m.area_stiffness);
+  read_optional_member(j, "volume_stiffness", m.volume_stiffness);
+  read_optional_member(j, "distance_damping", m.distance_damping);
+  read_optional_member(j, "tearing_threshold", m.tearing_threshold);
+  read_optional_member(j, "plastic_yield", m.plastic_yield);
+  read_optional_member(j, "source", m.source);
   if (const auto it = j.find("stress_strain"); it != j.end())
     m.stress_strain = it->get<StressStrainCurve>();
 }
@@ -92,11 +62,11 @@ void to_json(nlohmann::json& j, const TextureSpec& t) {
 }
 void from_json(const nlohmann::json& j, TextureSpec& t) {
   j.at("id").get_to(t.id);
-  read_optional(j, "preset", t.preset);
-  read_optional(j, "seed", t.seed);
-  read_optional(j, "width", t.width);
-  read_optional(j, "height", t.height);
-  read_optional(j, "maps", t.maps);
+  read_optional_member(j, "preset", t.preset);
+  read_optional_member(j, "seed", t.seed);
+  read_optional_member(j, "width", t.width);
+  read_optional_member(j, "height", t.height);
+  read_optional_member(j, "maps", t.maps);
 }
 
 void to_json(nlohmann::json& j, const VesselSegment& s) {
@@ -104,12 +74,12 @@ void to_json(nlohmann::json& j, const VesselSegment& s) {
        {"distal", s.distal}, {"radius", s.radius}, {"flow", s.flow}};
 }
 void from_json(const nlohmann::json& j, VesselSegment& s) {
-  j.at("id").get_to(s.id);
-  read_optional(j, "parent", s.parent);
+  read_member(j, "id", s.id);
+  read_optional_member(j, "parent", s.parent);
   j.at("proximal").get_to(s.proximal);
   j.at("distal").get_to(s.distal);
   j.at("radius").get_to(s.radius);
-  read_optional(j, "flow", s.flow);
+  read_optional_member(j, "flow", s.flow);
 }
 
 void to_json(nlohmann::json& j, const VesselTree& t) {
@@ -117,9 +87,9 @@ void to_json(nlohmann::json& j, const VesselTree& t) {
 }
 void from_json(const nlohmann::json& j, VesselTree& t) {
   j.at("id").get_to(t.id);
-  read_optional(j, "host_object", t.host_object);
-  read_optional(j, "kind", t.kind);
-  read_optional(j, "segments", t.segments);
+  read_optional_member(j, "host_object", t.host_object);
+  read_optional_member(j, "kind", t.kind);
+  read_optional_member(j, "segments", t.segments);
 }
 
 void to_json(nlohmann::json& j, const PulseSpec& p) {
@@ -129,10 +99,10 @@ void to_json(nlohmann::json& j, const PulseSpec& p) {
        {"wall_force", p.wall_force}};
 }
 void from_json(const nlohmann::json& j, PulseSpec& p) {
-  read_optional(j, "vessel_tree", p.vessel_tree);
-  read_optional(j, "heart_rate", p.heart_rate);
-  read_optional(j, "pulse_velocity", p.pulse_velocity);
-  read_optional(j, "wall_force", p.wall_force);
+  read_optional_member(j, "vessel_tree", p.vessel_tree);
+  read_optional_member(j, "heart_rate", p.heart_rate);
+  read_optional_member(j, "pulse_velocity", p.pulse_velocity);
+  read_optional_member(j, "wall_force", p.wall_force);
 }
 
 void to_json(nlohmann::json& j, const MotilitySpec& m) {
@@ -146,14 +116,14 @@ void to_json(nlohmann::json& j, const MotilitySpec& m) {
        {"contraction_interval_variance", m.contraction_interval_variance}};
 }
 void from_json(const nlohmann::json& j, MotilitySpec& m) {
-  read_optional(j, "amplitude_mean", m.amplitude_mean);
-  read_optional(j, "amplitude_variance", m.amplitude_variance);
-  read_optional(j, "wave_speed", m.wave_speed);
-  read_optional(j, "wave_direction", m.wave_direction);
-  read_optional(j, "frequency", m.frequency);
-  read_optional(j, "frequency_disturbance", m.frequency_disturbance);
-  read_optional(j, "contraction_interval_mean", m.contraction_interval_mean);
-  read_optional(j, "contraction_interval_variance", m.contraction_interval_variance);
+  read_optional_member(j, "amplitude_mean", m.amplitude_mean);
+  read_optional_member(j, "amplitude_variance", m.amplitude_variance);
+  read_optional_member(j, "wave_speed", m.wave_speed);
+  read_optional_member(j, "wave_direction", m.wave_direction);
+  read_optional_member(j, "frequency", m.frequency);
+  read_optional_member(j, "frequency_disturbance", m.frequency_disturbance);
+  read_optional_member(j, "contraction_interval_mean", m.contraction_interval_mean);
+  read_optional_member(j, "contraction_interval_variance", m.contraction_interval_variance);
 }
 
 void to_json(nlohmann::json& j, const ActiveDeformation& a) {
@@ -168,7 +138,7 @@ void to_json(nlohmann::json& j, const ActiveDeformation& a) {
 }
 void from_json(const nlohmann::json& j, ActiveDeformation& a) {
   j.at("id").get_to(a.id);
-  read_optional(j, "target_object", a.target_object);
+  read_optional_member(j, "target_object", a.target_object);
   const std::string type = j.at("type").get<std::string>();
   if (type == "pulse") {
     a.spec = j.value("pulse", nlohmann::json::object()).get<PulseSpec>();
@@ -186,10 +156,10 @@ void to_json(nlohmann::json& j, const Pathology& p) {
 void from_json(const nlohmann::json& j, Pathology& p) {
   j.at("id").get_to(p.id);
   j.at("kind").get_to(p.kind);
-  read_optional(j, "host_object", p.host_object);
-  read_optional(j, "object", p.object);
-  read_optional(j, "position", p.position);
-  read_optional(j, "size", p.size);
+  read_optional_member(j, "host_object", p.host_object);
+  read_optional_member(j, "object", p.object);
+  read_optional_member(j, "position", p.position);
+  read_optional_member(j, "size", p.size);
 }
 
 void to_json(nlohmann::json& j, const Connection& c) {
@@ -203,8 +173,8 @@ void from_json(const nlohmann::json& j, Connection& c) {
   j.at("id").get_to(c.id);
   j.at("object_a").get_to(c.object_a);
   j.at("object_b").get_to(c.object_b);
-  read_optional(j, "node_pairs", c.node_pairs);
-  read_optional(j, "stiffness", c.stiffness);
+  read_optional_member(j, "node_pairs", c.node_pairs);
+  read_optional_member(j, "stiffness", c.stiffness);
 }
 
 void to_json(nlohmann::json& j, const FluidSpec& f) {
@@ -215,11 +185,11 @@ void to_json(nlohmann::json& j, const FluidSpec& f) {
        {"overload_volume", f.overload_volume}};
 }
 void from_json(const nlohmann::json& j, FluidSpec& f) {
-  read_optional(j, "enabled", f.enabled);
-  read_optional(j, "medium", f.medium);
-  read_optional(j, "inflow_pressure", f.inflow_pressure);
-  read_optional(j, "outflow_pressure", f.outflow_pressure);
-  read_optional(j, "overload_volume", f.overload_volume);
+  read_optional_member(j, "enabled", f.enabled);
+  read_optional_member(j, "medium", f.medium);
+  read_optional_member(j, "inflow_pressure", f.inflow_pressure);
+  read_optional_member(j, "outflow_pressure", f.outflow_pressure);
+  read_optional_member(j, "overload_volume", f.overload_volume);
 }
 
 void to_json(nlohmann::json& j, const TaskSpec& t) {
@@ -227,9 +197,9 @@ void to_json(nlohmann::json& j, const TaskSpec& t) {
 }
 void from_json(const nlohmann::json& j, TaskSpec& t) {
   j.at("id").get_to(t.id);
-  read_optional(j, "name", t.name);
+  read_optional_member(j, "name", t.name);
   j.at("kind").get_to(t.kind);
-  read_optional(j, "parameters", t.parameters);
+  read_optional_member(j, "parameters", t.parameters);
 }
 
 void to_json(nlohmann::json& j, const SubstepSpec& s) {
@@ -237,8 +207,8 @@ void to_json(nlohmann::json& j, const SubstepSpec& s) {
 }
 void from_json(const nlohmann::json& j, SubstepSpec& s) {
   j.at("id").get_to(s.id);
-  read_optional(j, "name", s.name);
-  read_optional(j, "tasks", s.tasks);
+  read_optional_member(j, "name", s.name);
+  read_optional_member(j, "tasks", s.tasks);
 }
 
 void to_json(nlohmann::json& j, const StepSpec& s) {
@@ -246,8 +216,8 @@ void to_json(nlohmann::json& j, const StepSpec& s) {
 }
 void from_json(const nlohmann::json& j, StepSpec& s) {
   j.at("id").get_to(s.id);
-  read_optional(j, "name", s.name);
-  read_optional(j, "substeps", s.substeps);
+  read_optional_member(j, "name", s.name);
+  read_optional_member(j, "substeps", s.substeps);
 }
 
 void to_json(nlohmann::json& j, const InstrumentSpec& i) {
@@ -260,13 +230,13 @@ void to_json(nlohmann::json& j, const InstrumentSpec& i) {
        {"max_view_distance", i.max_view_distance}};
 }
 void from_json(const nlohmann::json& j, InstrumentSpec& i) {
-  read_optional(j, "kind", i.kind);
-  read_optional(j, "optics_angle", i.optics_angle);
-  read_optional(j, "field_of_view", i.field_of_view);
-  read_optional(j, "shaft_diameter", i.shaft_diameter);
-  read_optional(j, "focus_distance", i.focus_distance);
-  read_optional(j, "min_view_distance", i.min_view_distance);
-  read_optional(j, "max_view_distance", i.max_view_distance);
+  read_optional_member(j, "kind", i.kind);
+  read_optional_member(j, "optics_angle", i.optics_angle);
+  read_optional_member(j, "field_of_view", i.field_of_view);
+  read_optional_member(j, "shaft_diameter", i.shaft_diameter);
+  read_optional_member(j, "focus_distance", i.focus_distance);
+  read_optional_member(j, "min_view_distance", i.min_view_distance);
+  read_optional_member(j, "max_view_distance", i.max_view_distance);
 }
 
 void to_json(nlohmann::json& j, const SessionSpec& s) {
@@ -280,17 +250,17 @@ void to_json(nlohmann::json& j, const SessionSpec& s) {
   if (s.perforation_depth != 0.0) j["perforation_depth"] = s.perforation_depth;
 }
 void from_json(const nlohmann::json& j, SessionSpec& s) {
-  read_optional(j, "time_step", s.time_step);
-  read_optional(j, "duration_limit", s.duration_limit);
-  read_optional(j, "gravity", s.gravity);
-  read_optional(j, "contact_stiffness", s.contact_stiffness);
-  read_optional(j, "tasks", s.tasks);
-  read_optional(j, "metrics", s.metrics);
-  read_optional(j, "procedure_definition", s.procedure_definition);
-  read_optional(j, "instrument", s.instrument);
-  read_optional(j, "steps", s.steps);
-  read_optional(j, "force_warning", s.force_warning);
-  read_optional(j, "perforation_depth", s.perforation_depth);
+  read_optional_member(j, "time_step", s.time_step);
+  read_optional_member(j, "duration_limit", s.duration_limit);
+  read_optional_member(j, "gravity", s.gravity);
+  read_optional_member(j, "contact_stiffness", s.contact_stiffness);
+  read_optional_member(j, "tasks", s.tasks);
+  read_optional_member(j, "metrics", s.metrics);
+  read_optional_member(j, "procedure_definition", s.procedure_definition);
+  read_optional_member(j, "instrument", s.instrument);
+  read_optional_member(j, "steps", s.steps);
+  read_optional_member(j, "force_warning", s.force_warning);
+  read_optional_member(j, "perforation_depth", s.perforation_depth);
 }
 
 void to_json(nlohmann::json& j, const VariabilityRule& r) {
@@ -299,7 +269,7 @@ void to_json(nlohmann::json& j, const VariabilityRule& r) {
 void from_json(const nlohmann::json& j, VariabilityRule& r) {
   j.at("parameter").get_to(r.parameter);
   j.at("distribution").get_to(r.distribution);
-  read_optional(j, "arguments", r.arguments);
+  read_optional_member(j, "arguments", r.arguments);
 }
 
 void to_json(nlohmann::json& j, const Landmark& l) {
@@ -311,10 +281,10 @@ void to_json(nlohmann::json& j, const Landmark& l) {
 }
 void from_json(const nlohmann::json& j, Landmark& l) {
   j.at("id").get_to(l.id);
-  read_optional(j, "name", l.name);
-  read_optional(j, "object", l.object);
+  read_optional_member(j, "name", l.name);
+  read_optional_member(j, "object", l.object);
   j.at("position").get_to(l.position);
-  read_optional(j, "normal", l.normal);
+  read_optional_member(j, "normal", l.normal);
 }
 
 void to_json(nlohmann::json& j, const CellTypeSpec& t) {
@@ -330,14 +300,14 @@ void to_json(nlohmann::json& j, const CellTypeSpec& t) {
 }
 void from_json(const nlohmann::json& j, CellTypeSpec& t) {
   j.at("id").get_to(t.id);
-  read_optional(j, "mass", t.mass);
-  read_optional(j, "radius", t.radius);
-  read_optional(j, "home_stiffness", t.home_stiffness);
-  read_optional(j, "connection_stiffness", t.connection_stiffness);
-  read_optional(j, "damping", t.damping);
-  read_optional(j, "collision_efficiency", t.collision_efficiency);
-  read_optional(j, "tear_strain", t.tear_strain);
-  read_optional(j, "yield_strain", t.yield_strain);
+  read_optional_member(j, "mass", t.mass);
+  read_optional_member(j, "radius", t.radius);
+  read_optional_member(j, "home_stiffness", t.home_stiffness);
+  read_optional_member(j, "connection_stiffness", t.connection_stiffness);
+  read_optional_member(j, "damping", t.damping);
+  read_optional_member(j, "collision_efficiency", t.collision_efficiency);
+  read_optional_member(j, "tear_strain", t.tear_strain);
+  read_optional_member(j, "yield_strain", t.yield_strain);
 }
 
 void to_json(nlohmann::json& j, const CellTissueSpec& c) {
@@ -350,11 +320,11 @@ void to_json(nlohmann::json& j, const CellTissueSpec& c) {
 }
 void from_json(const nlohmann::json& j, CellTissueSpec& c) {
   j.at("object").get_to(c.object);
-  read_optional(j, "types", c.types);
-  read_optional(j, "cell_types", c.cell_types);
-  read_optional(j, "neighbour_radius", c.neighbour_radius);
-  read_optional(j, "max_neighbours", c.max_neighbours);
-  read_optional(j, "planar", c.planar);
+  read_optional_member(j, "types", c.types);
+  read_optional_member(j, "cell_types", c.cell_types);
+  read_optional_member(j, "neighbour_radius", c.neighbour_radius);
+  read_optional_member(j, "max_neighbours", c.max_neighbours);
+  read_optional_member(j, "planar", c.planar);
 }
 
 void to_json(nlohmann::json& j, const UrethraLatticeSpec& u) {
@@ -373,17 +343,17 @@ void to_json(nlohmann::json& j, const UrethraLatticeSpec& u) {
 }
 void from_json(const nlohmann::json& j, UrethraLatticeSpec& u) {
   j.at("object").get_to(u.object);
-  read_optional(j, "curvature", u.curvature);
-  read_optional(j, "length", u.length);
-  read_optional(j, "radius", u.radius);
-  read_optional(j, "points_per_section", u.points_per_section);
-  read_optional(j, "sections", u.sections);
-  read_optional(j, "endoscope_radius", u.endoscope_radius);
-  read_optional(j, "spring_stiffness", u.spring_stiffness);
-  read_optional(j, "friction", u.friction);
-  read_optional(j, "viscous_friction", u.viscous_friction);
-  read_optional(j, "break_force", u.break_force);
-  read_optional(j, "break_torque", u.break_torque);
+  read_optional_member(j, "curvature", u.curvature);
+  read_optional_member(j, "length", u.length);
+  read_optional_member(j, "radius", u.radius);
+  read_optional_member(j, "points_per_section", u.points_per_section);
+  read_optional_member(j, "sections", u.sections);
+  read_optional_member(j, "endoscope_radius", u.endoscope_radius);
+  read_optional_member(j, "spring_stiffness", u.spring_stiffness);
+  read_optional_member(j, "friction", u.friction);
+  read_optional_member(j, "viscous_friction", u.viscous_friction);
+  read_optional_member(j, "break_force", u.break_force);
+  read_optional_member(j, "break_torque", u.break_torque);
 }
 
 void to_json(nlohmann::json& j, const Provenance& p) {
@@ -394,11 +364,11 @@ void to_json(nlohmann::json& j, const Provenance& p) {
        {"tool_versions", p.tool_versions}};
 }
 void from_json(const nlohmann::json& j, Provenance& p) {
-  read_optional(j, "template", p.template_name);
-  read_optional(j, "template_version", p.template_version);
-  read_optional(j, "seed", p.seed);
-  read_optional(j, "parameters", p.parameters);
-  read_optional(j, "tool_versions", p.tool_versions);
+  read_optional_member(j, "template", p.template_name);
+  read_optional_member(j, "template_version", p.template_version);
+  read_optional_member(j, "seed", p.seed);
+  read_optional_member(j, "parameters", p.parameters);
+  read_optional_member(j, "tool_versions", p.tool_versions);
 }
 
 void to_json(nlohmann::json& j, const Metadata& m) {
@@ -406,8 +376,8 @@ void to_json(nlohmann::json& j, const Metadata& m) {
 }
 void from_json(const nlohmann::json& j, Metadata& m) {
   j.at("name").get_to(m.name);
-  read_optional(j, "description", m.description);
-  read_optional(j, "author", m.author);
+  read_optional_member(j, "description", m.description);
+  read_optional_member(j, "author", m.author);
 }
 
 std::string surface_file_of(const std::string& object_id) {
@@ -465,11 +435,9 @@ void convert_member(const nlohmann::json& j, const char* key, T& value, const st
   const auto it = j.find(key);
   if (it == j.end()) return;
   try {
-    it->get_to(value);
+    convert_checked(*it, value, file, pointer + "/" + key);
   } catch (const nlohmann::json::exception& e) {
     throw ValidationError(std::string("cannot read: ") + e.what(), {file, pointer + "/" + key, ""});
-  } catch (const ValidationError& e) {
-    throw ValidationError(e.reason(), {file, pointer + "/" + key + e.location().json_pointer, ""});
   }
 }
 

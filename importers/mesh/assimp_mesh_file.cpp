@@ -4,6 +4,7 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
+#include <algorithm>
 #include <assimp/Importer.hpp>
 #include <set>
 #include <string>
@@ -29,6 +30,46 @@ bool ends_with_any_case(const std::string& text, const std::string& suffix) {
   return true;
 }
 
+/// True when `reader` lists `file`'s extension among its own.
+bool claims_extension(Assimp::BaseImporter& reader, const std::string& file) {
+  std::set<std::string> extensions;
+  reader.GetExtensionList(extensions);
+  for (const std::string& extension : extensions) {
+    if (ends_with_any_case(file, "." + extension)) return true;
+  }
+  return false;
+}
+
+/// Takes readers out of `importer` before it meets `file`, deleting them (UnregisterLoader only
+/// takes a reader out of the list; nothing else deletes it):
+/// - Open Game Engine Exchange, always: assimp 5.2's OpenGEX parser reads past its buffer on a
+///   damaged file (the mesh_glb fuzz target's finding, AddressSanitizer in the guard's child);
+///   it is no format for organs.
+/// - when some reader claims `file`'s extension, every other reader: assimp hands a file its
+///   extension's reader refuses to any reader whose signature check passes (the same finding: a
+///   damaged .glb went on to OpenGEX), so a file is read as what its name says or refused. A file
+///   whose extension no reader claims is still read by content.
+void restrict_readers(Assimp::Importer& importer, const std::string& file) {
+  std::vector<Assimp::BaseImporter*> kept, removed;
+  for (std::size_t i = 0; i < importer.GetImporterCount(); ++i) {
+    Assimp::BaseImporter* reader = importer.GetImporter(i);
+    (claims_extension(*reader, "x.ogex") ? removed : kept).push_back(reader);
+  }
+  const auto claiming = std::count_if(kept.begin(), kept.end(), [&](Assimp::BaseImporter* reader) {
+    return claims_extension(*reader, file);
+  });
+  if (claiming > 0) {
+    std::erase_if(kept, [&](Assimp::BaseImporter* reader) {
+      if (claims_extension(*reader, file)) return false;
+      removed.push_back(reader);
+      return true;
+    });
+  }
+  for (Assimp::BaseImporter* reader : removed) {
+    if (importer.UnregisterLoader(reader) == AI_SUCCESS) delete reader;
+  }
+}
+
 /// The index of the importer Assimp::Importer::ReadFile (5.2) will hand `file` to, by its own
 /// rule: the one importer claiming the file's extension; among several, the first whose
 /// signature check accepts the file; with none, the first of all importers that accepts it.
@@ -36,14 +77,7 @@ bool ends_with_any_case(const std::string& text, const std::string& suffix) {
 std::size_t importer_reading(const Assimp::Importer& importer, const std::string& file) {
   std::vector<std::size_t> claiming;
   for (std::size_t i = 0; i < importer.GetImporterCount(); ++i) {
-    std::set<std::string> extensions;
-    importer.GetImporter(i)->GetExtensionList(extensions);
-    for (const std::string& extension : extensions) {
-      if (ends_with_any_case(file, "." + extension)) {
-        claiming.push_back(i);
-        break;
-      }
-    }
+    if (claims_extension(*importer.GetImporter(i), file)) claiming.push_back(i);
   }
   if (claiming.size() == 1) return claiming.front();
   for (const std::size_t i : claiming) {
@@ -64,6 +98,7 @@ core::SurfaceMesh read_assimp_surface(const std::filesystem::path& path) {
   }
   if (is_glb_container(path)) check_glb_container(path);  // assimp trusts chunk lengths
   Assimp::Importer importer;
+  restrict_readers(importer, file);
   // Assimp's OFF and PLY readers trust the counts a header declares (off_header.h,
   // ply_header.h): the header is checked first when one of them is about to read the file.
   const std::size_t reader = importer_reading(importer, file);
@@ -84,6 +119,7 @@ core::SurfaceMesh read_assimp_surface(const std::filesystem::path& path) {
   // read runs first in a forked child, as the VTK readers' do (volume/crash_guard.h).
   if (!detail::survives_in_child([&] {
         Assimp::Importer trial;
+        restrict_readers(trial, file);
         trial.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
                                  aiPrimitiveType_POINT | aiPrimitiveType_LINE);
         trial.ReadFile(file, flags);

@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "core/json_eigen.h"
+#include "core/json_numbers.h"
 #include "core/json_text.h"
 
 namespace viscera::sim {
@@ -135,8 +136,9 @@ ScriptedTrajectory ScriptedTrajectory::from_json(const nlohmann::json& json,
       s.abort = w.value("abort", false);
       // The pedal, 0 or 1, held from this waypoint until a later one changes it.
       if (w.contains("activate")) {
-        const int pedal = w["activate"].get<int>();
-        if (pedal != 0 && pedal != 1) fail(pointer + "/activate", "activate must be 0 or 1");
+        const auto& pedal = w["activate"];
+        if (!core::whole_number_fits<int>(pedal) || (pedal != 0 && pedal != 1))
+          fail(pointer + "/activate", "activate must be 0 or 1");
         s.electrode = pedal == 1;
       }
       s.loop_extension = w.value("loop_extension", s.loop_extension);

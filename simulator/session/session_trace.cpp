@@ -5,6 +5,7 @@
 
 #include "core/error.h"
 #include "core/json_eigen.h"
+#include "core/json_numbers.h"
 #include "core/json_text.h"
 #include "core/package/package_manifest.h"
 #include "core/package/zip_archive.h"
@@ -38,7 +39,7 @@ std::pair<long long, InstrumentState> state_from_json(const nlohmann::json& j) {
   // Traces before the resection loop have 7 members.
   if (j.size() > 7) j.at(7).get_to(s.electrode);
   if (j.size() > 8) j.at(8).get_to(s.loop_extension);
-  return {j.at(0).get<long long>(), s};
+  return {core::whole_number<long long>(j.at(0), "", ""), s};
 }
 
 }  // namespace
@@ -126,11 +127,14 @@ SessionTrace trace_from_checked_json(const nlohmann::json& j, const std::string&
     }
     member = "checkpoints";
     for (const auto& c : j.at(member))
-      t.checkpoints.emplace_back(c.at(0).get<long long>(), c.at(1).get<std::string>());
+      t.checkpoints.emplace_back(core::whole_number<long long>(c.at(0), "", ""),
+                                 c.at(1).get<std::string>());
     member = "final_state_hash";
     j.at(member).get_to(t.final_state_hash);
   } catch (const nlohmann::json::exception& e) {
     throw core::ValidationError(std::string("cannot read: ") + e.what(), {file, "/" + member, ""});
+  } catch (const core::ValidationError& e) {  // a step number that is not a whole number
+    throw core::ValidationError(e.reason(), {file, "/" + member, ""});
   }
   if (t.script.is_null() && t.inputs.empty() && !t.body.empty()) {
     throw core::ValidationError("the trace has an instrument but neither a script nor inputs",

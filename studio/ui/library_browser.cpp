@@ -10,6 +10,8 @@
 #include <QVBoxLayout>
 #include <nlohmann/json.hpp>
 
+#include "core/json_numbers.h"
+
 namespace viscera::studio {
 namespace {
 
@@ -51,7 +53,7 @@ std::optional<AssetReference> asset_from_mime(const QMimeData* mime) {
     AssetReference ref;
     ref.library = json.at("library").get<std::string>();
     ref.name = json.at("name").get<std::string>();
-    ref.version = json.at("version").get<int>();
+    ref.version = core::whole_number<int>(json.at("version"), "", "/version");
     ref.type = core::asset_type_from_string(json.at("type").get<std::string>());
     return ref;
   } catch (const std::exception&) {

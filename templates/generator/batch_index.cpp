@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/json_numbers.h"
 #include "templates/generator/batch_journal.h"
 #include "templates/generator/diversity_summary.h"
 
@@ -59,7 +60,11 @@ nlohmann::json batch_header(const VariantGenerator& generator, std::uint64_t cou
 
 nlohmann::json assemble_index(const nlohmann::json& header, nlohmann::json records,
                               const fs::path& folder) {
-  const auto count = header.at("count").get<std::uint64_t>();
+  const auto count =
+      core::whole_number<std::uint64_t>(header.at("count"), folder.string(), "/count");
+  for (std::size_t i = 0; i < records.size(); ++i)
+    core::check_whole_numbers<std::uint64_t>(records[i].at("index"), folder.string(),
+                                             "/patients/" + std::to_string(i) + "/index");
   std::vector<nlohmann::json> sorted(records.begin(), records.end());
   std::sort(sorted.begin(), sorted.end(), [](const auto& a, const auto& b) {
     return a.at("index").template get<std::uint64_t>() <
@@ -155,8 +160,10 @@ nlohmann::json merge_shards(const fs::path& folder) {
     if (!partial.is_object() || partial.value("format", "") != kIndexFormat ||
         !partial.contains("shard"))
       throw core::InputError("not a partial batch index", {file.string(), "", ""});
-    const auto shard = partial.at("shard").at("index").get<std::uint64_t>();
-    const auto of = partial.at("shard").at("count").get<std::uint64_t>();
+    const auto shard = core::whole_number<std::uint64_t>(partial.at("shard").at("index"),
+                                                         file.string(), "/shard/index");
+    const auto of = core::whole_number<std::uint64_t>(partial.at("shard").at("count"),
+                                                      file.string(), "/shard/count");
     nlohmann::json partial_records = partial.at("patients");
     partial.erase("shard");
     partial.erase("patients");

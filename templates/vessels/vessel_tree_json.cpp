@@ -1,6 +1,7 @@
 #include "templates/vessels/vessel_tree_json.h"
 
 #include "core/error.h"
+#include "core/json_numbers.h"
 #include "templates/vessels/vessel_tree_analysis.h"
 
 namespace viscera::templates {
@@ -62,8 +63,9 @@ core::VesselTree vessel_tree_from_json(const nlohmann::json& json, const std::st
     const std::string pointer = "/tree/segments/" + std::to_string(i);
     core::VesselSegment s;
     try {
-      s.id = j.at("id").get<int>();
-      s.parent = j.value("parent", -1);
+      s.id = core::whole_number<int>(j.at("id"), file, pointer + "/id");
+      if (j.contains("parent"))
+        s.parent = core::whole_number<int>(j["parent"], file, pointer + "/parent");
       for (int a = 0; a < 3; ++a) {
         s.proximal[a] = j.at("proximal").at(a).get<double>();
         s.distal[a] = j.at("distal").at(a).get<double>();

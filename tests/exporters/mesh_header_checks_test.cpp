@@ -72,6 +72,28 @@ TEST(MeshHeaderChecks, the_ply_finding_is_refused_for_its_missing_end_header) {
       << mesh_read_error(renamed);
 }
 
+TEST(MeshHeaderChecks, a_file_is_read_as_what_its_extension_says_or_refused) {
+  // Assimp would hand a .glb its glTF readers refuse to any reader whose signature matches: a
+  // PLY cube named .glb was read as PLY, and the mesh_glb finding went on to OpenGEX.
+  const fs::path ply_as_glb = testing::scratch_dir() / "cube_in_disguise.glb";
+  fs::copy_file(testing::assimp_model("PLY/cube.ply"), ply_as_glb,
+                fs::copy_options::overwrite_existing);
+  EXPECT_TRUE(testing::message_has(mesh_read_error(ply_as_glb), {"cube_in_disguise.glb"}))
+      << mesh_read_error(ply_as_glb);
+  // A name assimp does not know still lets the content choose.
+  const fs::path ply_as_scan = testing::scratch_dir() / "cube.scan";
+  fs::copy_file(testing::assimp_model("PLY/cube.ply"), ply_as_scan,
+                fs::copy_options::overwrite_existing);
+  EXPECT_EQ(read_mesh(ply_as_scan).triangles.size(), 12u);
+  // The finding itself, as a .glb and under OpenGEX's own name (that reader is taken out).
+  const fs::path finding = regression("mesh_glb", "opengex_text_after_a_failed_gltf_read.glb");
+  EXPECT_TRUE(testing::message_has(mesh_read_error(finding), {finding.string()}));
+  const fs::path as_ogex = testing::scratch_dir() / "finding.ogex";
+  fs::copy_file(finding, as_ogex, fs::copy_options::overwrite_existing);
+  EXPECT_TRUE(testing::message_has(mesh_read_error(as_ogex), {"finding.ogex"}))
+      << mesh_read_error(as_ogex);
+}
+
 TEST(MeshHeaderChecks, ascii_and_binary_ply_declaring_more_elements_than_they_hold_are_refused) {
   const fs::path ascii = patched(testing::assimp_model("PLY/cube.ply"), "element vertex 8",
                                  "element vertex 400000000", "ascii.ply");

@@ -88,6 +88,8 @@ TEST(PolypectomySession, script_pedal_and_loop_values_out_of_range_are_refused_w
   } catch (const core::InputError& e) {
     EXPECT_EQ(e.location().json_pointer, "/waypoints/0/activate");
   }
+  script["waypoints"][0]["activate"] = 1e300;  // not cast to int: refused
+  EXPECT_THROW((void)ScriptedTrajectory::from_json(script, "s.json", 12.0), core::InputError);
   script["waypoints"][0].erase("activate");
   script["waypoints"][0]["loop_extension"] = 0.05;
   try {

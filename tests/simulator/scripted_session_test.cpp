@@ -158,6 +158,17 @@ TEST(SessionTrace, round_trips_through_json_exactly) {
   nlohmann::json broken = trace_to_json(trace);
   broken.erase("inputs");
   EXPECT_THROW(trace_from_json(broken, "t.json"), core::ValidationError);
+  // A step number no integer holds is refused, not cast (undefined behaviour).
+  for (const char* member : {"inputs", "checkpoints"}) {
+    nlohmann::json huge = trace_to_json(trace);
+    huge[member][1][0] = 1e300;
+    try {
+      (void)trace_from_json(huge, "t.json");
+      ADD_FAILURE() << member << ": a step of 1e300 accepted";
+    } catch (const core::ValidationError& e) {
+      EXPECT_EQ(e.location().json_pointer, std::string("/") + member);
+    }
+  }
 }
 
 }  // namespace

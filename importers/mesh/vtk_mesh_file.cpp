@@ -83,6 +83,22 @@ vtkSmartPointer<vtkDataSet> read_dataset(const std::filesystem::path& path) {
   // finding: a SEGV in vtkTriangleFilter reading a point the file does not have).
   const auto check_cells = [&](vtkCellArray* cells) {
     if (cells == nullptr || cells->GetNumberOfConnectivityIds() == 0) return;
+    // Nor a cell's point count: a negative count in a legacy file gives offsets that go back
+    // (the mesh_vtk fuzz target's second finding, again a SEGV in vtkTriangleFilter).
+    vtkDataArray* offsets = cells->GetOffsetsArray();
+    double previous = 0.0;
+    for (vtkIdType c = 0; c < offsets->GetNumberOfTuples(); ++c) {
+      const double offset = offsets->GetComponent(c, 0);
+      if ((c == 0 && offset != 0.0) || offset < previous) {
+        throw core::InputError(
+            "cell " + std::to_string(c > 0 ? c - 1 : 0) + " has a negative number of points",
+            {file, "", ""});
+      }
+      previous = offset;
+    }
+    if (previous != static_cast<double>(cells->GetNumberOfConnectivityIds()))
+      throw core::InputError("the cells' point counts do not add up to their point list",
+                             {file, "", ""});
     double range[2];
     cells->GetConnectivityArray()->GetRange(range, 0);
     const double points = static_cast<double>(data->GetNumberOfPoints());

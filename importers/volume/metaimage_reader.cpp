@@ -9,8 +9,8 @@
 #include <sstream>
 
 #include "core/error.h"
-#include "importers/volume/crash_guard.h"
 #include "importers/volume/format_readers.h"
+#include "importers/volume/image_read_in_child.h"
 #include "importers/volume/volume_geometry.h"
 #include "importers/vtk_error_capture.h"
 
@@ -76,21 +76,20 @@ LoadedVolume read_metaimage(const fs::path& path, const VolumeReadOptions& optio
 
   vtkNew<vtkMetaImageReader> reader;
   reader->SetFileName(file.c_str());
-  check_reader_budget(*reader, options, file);
-  // vtkmetaio divides by zero reading the voxels of some damaged headers (volume_metaimage
-  // fuzz target: an FPE in MetaImage::ReadStream): the whole read runs first in a forked child.
-  if (!survives_in_child([&] { reader->Update(); }))
-    throw core::InputError("the file is damaged: VTK's MetaImage reader crashes or hangs on it",
-                           {file, "", ""});
-  std::string error;
-  {
-    VtkErrorCapture capture;
-    reader->Update();
-    error = capture.first_error();
-  }
-  if (!error.empty()) throw core::InputError("cannot read the voxels: " + error, {file, "", ""});
-
-  vtkImageData* image = reader->GetOutput();
+  // vtkmetaio divides by zero on some damaged headers (volume_metaimage fuzz target: an FPE in
+  // MetaImage::ReadStream) and corrupts the heap on others without crashing at once (the same
+  // target, later): the read runs only in a child, which sends the voxels back.
+  const vtkSmartPointer<vtkImageData> read = read_image_in_child(
+      [&]() -> vtkImageData* {
+        check_reader_budget(*reader, options, file);  // the header is vtkmetaio's too
+        VtkErrorCapture capture;
+        reader->Update();
+        if (const std::string error = capture.first_error(); !error.empty())
+          throw core::InputError("cannot read the voxels: " + error);
+        return reader->GetOutput();
+      },
+      file, "VTK's MetaImage reader");
+  vtkImageData* image = read.Get();
   loaded.volume = volume_from_vtk_image(*image, file, loaded.notes);
   double spacing[3], origin[3];
   image->GetSpacing(spacing);

@@ -152,6 +152,14 @@ TEST(MeshHeaderChecks, the_vtk_findings_are_refused_without_a_crash_or_an_untype
   EXPECT_TRUE(testing::message_has(mesh_read_error(xml),
                                    {xml.string(), "declares more data than memory can hold"}))
       << mesh_read_error(xml);
+  // Cells the legacy reader takes without a check, each a SEGV in vtkTriangleFilter once.
+  const fs::path past = regression("mesh_vtk", "cell_names_a_point_past_the_file.vtk");
+  EXPECT_TRUE(testing::message_has(mesh_read_error(past), {past.string(), "a cell names point"}))
+      << mesh_read_error(past);
+  const fs::path negative = regression("mesh_vtk", "negative_point_count.vtk");
+  EXPECT_TRUE(testing::message_has(mesh_read_error(negative),
+                                   {negative.string(), "negative number of points"}))
+      << mesh_read_error(negative);
 }
 
 }  // namespace

@@ -1,0 +1,200 @@
+#include "importers/volume/image_read_in_child.h"
+
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <vtkDataArray.h>
+#include <vtkPointData.h>
+
+#include <cerrno>
+#include <cstdint>
+#include <cstring>
+#include <exception>
+
+#include "core/error.h"
+#include "importers/volume/crash_guard.h"
+
+namespace viscera::importers::detail {
+namespace {
+
+/// What the child sends before the voxels: plain numbers, checked by the parent.
+struct ImageHeader {
+  std::int32_t dimensions[3];
+  double spacing[3];
+  double origin[3];
+  std::int32_t scalar_type;
+  std::int32_t components;
+  std::uint64_t bytes;
+};
+
+constexpr char kImage = 'I', kRefused = 'E';
+
+bool write_all(int fd, const void* data, std::size_t size) {
+  const char* at = static_cast<const char*>(data);
+  while (size > 0) {
+    const ssize_t n = ::write(fd, at, size);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    at += n;
+    size -= static_cast<std::size_t>(n);
+  }
+  return true;
+}
+
+/// Reads exactly `size` bytes; false at an early end (the child died while writing).
+bool read_all(int fd, void* data, std::size_t size) {
+  char* at = static_cast<char*>(data);
+  while (size > 0) {
+    const ssize_t n = ::read(fd, at, size);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    at += n;
+    size -= static_cast<std::size_t>(n);
+  }
+  return true;
+}
+
+void send_refusal(int fd, const std::string& reason) {
+  const auto length = static_cast<std::uint32_t>(reason.size());
+  (void)(write_all(fd, &kRefused, 1) && write_all(fd, &length, sizeof length) &&
+         write_all(fd, reason.data(), reason.size()));
+}
+
+/// The child's side: read, then send the image or the reason it was refused.
+void run_child(int fd, const std::function<vtkImageData*()>& read) {
+  try {
+    vtkImageData* image = read();
+    vtkDataArray* scalars = image != nullptr ? image->GetPointData()->GetScalars() : nullptr;
+    if (scalars == nullptr) {
+      send_refusal(fd, "the reader produced no voxels");
+      return;
+    }
+    ImageHeader header{};
+    int dimensions[3];
+    image->GetDimensions(dimensions);
+    for (int a = 0; a < 3; ++a)
+      header.dimensions[a] = dimensions[a];
+    image->GetSpacing(header.spacing);
+    image->GetOrigin(header.origin);
+    header.scalar_type = scalars->GetDataType();
+    header.components = scalars->GetNumberOfComponents();
+    header.bytes = static_cast<std::uint64_t>(scalars->GetNumberOfValues()) *
+                   static_cast<std::uint64_t>(scalars->GetDataTypeSize());
+    if (write_all(fd, &kImage, 1) && write_all(fd, &header, sizeof header))
+      write_all(fd, scalars->GetVoidPointer(0), header.bytes);
+  } catch (const core::Error& e) {
+    send_refusal(fd, e.reason());
+  } catch (const std::exception& e) {
+    send_refusal(fd, e.what());
+  }
+}
+
+/// Ends and reaps the child when the parent leaves early (a refusal or a failed allocation).
+class ChildProcess {
+ public:
+  explicit ChildProcess(pid_t pid) : pid_(pid) {}
+  ~ChildProcess() {
+    if (pid_ > 0) {
+      ::kill(pid_, SIGKILL);
+      wait();
+    }
+  }
+  ChildProcess(const ChildProcess&) = delete;
+  ChildProcess& operator=(const ChildProcess&) = delete;
+
+  /// Waits for the child; true when it exited normally.
+  bool wait() {
+    int status = 0;
+    while (::waitpid(pid_, &status, 0) < 0) {
+      if (errno != EINTR) break;
+    }
+    pid_ = -1;
+    return WIFEXITED(status);
+  }
+
+ private:
+  pid_t pid_;
+};
+
+/// Closes a pipe end on every path.
+struct PipeEnd {
+  int fd = -1;
+  ~PipeEnd() {
+    if (fd >= 0) ::close(fd);
+  }
+};
+
+}  // namespace
+
+vtkSmartPointer<vtkImageData> read_image_in_child(const std::function<vtkImageData*()>& read,
+                                                  const std::string& file,
+                                                  const std::string& reader) {
+  int ends[2];
+  if (::pipe(ends) != 0)
+    throw core::Error(std::string("cannot start a process to read the file: ") +
+                      std::strerror(errno));
+  PipeEnd from_child{ends[0]}, to_parent{ends[1]};
+  const pid_t pid = ::fork();
+  if (pid < 0)
+    throw core::Error(std::string("cannot start a process to read the file: ") +
+                      std::strerror(errno));
+  if (pid == 0) {
+    ::close(from_child.fd);
+    prepare_guard_child();
+    ::signal(SIGALRM, SIG_DFL);
+    ::alarm(kGuardSeconds);
+    run_child(to_parent.fd, read);
+    ::_exit(0);  // nothing of the parent's state (atexit handlers, buffered streams) runs twice
+  }
+  ChildProcess child(pid);
+  ::close(to_parent.fd);
+  to_parent.fd = -1;
+
+  const core::InputError crashed("the file is damaged: " + reader + " crashes or hangs on it",
+                                 {file, "", ""});
+  char kind = 0;
+  if (!read_all(from_child.fd, &kind, 1)) {
+    child.wait();
+    throw crashed;
+  }
+  if (kind == kRefused) {
+    std::uint32_t length = 0;
+    std::string reason(0, '\0');
+    if (read_all(from_child.fd, &length, sizeof length) && length <= (1u << 20)) {
+      reason.resize(length);
+      if (!read_all(from_child.fd, reason.data(), length)) reason.clear();
+    }
+    if (!child.wait() || reason.empty()) throw crashed;
+    throw core::InputError(reason, {file, "", ""});
+  }
+  ImageHeader header{};
+  if (kind != kImage || !read_all(from_child.fd, &header, sizeof header)) {
+    child.wait();
+    throw crashed;
+  }
+  // The numbers come from a process that ran a damaged file: checked before they size anything.
+  std::uint64_t voxels = 1;
+  for (const std::int32_t d : header.dimensions) {
+    if (d < 1) throw core::InputError("the reader produced an empty image", {file, "", ""});
+    voxels *= static_cast<std::uint64_t>(d);
+  }
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(header.dimensions[0], header.dimensions[1], header.dimensions[2]);
+  image->SetSpacing(header.spacing);
+  image->SetOrigin(header.origin);
+  const auto scalars =
+      vtkSmartPointer<vtkDataArray>::Take(vtkDataArray::CreateDataArray(header.scalar_type));
+  if (scalars == nullptr || header.components < 1 ||
+      header.bytes != voxels * static_cast<std::uint64_t>(header.components) *
+                          static_cast<std::uint64_t>(scalars->GetDataTypeSize()))
+    throw crashed;
+  scalars->SetNumberOfComponents(header.components);
+  if (!scalars->SetNumberOfValues(static_cast<vtkIdType>(voxels) * header.components))
+    throw core::InputError("the image is larger than memory can hold", {file, "", ""});
+  if (!read_all(from_child.fd, scalars->GetVoidPointer(0), header.bytes) || !child.wait())
+    throw crashed;
+  image->GetPointData()->SetScalars(scalars);
+  return image;
+}
+
+}  // namespace viscera::importers::detail

@@ -10,12 +10,12 @@
 #include <string>
 #include <vector>
 
+#include "core/crash_guard.h"
 #include "core/error.h"
 #include "importers/mesh/glb_container.h"
 #include "importers/mesh/mesh_integrity.h"
 #include "importers/mesh/off_header.h"
 #include "importers/mesh/ply_header.h"
-#include "importers/volume/crash_guard.h"
 
 namespace viscera::importers {
 namespace {
@@ -116,8 +116,8 @@ core::SurfaceMesh read_assimp_surface(const std::filesystem::path& path) {
   const bool facet_normals_only = path.extension() == ".stl" || path.extension() == ".STL";
   if (facet_normals_only) flags |= aiProcess_DropNormals;
   // Assimp can crash on a damaged file (mesh_ply fuzz target: a SEGV in its post-processing): the
-  // read runs first in a forked child, as the VTK readers' do (volume/crash_guard.h).
-  if (!detail::survives_in_child([&] {
+  // read runs first in a forked child, as the VTK readers' do (core/crash_guard.h).
+  if (!core::survives_in_child([&] {
         Assimp::Importer trial;
         restrict_readers(trial, file);
         trial.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,

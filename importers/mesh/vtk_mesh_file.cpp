@@ -20,10 +20,10 @@
 #include <algorithm>
 #include <new>
 
+#include "core/crash_guard.h"
 #include "core/error.h"
 #include "importers/mesh/mesh_integrity.h"
 #include "importers/mesh/no_tetrahedra_error.h"
-#include "importers/volume/crash_guard.h"
 #include "importers/vtk_error_capture.h"
 
 namespace viscera::importers {
@@ -57,8 +57,8 @@ vtkSmartPointer<vtkDataSet> read_dataset(const std::filesystem::path& path) {
     reader = legacy;
   }
   // VTK 9.1's XML and legacy readers can crash on damaged files (the tet_mesh_vtu and mesh_vtk
-  // fuzz targets' findings): the read runs first in a forked child (volume/crash_guard.h).
-  if (!detail::survives_in_child([&] { reader->Update(); }))
+  // fuzz targets' findings): the read runs first in a forked child (core/crash_guard.h).
+  if (!core::survives_in_child([&] { reader->Update(); }))
     throw core::InputError("the file is damaged: VTK's reader crashes or hangs on it",
                            {file, "", ""});
   std::string error;

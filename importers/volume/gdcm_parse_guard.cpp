@@ -10,8 +10,8 @@
 #include <cstdint>
 #include <cstring>
 
+#include "core/crash_guard.h"
 #include "core/error.h"
-#include "importers/volume/crash_guard.h"
 
 namespace viscera::importers::detail {
 namespace {
@@ -26,7 +26,7 @@ namespace fs = std::filesystem;
   gdcm::Trace::SetError(false);
   gdcm::Trace::SetDebug(false);
   // Assertion messages would reach the user's terminal: the parent reports instead.
-  prepare_guard_child();
+  core::prepare_guard_child();
   for (std::size_t i = first; i < files.size(); ++i) {
     const auto index = static_cast<std::int64_t>(i);
     if (::write(out, &index, sizeof index) != sizeof index) ::_exit(2);

@@ -11,8 +11,8 @@
 #include <cstring>
 #include <exception>
 
+#include "core/crash_guard.h"
 #include "core/error.h"
-#include "importers/volume/crash_guard.h"
 
 namespace viscera::importers::detail {
 namespace {
@@ -140,9 +140,9 @@ vtkSmartPointer<vtkImageData> read_image_in_child(const std::function<vtkImageDa
                       std::strerror(errno));
   if (pid == 0) {
     ::close(from_child.fd);
-    prepare_guard_child();
+    core::prepare_guard_child();
     ::signal(SIGALRM, SIG_DFL);
-    ::alarm(kGuardSeconds);
+    ::alarm(core::kGuardSeconds);
     run_child(to_parent.fd, read);
     ::_exit(0);  // nothing of the parent's state (atexit handlers, buffered streams) runs twice
   }

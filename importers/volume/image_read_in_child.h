@@ -17,8 +17,8 @@
 
 namespace viscera::importers::detail {
 
-/// Runs `read` in a forked child (prepare_guard_child, ended after kGuardSeconds) and returns a
-/// copy of the image it returned: dimensions, spacing, origin and scalars (type and components).
+/// Runs `read` in a forked child (prepare_guard_child, ended after core::kGuardSeconds) and returns
+/// a copy of the image it returned: dimensions, spacing, origin and scalars (type and components).
 /// `read` may throw core::Error or any std::exception to refuse the file: its reason comes back.
 /// Throws core::InputError naming `file`: the child's refusal, or "`reader` crashes or hangs on
 /// it" when a signal or the alarm ended the child; core::Error when no child can be started.

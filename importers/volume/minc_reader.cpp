@@ -10,8 +10,8 @@
 
 #include <fstream>
 
+#include "core/crash_guard.h"
 #include "core/error.h"
-#include "importers/volume/crash_guard.h"
 #include "importers/volume/format_readers.h"
 #include "importers/volume/netcdf_header.h"
 #include "importers/volume/volume_geometry.h"
@@ -43,7 +43,7 @@ LoadedVolume read_minc(const std::filesystem::path& path, const VolumeReadOption
   check_reader_budget(*reader, options, file);
   // VTK's MINC reader can also crash reading the voxels of a damaged file (volume_minc fuzz
   // target, a SEGV in ExecuteDataWithInformation): the whole read runs first in a forked child.
-  if (!survives_in_child([&] { reader->Update(); }))
+  if (!core::survives_in_child([&] { reader->Update(); }))
     throw core::InputError("the file is damaged: VTK's MINC reader crashes or hangs on it",
                            {file, "", ""});
   std::string error;

@@ -9,8 +9,8 @@
 #include <vtkNIFTIImageReader.h>
 #include <vtkNew.h>
 
+#include "core/crash_guard.h"
 #include "core/error.h"
-#include "importers/volume/crash_guard.h"
 #include "importers/volume/format_readers.h"
 #include "importers/volume/volume_geometry.h"
 #include "importers/vtk_error_capture.h"
@@ -93,7 +93,7 @@ LoadedVolume read_nifti(const fs::path& path, const VolumeReadOptions& options) 
 
   // VTK 9.1's NIfTI reader can also crash reading the voxels of a damaged file (volume_nifti
   // fuzz target): the whole read runs first in a forked child, at the cost of reading twice.
-  if (!survives_in_child([&] { reader->Update(); }))
+  if (!core::survives_in_child([&] { reader->Update(); }))
     throw core::InputError("the file is damaged: VTK's NIfTI reader crashes or hangs on it",
                            {file, "", ""});
   std::string error;

@@ -12,8 +12,8 @@
 #include <cstring>
 #include <limits>
 
+#include "core/crash_guard.h"
 #include "core/error.h"
-#include "importers/volume/crash_guard.h"
 #include "importers/vtk_error_capture.h"
 
 namespace viscera::importers::detail {
@@ -72,7 +72,7 @@ void check_voxel_budget(const std::array<std::int64_t, 3>& dims, std::int64_t co
 
 void check_reader_budget(vtkImageReader2& reader, const VolumeReadOptions& options,
                          const std::string& file) {
-  if (!survives_in_child([&] { reader.UpdateInformation(); })) {
+  if (!core::survives_in_child([&] { reader.UpdateInformation(); })) {
     throw core::InputError("the header is damaged: VTK's reader crashes or hangs on it",
                            {file, "", ""});
   }

@@ -1,4 +1,4 @@
-#include "importers/volume/crash_guard.h"
+#include "core/crash_guard.h"
 
 #include <fcntl.h>
 #include <signal.h>
@@ -11,7 +11,7 @@
 
 #include "core/error.h"
 
-namespace viscera::importers::detail {
+namespace viscera::core {
 
 void prepare_guard_child() {
   if (const int null = ::open("/dev/null", O_WRONLY); null >= 0) ::dup2(null, 2);
@@ -22,8 +22,7 @@ void prepare_guard_child() {
 bool survives_in_child(const std::function<void()>& attempt) {
   const pid_t child = ::fork();
   if (child < 0)
-    throw core::Error(std::string("cannot start a process to check the file: ") +
-                      std::strerror(errno));
+    throw Error(std::string("cannot start a process to check the file: ") + std::strerror(errno));
   if (child == 0) {
     prepare_guard_child();
     ::signal(SIGALRM, SIG_DFL);
@@ -41,4 +40,4 @@ bool survives_in_child(const std::function<void()>& attempt) {
   return WIFEXITED(status) && WEXITSTATUS(status) == 0;
 }
 
-}  // namespace viscera::importers::detail
+}  // namespace viscera::core

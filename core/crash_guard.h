@@ -10,6 +10,7 @@
 ///
 /// Cost: one fork and the guarded read done twice (the second from the page cache).
 
+#include <cstdint>
 #include <functional>
 
 namespace viscera::core {
@@ -18,16 +19,34 @@ namespace viscera::core {
 /// ever on some damaged headers (the volume_minc fuzz target's timeout).
 inline constexpr unsigned kGuardSeconds = 10;
 
-/// Sets up a guard's freshly forked child: stderr to /dev/null (the parent reports) and the
-/// default action for the deadly signals, so a fuzzer's or sanitizer's handler inherited from the
-/// parent does not report a crash the guard exists to contain.
-void prepare_guard_child();
+/// Address space a guard's child may add to what it inherited when the caller knows no better
+/// bound: a 384-byte NIfTI header made VTK's reader take 8.6 GB within the 10 s (volume_nifti fuzz
+/// target). A reader that knows the size it will allocate passes its own (guard_memory_for).
+inline constexpr std::uint64_t kGuardMemoryBytes = 4ULL << 30;
 
-/// Runs `attempt` in a forked child process prepared by prepare_guard_child(), with an alarm
-/// after kGuardSeconds. True when the
-/// child finished (returned or threw: a clean refusal the caller will meet again), false when a
-/// signal ended it (a crash, an abort, or kGuardSeconds passed). Throws core::Error when no child
-/// process can be started.
-bool survives_in_child(const std::function<void()>& attempt);
+/// The bound for a child that reads `data_bytes` of declared data: twice that (a library's
+/// buffer and its result) and 1 GiB for the library itself.
+constexpr std::uint64_t guard_memory_for(std::uint64_t data_bytes) {
+  return 2 * data_bytes + (1ULL << 30);
+}
+
+/// False in a build with AddressSanitizer or ThreadSanitizer: there guards do not limit memory.
+bool guard_limits_memory();
+
+/// Sets up a guard's freshly forked child: stderr to /dev/null (the parent reports); the default
+/// action for the deadly signals, so a fuzzer's or sanitizer's handler inherited from the parent
+/// does not report a crash the guard exists to contain; and its address space limited to what it
+/// has plus `memory_bytes` (RLIMIT_AS), so an allocation past it fails and ends the child. Not
+/// under AddressSanitizer or ThreadSanitizer, whose shadow memory the limit would refuse (the
+/// fuzz build's libFuzzer bounds each allocation instead).
+void prepare_guard_child(std::uint64_t memory_bytes = kGuardMemoryBytes);
+
+/// Runs `attempt` in a forked child process prepared by prepare_guard_child(memory_bytes), with
+/// an alarm after kGuardSeconds. True when the child finished (returned or threw: a clean refusal
+/// the caller will meet again), false when a signal ended it (a crash, an abort, a failed
+/// allocation past the limit, or kGuardSeconds passed). Throws core::Error when no child process
+/// can be started.
+bool survives_in_child(const std::function<void()>& attempt,
+                       std::uint64_t memory_bytes = kGuardMemoryBytes);
 
 }  // namespace viscera::core

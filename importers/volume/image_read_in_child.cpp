@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <cstring>
 #include <exception>
+#include <new>
 
 #include "core/crash_guard.h"
 #include "core/error.h"
@@ -82,6 +83,8 @@ void run_child(int fd, const std::function<vtkImageData*()>& read) {
                    static_cast<std::uint64_t>(scalars->GetDataTypeSize());
     if (write_all(fd, &kImage, 1) && write_all(fd, &header, sizeof header))
       write_all(fd, scalars->GetVoidPointer(0), header.bytes);
+  } catch (const std::bad_alloc&) {
+    send_refusal(fd, "reading it needs more memory than the image it declares");
   } catch (const core::Error& e) {
     send_refusal(fd, e.reason());
   } catch (const std::exception& e) {
@@ -128,7 +131,8 @@ struct PipeEnd {
 
 vtkSmartPointer<vtkImageData> read_image_in_child(const std::function<vtkImageData*()>& read,
                                                   const std::string& file,
-                                                  const std::string& reader) {
+                                                  const std::string& reader,
+                                                  std::uint64_t memory_bytes) {
   int ends[2];
   if (::pipe(ends) != 0)
     throw core::Error(std::string("cannot start a process to read the file: ") +
@@ -140,7 +144,7 @@ vtkSmartPointer<vtkImageData> read_image_in_child(const std::function<vtkImageDa
                       std::strerror(errno));
   if (pid == 0) {
     ::close(from_child.fd);
-    core::prepare_guard_child();
+    core::prepare_guard_child(memory_bytes);
     ::signal(SIGALRM, SIG_DFL);
     ::alarm(core::kGuardSeconds);
     run_child(to_parent.fd, read);
@@ -150,8 +154,9 @@ vtkSmartPointer<vtkImageData> read_image_in_child(const std::function<vtkImageDa
   ::close(to_parent.fd);
   to_parent.fd = -1;
 
-  const core::InputError crashed("the file is damaged: " + reader + " crashes or hangs on it",
-                                 {file, "", ""});
+  const core::InputError crashed(
+      "the file is damaged: " + reader + " crashes, hangs or exhausts its memory on it",
+      {file, "", ""});
   char kind = 0;
   if (!read_all(from_child.fd, &kind, 1)) {
     child.wait();

@@ -15,15 +15,18 @@
 #include <functional>
 #include <string>
 
+#include "core/crash_guard.h"
+
 namespace viscera::importers::detail {
 
-/// Runs `read` in a forked child (prepare_guard_child, ended after core::kGuardSeconds) and returns
-/// a copy of the image it returned: dimensions, spacing, origin and scalars (type and components).
-/// `read` may throw core::Error or any std::exception to refuse the file: its reason comes back.
-/// Throws core::InputError naming `file`: the child's refusal, or "`reader` crashes or hangs on
-/// it" when a signal or the alarm ended the child; core::Error when no child can be started.
-vtkSmartPointer<vtkImageData> read_image_in_child(const std::function<vtkImageData*()>& read,
-                                                  const std::string& file,
-                                                  const std::string& reader);
+/// Runs `read` in a forked child (core::prepare_guard_child(memory_bytes), ended after
+/// core::kGuardSeconds) and returns a copy of the image it returned: dimensions, spacing, origin
+/// and scalars (type and components). `read` may throw core::Error or any std::exception to
+/// refuse the file: its reason comes back. Throws core::InputError naming `file`: the child's
+/// refusal, or "`reader` crashes, hangs or exhausts its memory on it" when a signal or the alarm
+/// ended the child; core::Error when no child can be started.
+vtkSmartPointer<vtkImageData> read_image_in_child(
+    const std::function<vtkImageData*()>& read, const std::string& file, const std::string& reader,
+    std::uint64_t memory_bytes = core::kGuardMemoryBytes);
 
 }  // namespace viscera::importers::detail

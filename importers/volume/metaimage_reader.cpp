@@ -88,7 +88,7 @@ LoadedVolume read_metaimage(const fs::path& path, const VolumeReadOptions& optio
           throw core::InputError("cannot read the voxels: " + error);
         return reader->GetOutput();
       },
-      file, "VTK's MetaImage reader");
+      file, "VTK's MetaImage reader", core::guard_memory_for(options.max_bytes));
   vtkImageData* image = read.Get();
   loaded.volume = volume_from_vtk_image(*image, file, loaded.notes);
   double spacing[3], origin[3];

@@ -40,12 +40,13 @@ LoadedVolume read_minc(const std::filesystem::path& path, const VolumeReadOption
   vtkNew<vtkMINCImageReader> reader;
   reader->SetFileName(file.c_str());
   reader->RescaleRealValuesOn();
-  check_reader_budget(*reader, options, file);
+  const std::uint64_t declared = check_reader_budget(*reader, options, file);
   // VTK's MINC reader can also crash reading the voxels of a damaged file (volume_minc fuzz
   // target, a SEGV in ExecuteDataWithInformation): the whole read runs first in a forked child.
-  if (!core::survives_in_child([&] { reader->Update(); }))
-    throw core::InputError("the file is damaged: VTK's MINC reader crashes or hangs on it",
-                           {file, "", ""});
+  if (!core::survives_in_child([&] { reader->Update(); }, core::guard_memory_for(declared)))
+    throw core::InputError(
+        "the file is damaged: VTK's MINC reader crashes, hangs or exhausts its memory on it",
+        {file, "", ""});
   std::string error;
   {
     VtkErrorCapture capture;

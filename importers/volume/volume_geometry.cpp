@@ -45,9 +45,9 @@ void rescale_into(const core::ImageVolume& in, double slope, double intercept,
 
 }  // namespace
 
-void check_voxel_budget(const std::array<std::int64_t, 3>& dims, std::int64_t components,
-                        std::int64_t bytes_per_component, const VolumeReadOptions& options,
-                        const std::string& file) {
+std::uint64_t check_voxel_budget(const std::array<std::int64_t, 3>& dims, std::int64_t components,
+                                 std::int64_t bytes_per_component, const VolumeReadOptions& options,
+                                 const std::string& file) {
   for (const auto d : dims) {
     if (d <= 0) {
       throw core::InputError("header gives a non-positive size " + std::to_string(dims[0]) + "×" +
@@ -68,13 +68,15 @@ void check_voxel_budget(const std::array<std::int64_t, 3>& dims, std::int64_t co
             std::to_string(options.max_bytes / (1024 * 1024)) + " MiB",
         {file, "", ""});
   }
+  return static_cast<std::uint64_t>(bytes);
 }
 
-void check_reader_budget(vtkImageReader2& reader, const VolumeReadOptions& options,
-                         const std::string& file) {
+std::uint64_t check_reader_budget(vtkImageReader2& reader, const VolumeReadOptions& options,
+                                  const std::string& file) {
   if (!core::survives_in_child([&] { reader.UpdateInformation(); })) {
-    throw core::InputError("the header is damaged: VTK's reader crashes or hangs on it",
-                           {file, "", ""});
+    throw core::InputError(
+        "the header is damaged: VTK's reader crashes, hangs or exhausts its memory on it",
+        {file, "", ""});
   }
   std::string error;
   {
@@ -94,7 +96,7 @@ void check_reader_budget(vtkImageReader2& reader, const VolumeReadOptions& optio
                                          std::int64_t{extent[5]} - extent[4] + 1};
   const int type = vtkImageData::GetScalarType(info);
   const int components = vtkImageData::GetNumberOfScalarComponents(info);
-  check_voxel_budget(dims, components, vtkDataArray::GetDataTypeSize(type), options, file);
+  return check_voxel_budget(dims, components, vtkDataArray::GetDataTypeSize(type), options, file);
 }
 
 core::ImageVolume volume_from_vtk_image(vtkImageData& image, const std::string& file,

@@ -16,17 +16,18 @@ class vtkImageReader2;
 
 namespace viscera::importers::detail {
 
-/// Throws core::InputError naming `file` when dims are not positive or dims × components ×
-/// bytes_per_component exceeds options.max_bytes ("header claims 100000×…").
-void check_voxel_budget(const std::array<std::int64_t, 3>& dims, std::int64_t components,
-                        std::int64_t bytes_per_component, const VolumeReadOptions& options,
-                        const std::string& file);
+/// The bytes dims × components × bytes_per_component of the voxels a header declares. Throws
+/// core::InputError naming `file` when dims are not positive or the bytes exceed
+/// options.max_bytes ("header claims 100000×…").
+std::uint64_t check_voxel_budget(const std::array<std::int64_t, 3>& dims, std::int64_t components,
+                                 std::int64_t bytes_per_component, const VolumeReadOptions& options,
+                                 const std::string& file);
 
-/// Runs UpdateInformation() on `reader` and checks its whole extent, component count and
-/// scalar size against the budget; throws core::InputError naming `file` if the header
-/// cannot be read.
-void check_reader_budget(vtkImageReader2& reader, const VolumeReadOptions& options,
-                         const std::string& file);
+/// Runs UpdateInformation() on `reader` (first in a guard's child) and checks its whole
+/// extent, component count and scalar size against the budget; returns the declared voxel
+/// bytes. Throws core::InputError naming `file` if the header cannot be read.
+std::uint64_t check_reader_budget(vtkImageReader2& reader, const VolumeReadOptions& options,
+                                  const std::string& file);
 
 /// Copies the voxels of `image` (dims and values only; geometry is the caller's). Types with
 /// no ImageVolume twin are widened (int8 → int16, uint32/int64 → float64); 3 or 4 components

@@ -57,6 +57,7 @@ void copy_text(char* to, std::size_t capacity, const std::string& from) {
   to[n] = '\0';
 }
 
+#if VISCERA_REPLAY_LIMITS_MALLOC  // the limit's own helpers: sanitizer builds do without
 [[noreturn]] void allocation_over_limit(std::size_t size) {
   armed = 0;
   char number[24];
@@ -79,6 +80,7 @@ bool must_fail(std::size_t size) {
   if (armed && size > viscera::fuzz::kAllocationLimitBytes) allocation_over_limit(size);
   return false;
 }
+#endif
 
 void on_alarm(int) {
   write_text(2, "viscera_fuzz_replay: ");

@@ -45,7 +45,9 @@ std::uint64_t mapped_bytes() {
 
 }  // namespace
 
-bool guard_limits_memory() { return !kSanitized; }
+bool guard_limits_memory() {
+  return !kSanitized;
+}
 
 void prepare_guard_child(std::uint64_t memory_bytes) {
   if (const int null = ::open("/dev/null", O_WRONLY); null >= 0) ::dup2(null, 2);

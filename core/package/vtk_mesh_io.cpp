@@ -101,8 +101,9 @@ void read_checked(Reader& reader, const std::filesystem::path& path) {
   // VTK's XML readers crash on some damaged files (the package_folder fuzz target: a SEGV in
   // vtkXMLReader::ReadXMLInformation): the read runs first in a forked child.
   if (!survives_in_child([&] { reader.Update(); }))
-    throw InputError("the file is damaged: VTK's reader crashes, hangs or exhausts its memory on it",
-                     {path.string(), "", ""});
+    throw InputError(
+        "the file is damaged: VTK's reader crashes, hangs or exhausts its memory on it",
+        {path.string(), "", ""});
   reader.Update();
   if (reader.GetErrorCode() != 0 || reader.GetOutput() == nullptr) {
     throw InputError("not a readable VTK XML file", {path.string(), "", ""});

@@ -124,7 +124,8 @@ core::SurfaceMesh read_assimp_surface(const std::filesystem::path& path) {
                                  aiPrimitiveType_POINT | aiPrimitiveType_LINE);
         trial.ReadFile(file, flags);
       }))
-    throw core::InputError("the file is damaged: assimp crashes, hangs or exhausts its memory on it", {file, "", ""});
+    throw core::InputError(
+        "the file is damaged: assimp crashes, hangs or exhausts its memory on it", {file, "", ""});
   const aiScene* scene = importer.ReadFile(file, flags);
   if (scene == nullptr) {
     throw core::InputError(std::string("cannot read mesh: ") + importer.GetErrorString(),

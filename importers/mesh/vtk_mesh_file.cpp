@@ -59,8 +59,9 @@ vtkSmartPointer<vtkDataSet> read_dataset(const std::filesystem::path& path) {
   // VTK 9.1's XML and legacy readers can crash on damaged files (the tet_mesh_vtu and mesh_vtk
   // fuzz targets' findings): the read runs first in a forked child (core/crash_guard.h).
   if (!core::survives_in_child([&] { reader->Update(); }))
-    throw core::InputError("the file is damaged: VTK's reader crashes, hangs or exhausts its memory on it",
-                           {file, "", ""});
+    throw core::InputError(
+        "the file is damaged: VTK's reader crashes, hangs or exhausts its memory on it",
+        {file, "", ""});
   std::string error;
   try {
     VtkErrorCapture capture;  // reported once below, as a typed error

@@ -80,7 +80,9 @@ TEST(ImageReadInChild, a_child_that_crashes_or_returns_nothing_is_a_refusal) {
         },
         "crash.mha", "the test's reader");
   });
-  EXPECT_NE(crashed.find("the test's reader crashes, hangs or exhausts its memory on it"), std::string::npos) << crashed;
+  EXPECT_NE(crashed.find("the test's reader crashes, hangs or exhausts its memory on it"),
+            std::string::npos)
+      << crashed;
   const std::string empty = refusal([] {
     read_image_in_child([]() -> vtkImageData* { return nullptr; }, "empty.mha", "the reader");
   });

@@ -29,15 +29,16 @@ namespace fs = std::filesystem;
   gdcm::Trace::SetError(false);
   gdcm::Trace::SetDebug(false);
   // Assertion messages would reach the user's terminal: the parent reports instead. GDCM holds
-  // one file at a time; a 253-byte file made it take 3.7 GB (volume_dicom_file fuzz target), so
-  // the child is bounded by the largest file it parses.
+  // one file at a time: the child is bounded by the largest file it parses, and by no less than
+  // the default (a real 4 KB JPEG slice needs more than 1 GiB of address space in GDCM's codec).
+  // Still open: a 253-byte file makes it take 3.7 GB within that (volume_dicom_file fuzz target).
   std::uintmax_t largest = 0;
   for (std::size_t i = first; i < files.size(); ++i) {
     std::error_code error;
     const std::uintmax_t size = fs::file_size(files[i], error);
     if (!error) largest = std::max(largest, size);
   }
-  core::prepare_guard_child(core::guard_memory_for(largest));
+  core::prepare_guard_child(std::max(core::kGuardMemoryBytes, core::guard_memory_for(largest)));
   // GDCM catches a failed allocation and parses on (to an assertion the parent would meet
   // unbounded): here a failed allocation ends the child, which refuses the file.
   std::set_new_handler([] { ::_exit(3); });

@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -77,7 +78,15 @@ void copy_text(char* to, std::size_t capacity, const std::string& from) {
 /// True when a request of `size` bytes must fail; over the limit while armed, a finding.
 bool must_fail(std::size_t size) {
   if (size > viscera::fuzz::kImpossibleBytes) return true;
-  if (armed && size > viscera::fuzz::kAllocationLimitBytes) allocation_over_limit(size);
+  if (armed && size > viscera::fuzz::kAllocationLimitBytes) {
+    // A guard's child bounded below the request (core/crash_guard.h): the product's own limit
+    // refuses it, as the kernel would.
+    rlimit bound{};
+    if (::getrlimit(RLIMIT_AS, &bound) == 0 && bound.rlim_cur != RLIM_INFINITY &&
+        size > bound.rlim_cur)
+      return true;
+    allocation_over_limit(size);
+  }
   return false;
 }
 #endif

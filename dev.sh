@@ -15,6 +15,7 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 build="${VISCERA_BUILD_DIR:-$root/build}"
 jobs="$(nproc 2>/dev/null || echo 2)"
+test_timeout=600  # seconds per test without its own TIMEOUT
 # ccache keys on paths relative to the checkout, so every clone (CI's included) shares hits.
 export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$root}"
 
@@ -70,7 +71,7 @@ configure_and_build() {
       # maybe-uninitialized analysis reports libstdc++'s own std::regex state under the
       # sanitizers' instrumentation (a false positive, json_schema_validator.cpp): off here only.
       cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-        -DVISCERA_BUILD_BENCHMARKS=OFF \
+        -DVISCERA_BUILD_BENCHMARKS=OFF -DVISCERA_SANITIZE=ON \
         -DCMAKE_CXX_FLAGS="-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined -Wno-maybe-uninitialized" \
         -DCMAKE_C_FLAGS="-fsanitize=address,undefined -fno-omit-frame-pointer" \
         -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
@@ -122,7 +123,7 @@ run_tests() {
   if [ -z "${DISPLAY:-}" ] && command -v xvfb-run >/dev/null 2>&1; then
     runner=(xvfb-run -a -s "-screen 0 1280x1024x24")
   fi
-  "${runner[@]}" ctest --test-dir "$build" --output-on-failure -j "$jobs" --timeout 600
+  "${runner[@]}" ctest --test-dir "$build" --output-on-failure -j "$jobs" --timeout "$test_timeout"
 }
 
 # libFuzzer on the fuzz targets of tests/fuzz/: the project built with clang, coverage
@@ -215,7 +216,9 @@ case "${1:-}" in
       # allocation no memory can hold fails as it does without ASan (std::bad_alloc, which the
       # readers refuse as such) instead of ending the process.
       export ASAN_OPTIONS="detect_leaks=0:abort_on_error=1:allocator_may_return_null=1"
-      export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+      export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1:suppressions=$root/tools/sanitizers/ubsan.supp"
+      # ASan makes the long sessions (the 10-minute polypectomy runs) several times slower.
+      test_timeout=3000
     fi
     run_tests ;;
   build) configure_and_build ;;

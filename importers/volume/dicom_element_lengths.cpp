@@ -77,8 +77,9 @@ class ElementWalk {
   /// The group number at `at` (file meta elements are little endian).
   std::uint16_t group_at(std::uint64_t at) { return number16(&bytes(at, 2)[0], false); }
 
-  /// The header at `at`; `meta` for the file meta group, where an invalid VR is not followed.
-  Header header(std::uint64_t at, Syntax syntax, bool meta) {
+  /// The header at `at`. An element whose VR is not a VR is read as implicit VR (a 4-byte
+  /// length after the tag), as GDCM reads it, in the file meta group too.
+  Header header(std::uint64_t at, Syntax syntax) {
     const auto head = bytes(at, 8);
     Header h;
     h.tag = {number16(&head[0], syntax.big_endian), number16(&head[2], syntax.big_endian)};
@@ -97,7 +98,6 @@ class ElementWalk {
         }
         return h;
       }
-      if (meta) throw NotFollowed{};  // GDCM aborts on it; the parse guard refuses the file
     }
     h.length = number32(&head[4], syntax.big_endian);
     h.value = at + 8;
@@ -110,7 +110,7 @@ class ElementWalk {
                          bool until_item_end) {
     if (depth > kDepthLimit) throw NotFollowed{};
     while (at < end) {
-      const Header h = header(at, syntax, false);
+      const Header h = header(at, syntax);
       if (until_item_end && h.tag == kItemEnd) return h.value;
       if (h.tag.group == 0xfffe) throw NotFollowed{};
       at = value_end(h, at, end, syntax, depth);
@@ -184,7 +184,7 @@ class ElementWalk {
     if (after > end) throw NotFollowed{};  // runs past its item
     if (h.vr == "SQ") {
       for (std::uint64_t item = h.value; item < after;)
-        item = item_end(header(item, syntax, false), item, after, syntax, depth + 1, false);
+        item = item_end(header(item, syntax), item, after, syntax, depth + 1, false);
     }
     return after;
   }
@@ -195,7 +195,7 @@ class ElementWalk {
                       bool fragments) {
     if (depth > kDepthLimit) throw NotFollowed{};
     for (;;) {
-      const Header h = header(at, syntax, false);
+      const Header h = header(at, syntax);
       if (h.tag == kSequenceEnd) return h.value;
       if (fragments && !(h.tag == kItem)) {
         throw Refusal{"pixel data is damaged: encapsulated pixel data holds " + tag_text(h.tag) +
@@ -243,7 +243,7 @@ std::optional<std::string> dicom_length_problem(const fs::path& path) {
     std::uint64_t at = 132;
     std::string uid;
     while (walk.group_at(at) == 0x0002) {
-      const Header h = walk.header(at, meta, true);
+      const Header h = walk.header(at, meta);
       if (h.length == kUndefinedLength) throw NotFollowed{};
       if (h.length > size - h.value) {
         return "damaged DICOM data element " + tag_text(h.tag) + " at byte " + std::to_string(at) +

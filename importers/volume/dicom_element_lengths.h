@@ -10,14 +10,16 @@
 /// file meta group in explicit VR little endian, then the data set in the transfer syntax the
 /// group names (implicit or explicit VR, little or big endian). Values are not read, only tags
 /// and lengths; sequences and items of undefined length, and encapsulated pixel data fragments,
-/// are walked into. An element whose VR is not a VR is taken as implicit VR there, as GDCM does.
+/// are walked into. An element whose VR is not a VR is taken as implicit VR there, as GDCM does,
+/// in the file meta group too: a 253-byte file whose first meta element (0002,5800) has the VR
+/// bytes CD 0C made GDCM read its next four bytes as a length and ask for 3.76 GB (the
+/// volume_dicom_file finding of stop 18, tests/fuzz/regressions/volume_dicom_file/).
 /// Pixel data of undefined length is refused in a native (uncompressed) transfer syntax, and
 /// encapsulated pixel data must hold fragment items up to its delimiter (PS3.5 §A.4): GDCM
 /// would read the pixels on as elements (the fuzz finding of stop 16, a 12.9 KB big-endian slice
 /// whose pixels it read as a 4 GB element).
 /// Where the structure is not one the walk knows (no preamble, no transfer syntax, deflated
-/// data, a delimiter out of place, an invalid VR in the meta group, which GDCM's parse guard
-/// handles), it stops and leaves the file to GDCM.
+/// data, a delimiter out of place), it stops and leaves the file to GDCM and its parse guard.
 
 #include <filesystem>
 #include <optional>

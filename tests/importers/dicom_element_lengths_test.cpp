@@ -51,6 +51,22 @@ TEST(DicomElementLengths, native_pixels_of_undefined_length_are_refused_before_g
   EXPECT_TRUE(contains(message, file.string()) && contains(message, "(7FE0,0010)")) << message;
 }
 
+TEST(DicomElementLengths, a_meta_element_without_a_vr_is_read_as_gdcm_reads_it_and_refused) {
+  // Stop 18's finding: 253 bytes whose first meta element (0002,5800) has the VR bytes CD 0C.
+  // GDCM reads it as implicit VR, takes the next four bytes as its length (0xE0000CCD) and
+  // zero-filled 3.76 GB in the parse guard's child before it asserted.
+  const fs::path file =
+      testing::source_dir() /
+      "tests/fuzz/regressions/volume_dicom_file/meta_element_without_vr_declaring_gigabytes.dcm";
+  const auto problem = detail::dicom_length_problem(file);
+  ASSERT_TRUE(problem.has_value());
+  EXPECT_EQ(*problem,
+            "damaged DICOM data element (0002,5800) at byte 132 declares 3758099661 bytes, the "
+            "file holds 113 after it");
+  const std::string message = volume_read_error(file);
+  EXPECT_TRUE(contains(message, file.string()) && contains(message, "(0002,5800)")) << message;
+}
+
 TEST(DicomElementLengths, a_folder_is_read_without_the_file_and_lists_it_with_the_reason) {
   const fs::path folder = testing::scratch_dir() / "series";
   fs::create_directories(folder);

@@ -10,6 +10,9 @@
 #   ./dev.sh fuzz [TARGET…] [--seconds N]   libFuzzer (clang, ASan + UBSan) on every reader a user
 #                              can feed, N s per target (default 60), in build-fuzz/; findings in
 #                              build-fuzz/crashes/TARGET/ (tests/fuzz/README.md)
+#   ./dev.sh tsan    ThreadSanitizer in build-tsan/ over the session loop, a windowed session with
+#                              a 1 kHz UDP device, and the studio's background tasks
+#                              (tools/sanitizers/thread_check.sh); slow, not part of CI
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
@@ -196,6 +199,25 @@ run_fuzz() {
   fi
 }
 
+# ThreadSanitizer over the threads the project starts: configured in build-tsan/, only the
+# programs tools/sanitizers/thread_check.sh runs are built.
+run_tsan() {
+  install_missing_packages
+  local tsan_build="${VISCERA_TSAN_BUILD_DIR:-$root/build-tsan}"
+  if [ ! -f "$tsan_build/CMakeCache.txt" ]; then
+    say "configuring ThreadSanitizer in $tsan_build"
+    cmake -S "$root" -B "$tsan_build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+      -DCMAKE_CXX_FLAGS="-fsanitize=thread -fno-omit-frame-pointer" \
+      -DCMAKE_C_FLAGS="-fsanitize=thread -fno-omit-frame-pointer" \
+      -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=thread" -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=thread"
+  fi
+  say "building for ThreadSanitizer"
+  cmake --build "$tsan_build" -j "$jobs" --target viscera viscera-sim viscera_device_emulator \
+    viscera_sim_tests viscera_studio_background_tests viscera_studio_gui_tests \
+    viscera_studio_segmentation_tests
+  "$root/tools/sanitizers/thread_check.sh" "$tsan_build"
+}
+
 run_bench() {
   configure_and_build
   mkdir -p "$build/bench"
@@ -224,9 +246,10 @@ case "${1:-}" in
   build) configure_and_build ;;
   deps) install_missing_packages ;;
   bench) shift; run_bench "$@" ;;
+  tsan) run_tsan ;;
   fuzz) shift; run_fuzz "$@" ;;
   *)
-    echo "usage: ./dev.sh demo|test [--sanitize]|build|deps|bench|fuzz [TARGET…] [--seconds N]" >&2
+    echo "usage: ./dev.sh demo|test [--sanitize]|build|deps|bench|fuzz [TARGET…] [--seconds N]|tsan" >&2
     exit 2
     ;;
 esac

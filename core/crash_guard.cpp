@@ -62,27 +62,35 @@ void prepare_guard_child(std::uint64_t memory_bytes) {
   }
 }
 
+bool ended_by_alarm(int status) {
+  return WIFSIGNALED(status) && WTERMSIG(status) == SIGALRM;
+}
+
 bool survives_in_child(const std::function<void()>& attempt, std::uint64_t memory_bytes) {
-  const pid_t child = ::fork();
-  if (child < 0)
-    throw Error(std::string("cannot start a process to check the file: ") + std::strerror(errno));
-  if (child == 0) {
-    prepare_guard_child(memory_bytes);
-    ::signal(SIGALRM, SIG_DFL);
-    ::alarm(kGuardSeconds);  // a reader that loops is ended like one that crashes
-    try {
-      attempt();
-    } catch (const std::bad_alloc&) {  // past the limit: the parent must not try it unbounded
-      ::_exit(3);
-    } catch (...) {  // a refusal: the parent's own attempt reports it
+  for (int tries = 1;; ++tries) {
+    const pid_t child = ::fork();
+    if (child < 0) {
+      throw Error(std::string("cannot start a process to check the file: ") + std::strerror(errno));
     }
-    ::_exit(0);  // nothing of the parent's state (atexit handlers, buffered streams) runs twice
+    if (child == 0) {
+      prepare_guard_child(memory_bytes);
+      ::signal(SIGALRM, SIG_DFL);
+      ::alarm(kGuardSeconds);  // a reader that loops is ended like one that crashes
+      try {
+        attempt();
+      } catch (const std::bad_alloc&) {  // past the limit: the parent must not try it unbounded
+        ::_exit(3);
+      } catch (...) {  // a refusal: the parent's own attempt reports it
+      }
+      ::_exit(0);  // nothing of the parent's state (atexit handlers, buffered streams) runs twice
+    }
+    int status = 0;
+    while (::waitpid(child, &status, 0) < 0) {
+      if (errno != EINTR) return false;
+    }
+    if (ended_by_alarm(status) && tries < kGuardAttempts) continue;
+    return WIFEXITED(status) && WEXITSTATUS(status) == 0;
   }
-  int status = 0;
-  while (::waitpid(child, &status, 0) < 0) {
-    if (errno != EINTR) return false;
-  }
-  return WIFEXITED(status) && WEXITSTATUS(status) == 0;
 }
 
 }  // namespace viscera::core

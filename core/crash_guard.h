@@ -19,6 +19,18 @@ namespace viscera::core {
 /// ever on some damaged headers (the volume_minc fuzz target's timeout).
 inline constexpr unsigned kGuardSeconds = 10;
 
+/// How many times a guard starts a child that its alarm ended before it refuses the file. A fork
+/// copies only the calling thread, so a child can also wait for ever on a lock another thread of
+/// the parent held at that instant: GCC 12's AddressSanitizer allocator is not fork-safe (LLVM
+/// added its fork handlers in 2023, llvm-project pull request 75290; the sanitizer run's
+/// TetMeshRoundTrip children waited on it while a TBB worker allocated), nor is every library's
+/// own lock. Such a wait is rare and random where a reader's loop is not, so a second child
+/// tells them apart; a file that hangs its reader is refused after 2 × kGuardSeconds.
+inline constexpr int kGuardAttempts = 2;
+
+/// True when the wait status `status` says the guard's alarm (kGuardSeconds) ended the child.
+bool ended_by_alarm(int status);
+
 /// Address space a guard's child may add to what it inherited when the caller knows no better
 /// bound: a 384-byte NIfTI header made VTK's reader take 8.6 GB within the 10 s (volume_nifti fuzz
 /// target). A reader that knows the size it will allocate passes its own (guard_memory_for).
@@ -44,8 +56,8 @@ void prepare_guard_child(std::uint64_t memory_bytes = kGuardMemoryBytes);
 /// Runs `attempt` in a forked child process prepared by prepare_guard_child(memory_bytes), with
 /// an alarm after kGuardSeconds. True when the child finished (returned or threw: a clean refusal
 /// the caller will meet again), false when a signal ended it (a crash, an abort, a failed
-/// allocation past the limit, or kGuardSeconds passed). Throws core::Error when no child process
-/// can be started.
+/// allocation past the limit, or kGuardSeconds passed in each of kGuardAttempts children).
+/// Throws core::Error when no child process can be started.
 bool survives_in_child(const std::function<void()>& attempt,
                        std::uint64_t memory_bytes = kGuardMemoryBytes);
 

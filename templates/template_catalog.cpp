@@ -78,7 +78,10 @@ ParameterValues resolve_parameters(const ScenarioTemplate& scenario_template,
   const auto parameters = scenario_template.parameters();
   for (const auto& p : parameters)
     values[p.name] = p.default_value;
-  for (const auto& [name, text] : overrides) {
+  for (const auto& entry : overrides) {
+    // Named, not a structured binding: clang 14 (the fuzz build) cannot capture one in a lambda.
+    const std::string& name = entry.first;
+    const std::string& text = entry.second;
     const auto it = std::find_if(parameters.begin(), parameters.end(),
                                  [&](const TemplateParameter& p) { return p.name == name; });
     if (it == parameters.end()) {

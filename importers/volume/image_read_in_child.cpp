@@ -107,17 +107,33 @@ class ChildProcess {
 
   /// Waits for the child; true when it exited normally.
   bool wait() {
-    int status = 0;
-    while (::waitpid(pid_, &status, 0) < 0) {
-      if (errno != EINTR) break;
+    if (pid_ > 0) {
+      while (::waitpid(pid_, &status_, 0) < 0) {
+        if (errno != EINTR) break;
+      }
+      pid_ = -1;
     }
-    pid_ = -1;
-    return WIFEXITED(status);
+    return WIFEXITED(status_);
   }
+
+  /// After wait(): the guard's alarm ended the child.
+  bool timed_out() const { return core::ended_by_alarm(status_); }
 
  private:
   pid_t pid_;
+  int status_ = 0;
 };
+
+/// One child's read ended by the guard's alarm: it may have waited on a lock
+/// (core::kGuardAttempts).
+struct TimedOut {};
+
+/// The refusal of a file whose reader crashed, hung or ran out of memory in every child.
+core::InputError crashed(const std::string& file, const std::string& reader) {
+  return core::InputError(
+      "the file is damaged: " + reader + " crashes, hangs or exhausts its memory on it",
+      {file, "", ""});
+}
 
 /// Closes a pipe end on every path.
 struct PipeEnd {
@@ -127,12 +143,10 @@ struct PipeEnd {
   }
 };
 
-}  // namespace
-
-vtkSmartPointer<vtkImageData> read_image_in_child(const std::function<vtkImageData*()>& read,
-                                                  const std::string& file,
-                                                  const std::string& reader,
-                                                  std::uint64_t memory_bytes) {
+/// One child's read (read_image_in_child); throws TimedOut when the alarm ended the child.
+vtkSmartPointer<vtkImageData> read_once(const std::function<vtkImageData*()>& read,
+                                        const std::string& file, const std::string& reader,
+                                        std::uint64_t memory_bytes) {
   int ends[2];
   if (::pipe(ends) != 0)
     throw core::Error(std::string("cannot start a process to read the file: ") +
@@ -154,13 +168,16 @@ vtkSmartPointer<vtkImageData> read_image_in_child(const std::function<vtkImageDa
   ::close(to_parent.fd);
   to_parent.fd = -1;
 
-  const core::InputError crashed(
-      "the file is damaged: " + reader + " crashes, hangs or exhausts its memory on it",
-      {file, "", ""});
+  const core::InputError crashed_error = crashed(file, reader);
+  // After the child was waited for: the error, or TimedOut for another try.
+  const auto ended = [&]() -> const core::InputError& {
+    if (child.timed_out()) throw TimedOut{};
+    return crashed_error;
+  };
   char kind = 0;
   if (!read_all(from_child.fd, &kind, 1)) {
     child.wait();
-    throw crashed;
+    throw ended();
   }
   if (kind == kRefused) {
     std::uint32_t length = 0;
@@ -169,13 +186,14 @@ vtkSmartPointer<vtkImageData> read_image_in_child(const std::function<vtkImageDa
       reason.resize(length);
       if (!read_all(from_child.fd, reason.data(), length)) reason.clear();
     }
-    if (!child.wait() || reason.empty()) throw crashed;
+    if (!child.wait()) throw ended();
+    if (reason.empty()) throw crashed_error;
     throw core::InputError(reason, {file, "", ""});
   }
   ImageHeader header{};
   if (kind != kImage || !read_all(from_child.fd, &header, sizeof header)) {
     child.wait();
-    throw crashed;
+    throw ended();
   }
   // The numbers come from a process that ran a damaged file: checked before they size anything.
   std::uint64_t voxels = 1;
@@ -192,14 +210,32 @@ vtkSmartPointer<vtkImageData> read_image_in_child(const std::function<vtkImageDa
   if (scalars == nullptr || header.components < 1 ||
       header.bytes != voxels * static_cast<std::uint64_t>(header.components) *
                           static_cast<std::uint64_t>(scalars->GetDataTypeSize()))
-    throw crashed;
+    throw crashed_error;
   scalars->SetNumberOfComponents(header.components);
   if (!scalars->SetNumberOfValues(static_cast<vtkIdType>(voxels) * header.components))
     throw core::InputError("the image is larger than memory can hold", {file, "", ""});
-  if (!read_all(from_child.fd, scalars->GetVoidPointer(0), header.bytes) || !child.wait())
-    throw crashed;
+  if (!read_all(from_child.fd, scalars->GetVoidPointer(0), header.bytes)) {
+    child.wait();
+    throw ended();
+  }
+  if (!child.wait()) throw ended();
   image->GetPointData()->SetScalars(scalars);
   return image;
+}
+
+}  // namespace
+
+vtkSmartPointer<vtkImageData> read_image_in_child(const std::function<vtkImageData*()>& read,
+                                                  const std::string& file,
+                                                  const std::string& reader,
+                                                  std::uint64_t memory_bytes) {
+  for (int tries = 1;; ++tries) {
+    try {
+      return read_once(read, file, reader, memory_bytes);
+    } catch (const TimedOut&) {
+      if (tries == core::kGuardAttempts) throw crashed(file, reader);
+    }
+  }
 }
 
 }  // namespace viscera::importers::detail

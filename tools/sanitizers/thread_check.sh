@@ -32,10 +32,11 @@ step "session loop unit tests under ThreadSanitizer"
 step "a windowed session with a 1 kHz UDP device under ThreadSanitizer"
 "$bin/viscera" new --template hysteroscopy --seed 1 -o "$work/h.vscene" > /dev/null
 port="$(python3 -c 'import socket; s = socket.socket(socket.AF_INET, socket.SOCK_DGRAM); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')"
-"${display[@]}" "$bin/viscera-sim" run "$work/h.vscene" --width 320 --height 240 --duration 4 \
+# One simulated second takes about 30 s under TSan; the device sends for 15 s of it.
+"${display[@]}" "$bin/viscera-sim" run "$work/h.vscene" --width 320 --height 240 --duration 1 \
   --input "udp:$port" --report "$work/report" &
 session=$!
-"$bin/viscera_device_emulator" --port "$port" --package "$work/h.vscene" --seconds 6 > "$work/device.json"
+"$bin/viscera_device_emulator" --port "$port" --package "$work/h.vscene" --seconds 15 > "$work/device.json"
 wait "$session"
 python3 - "$work/device.json" <<'PY'
 import json, sys

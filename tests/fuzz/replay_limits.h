@@ -18,14 +18,20 @@
 #include <filesystem>
 #include <string>
 
+#include "core/crash_guard.h"
+
 namespace viscera::fuzz {
 
 /// libFuzzer's default -malloc_limit_mb (its -rss_limit_mb, 2048).
 inline constexpr std::size_t kAllocationLimitBytes = std::size_t{2048} << 20;
 /// 1 TiB: more than any machine here holds.
 inline constexpr std::size_t kImpossibleBytes = std::size_t{1} << 40;
-/// Far above the slowest seed (well under a second).
-inline constexpr unsigned kSecondsPerInput = 20;
+/// Far above the slowest seed (well under a second), and above what a reader's crash guard may
+/// take to refuse a file that hangs its library (core::kGuardAttempts children of
+/// core::kGuardSeconds each): under ASan, where guards do not limit memory, the NIfTI finding's
+/// child fills gigabytes until its alarm, twice, and the replay's former 20 s ended the input
+/// the guard was about to refuse.
+inline constexpr unsigned kSecondsPerInput = core::kGuardAttempts * core::kGuardSeconds + 20;
 
 /// Makes the replay its own process group and names the note file (in `scratch`).
 void start_replay_limits(const std::filesystem::path& scratch);

@@ -181,13 +181,8 @@ std::uint64_t native_pixel_bytes(const fs::path& path, std::uint64_t expected) {
 
 /// Refuses, naming the file, what GDCM 3.0 cannot read without failing an assertion.
 void check_readable(const DicomHeader& header) {
-  const std::string file = header.file.string();
-  if (header.modality == "RTDOSE" && !header.has_number_of_frames) {
-    throw core::InputError(
-        "RT Dose file without Number of Frames (0028,0008), which GDCM 3.0 "
-        "needs to read it",
-        {file, "", ""});
-  }
+  if (auto reason = gdcm_cannot_read(header))
+    throw core::InputError(*reason, {header.file.string(), "", ""});
 }
 
 /// Refuses, before any voxel is allocated, a file of uncompressed pixel data smaller than the
@@ -413,14 +408,15 @@ LoadedVolume read_dicom(const fs::path& path, const VolumeReadOptions& options) 
   // GDCM allocates each value at its declared length before reading it: lengths first.
   if (const auto problem = dicom_length_problem(path))
     throw core::InputError(*problem, {path.string(), "", ""});
-  if (!gdcm_parses_without_abort({path}).front())
-    throw core::InputError(kGdcmAbortReason, {path.string(), "", ""});
+  const GdcmGuardResult guard = gdcm_reads_without_abort({path}).front();
+  if (!guard.parses) throw core::InputError(kGdcmAbortReason, {path.string(), "", ""});
   DicomHeader header;
   if (!read_dicom_header(path, header)) {
     throw core::InputError(
         "not a DICOM image (GDCM finds no readable header with rows and columns)",
         {path.string(), "", ""});
   }
+  header.image_reader_aborts = !guard.image_reads;
   assemble({header}, 1.0, options, path.string(), loaded);
   return loaded;
 }

@@ -128,6 +128,13 @@ bool read_dicom_header(const fs::path& file, DicomHeader& header) {
   return true;
 }
 
+std::optional<std::string> gdcm_cannot_read(const DicomHeader& header) {
+  if (header.modality == "RTDOSE" && !header.has_number_of_frames)
+    return "RT Dose file without Number of Frames (0028,0008), which GDCM 3.0 needs to read it";
+  if (header.image_reader_aborts) return kGdcmAbortReason;
+  return std::nullopt;
+}
+
 std::vector<std::vector<DicomHeader>> dicom_series_in(const fs::path& folder,
                                                       std::vector<SkippedFile>& skipped) {
   gdcm::Directory directory;
@@ -142,15 +149,21 @@ std::vector<std::vector<DicomHeader>> dicom_series_in(const fs::path& folder,
     else
       files.emplace_back(name);
   }
-  const std::vector<bool> parses = gdcm_parses_without_abort(files);
+  const std::vector<GdcmGuardResult> guard = gdcm_reads_without_abort(files);
   std::map<std::string, std::vector<DicomHeader>> by_uid;
   for (std::size_t f = 0; f < files.size(); ++f) {
-    if (!parses[f]) {
+    if (!guard[f].parses) {
       skipped.push_back({files[f], kGdcmAbortReason});
       continue;
     }
     DicomHeader header;
-    if (read_dicom_header(files[f], header)) by_uid[header.series_uid].push_back(std::move(header));
+    if (!read_dicom_header(files[f], header)) continue;  // not an image: not part of a series
+    header.image_reader_aborts = !guard[f].image_reads;
+    if (auto reason = gdcm_cannot_read(header)) {
+      skipped.push_back({files[f], std::move(*reason)});
+      continue;
+    }
+    by_uid[header.series_uid].push_back(std::move(header));
   }
   if (by_uid.empty()) {
     const std::string damaged =

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,15 +28,21 @@ struct DicomHeader {
   std::string photometric;  ///< Photometric Interpretation, e.g. "MONOCHROME2", "YBR_FULL_422"
   core::Vec3 position = core::Vec3::Zero();  ///< Image Position (Patient), mm
   core::Vec3 row_direction = core::Vec3::UnitX(), column_direction = core::Vec3::UnitY();
+  bool image_reader_aborts = false;  ///< GDCM's image reader aborted on it in the guard's child
 };
+
+/// Why GDCM's image reader cannot read `header`'s file, or nothing: an RT Dose file without
+/// Number of Frames (0028,0008), which GDCM 3.0 needs, or an image read that aborted in the
+/// guard's child (gdcm_parse_guard.h).
+std::optional<std::string> gdcm_cannot_read(const DicomHeader& header);
 
 /// Reads the header of `file`; false (and no throw) when it is not a DICOM image.
 bool read_dicom_header(const std::filesystem::path& file, DicomHeader& header);
 
 /// The image files of `folder` and its sub-folders grouped by Series Instance UID, the series
 /// with the most files first (ties by UID, so the choice is deterministic). Files with an element
-/// length the file cannot hold (dicom_element_lengths.h) or whose parse aborts GDCM
-/// (gdcm_parse_guard.h) are left out and listed in `skipped`. Throws
+/// length the file cannot hold (dicom_element_lengths.h), whose parse aborts GDCM, or images GDCM
+/// cannot read (gdcm_cannot_read) are left out and listed in `skipped`. Throws
 /// core::InputError naming the folder when it holds no DICOM image.
 std::vector<std::vector<DicomHeader>> dicom_series_in(const std::filesystem::path& folder,
                                                       std::vector<SkippedFile>& skipped);

@@ -1,6 +1,7 @@
 #include "importers/volume/gdcm_parse_guard.h"
 
 #include <fcntl.h>
+#include <gdcmImageReader.h>
 #include <gdcmReader.h>
 #include <gdcmTrace.h>
 #include <signal.h>
@@ -22,9 +23,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// The child's side: announces each file's index on `out` before parsing it, then -1 when all
-/// are done, and leaves with _exit so nothing of the parent's state (atexit handlers, buffered
-/// streams) runs twice.
+/// The child's side: announces each file's stage on `out` before it runs — 2i before the parse
+/// of file i, 2i + 1 before its image read — then -1 when all are done, and leaves with _exit so
+/// nothing of the parent's state (atexit handlers, buffered streams) runs twice.
 [[noreturn]] void parse_in_child(const std::vector<fs::path>& files, std::size_t first, int out) {
   gdcm::Trace::SetWarning(false);
   gdcm::Trace::SetError(false);
@@ -43,13 +44,26 @@ namespace fs = std::filesystem;
   // unbounded): here a failed allocation ends the child, which refuses the file.
   std::set_new_handler([] { ::_exit(3); });
   ::signal(SIGALRM, SIG_DFL);
+  const auto announce = [out](std::int64_t stage) {
+    if (::write(out, &stage, sizeof stage) != sizeof stage) ::_exit(2);
+  };
   for (std::size_t i = first; i < files.size(); ++i) {
     const auto index = static_cast<std::int64_t>(i);
-    if (::write(out, &index, sizeof index) != sizeof index) ::_exit(2);
-    ::alarm(core::kGuardSeconds);  // each file's parse: one that hangs is refused like a crash
-    gdcm::Reader reader;
-    reader.SetFileName(files[i].string().c_str());
-    reader.Read();
+    const std::string name = files[i].string();
+    announce(2 * index);
+    ::alarm(core::kGuardSeconds);  // each read: one that hangs is refused like a crash
+    gdcm::Reader parser;
+    parser.SetFileName(name.c_str());
+    const bool parsed = parser.Read();
+    announce(2 * index + 1);
+    ::alarm(core::kGuardSeconds);
+    // The image reader, as the parent reads an image: it parses the data elements again and then
+    // interprets the image's attributes (spacing, origin, pixel format), where GDCM asserts too.
+    if (parsed) {
+      gdcm::ImageReader reader;
+      reader.SetFileName(name.c_str());
+      reader.Read();
+    }
   }
   const std::int64_t done = -1;
   const bool written = ::write(out, &done, sizeof done) == sizeof done;
@@ -73,10 +87,11 @@ std::int64_t last_announced(int in) {
 
 }  // namespace
 
-std::vector<bool> gdcm_parses_without_abort(const std::vector<fs::path>& files) {
-  std::vector<bool> survives(files.size(), true);
+std::vector<GdcmGuardResult> gdcm_reads_without_abort(const std::vector<fs::path>& files) {
+  std::vector<GdcmGuardResult> results(files.size());
   std::size_t first = 0;
-  // The file whose child the alarm ended once: it is parsed once more (core::kGuardAttempts).
+  // The stage whose child the alarm ended once: its file is read once more
+  // (core::kGuardAttempts).
   std::int64_t timed_out_once = -1;
   while (first < files.size()) {
     int channel[2];
@@ -100,16 +115,18 @@ std::vector<bool> gdcm_parses_without_abort(const std::vector<fs::path>& files) 
     const bool finished = WIFEXITED(status) && WEXITSTATUS(status) == 0 && last == -1;
     if (finished) break;
     if (last < 0) throw core::Error("the process checking DICOM files failed to report");
+    const auto file = static_cast<std::size_t>(last / 2);
     if (core::ended_by_alarm(status) && last != timed_out_once) {
       static_assert(core::kGuardAttempts == 2, "one more child for a file that timed out");
       timed_out_once = last;
-      first = static_cast<std::size_t>(last);
+      first = file;
       continue;
     }
-    survives[static_cast<std::size_t>(last)] = false;
-    first = static_cast<std::size_t>(last) + 1;
+    results[file].image_reads = false;
+    if (last % 2 == 0) results[file].parses = false;
+    first = file + 1;
   }
-  return survives;
+  return results;
 }
 
 }  // namespace viscera::importers::detail

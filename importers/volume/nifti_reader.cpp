@@ -12,6 +12,7 @@
 #include "core/error.h"
 #include "importers/volume/format_readers.h"
 #include "importers/volume/image_read_in_child.h"
+#include "importers/volume/nifti_header.h"
 #include "importers/volume/volume_geometry.h"
 #include "importers/vtk_error_capture.h"
 
@@ -59,6 +60,7 @@ double millimetres_per_unit(int xyzt_units, std::vector<std::string>& notes) {
 
 LoadedVolume read_nifti(const fs::path& path, const VolumeReadOptions& options) {
   const std::string file = path.string();
+  check_nifti_header(path);  // VTK's own check of these fields is not repeatable
   vtkNew<vtkNIFTIImageReader> reader;
   reader->SetFileName(file.c_str());
   const std::uint64_t declared = check_reader_budget(*reader, options, file);

@@ -96,7 +96,14 @@ std::uint64_t check_reader_budget(vtkImageReader2& reader, const VolumeReadOptio
                                          std::int64_t{extent[5]} - extent[4] + 1};
   const int type = vtkImageData::GetScalarType(info);
   const int components = vtkImageData::GetNumberOfScalarComponents(info);
-  return check_voxel_budget(dims, components, vtkDataArray::GetDataTypeSize(type), options, file);
+  int type_size = 0;
+  {
+    VtkErrorCapture capture;  // VTK warns on the terminal about a type it does not know
+    type_size = vtkDataArray::GetDataTypeSize(type);
+  }
+  if (type_size <= 0)
+    throw core::InputError("the header declares a voxel type VTK cannot hold", {file, "", ""});
+  return check_voxel_budget(dims, components, type_size, options, file);
 }
 
 core::ImageVolume volume_from_vtk_image(vtkImageData& image, const std::string& file,

@@ -42,6 +42,21 @@ TEST(DamagedDicom, a_file_that_aborts_gdcm_is_refused_naming_it_and_the_reader_s
   }
 }
 
+TEST(DamagedDicom, a_file_whose_spacing_aborts_gdcms_image_reader_is_refused_naming_it) {
+  // Stop 20's volume_dicom_file finding: GDCM parses the file's elements, then asserts in
+  // ImageHelper::GetSpacingValue while its image reader interprets them.
+  const fs::path file = testing::source_dir() /
+                        "tests/fuzz/regressions/volume_dicom_file/"
+                        "spacing_that_gdcm_image_helper_asserts_on.dcm";
+  try {
+    importers::read_volume(file);
+    FAIL() << "the damaged file was read";
+  } catch (const core::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(file.string()), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("GDCM aborts or hangs"), std::string::npos) << e.what();
+  }
+}
+
 TEST(DamagedDicom, a_folder_is_read_without_the_files_that_abort_gdcm_and_lists_them) {
   const fs::path dir = testing::scratch_dir();
   const fs::path folder = dir / "series";

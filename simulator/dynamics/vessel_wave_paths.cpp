@@ -8,6 +8,7 @@
 #include <unordered_map>
 
 #include "core/error.h"
+#include "core/scenario/vessel_paths.h"
 
 namespace viscera::sim {
 namespace {
@@ -88,39 +89,12 @@ std::pair<double, double> distance_to_axis(const core::Vec3& p, const core::Vec3
 }  // namespace
 
 std::vector<double> proximal_arc_lengths(const core::VesselTree& tree) {
-  const int n = static_cast<int>(tree.segments.size());
-  for (int s = 0; s < n; ++s) {
-    const int parent = tree.segments[static_cast<std::size_t>(s)].parent;
-    if (parent < -1 || parent >= n || parent == s) {
-      throw core::InputError("vessel tree \"" + tree.id + "\": segment " + std::to_string(s) +
-                                 " names parent " + std::to_string(parent) +
-                                 ", which is not a segment of the tree",
-                             {"", "", tree.id});
-    }
-  }
-  std::vector<double> arc(static_cast<std::size_t>(n), -1.0);
-  for (int s = 0; s < n; ++s) {
-    // Walk up to a segment whose arc is known (or a root), then back down.
-    std::vector<int> path;
-    int at = s;
-    while (at >= 0 && arc[static_cast<std::size_t>(at)] < 0.0) {
-      if (static_cast<int>(path.size()) > n) {
-        throw core::InputError("vessel tree \"" + tree.id + "\": the parents of segment " +
-                                   std::to_string(s) + " form a cycle, so it has no root",
-                               {"", "", tree.id});
-      }
-      path.push_back(at);
-      at = tree.segments[static_cast<std::size_t>(at)].parent;
-    }
-    for (auto it = path.rbegin(); it != path.rend(); ++it) {
-      const auto& segment = tree.segments[static_cast<std::size_t>(*it)];
-      if (segment.parent < 0) {
-        arc[static_cast<std::size_t>(*it)] = 0.0;
-      } else {
-        const auto& parent = tree.segments[static_cast<std::size_t>(segment.parent)];
-        arc[static_cast<std::size_t>(*it)] = arc[static_cast<std::size_t>(segment.parent)] +
-                                             (parent.distal - parent.proximal).norm();
-      }
+  const std::vector<std::vector<int>> paths = core::vessel_root_paths(tree);
+  std::vector<double> arc(paths.size(), 0.0);
+  for (std::size_t s = 0; s < paths.size(); ++s) {
+    for (std::size_t i = 0; i + 1 < paths[s].size(); ++i) {
+      const auto& ancestor = tree.segments[static_cast<std::size_t>(paths[s][i])];
+      arc[s] += (ancestor.distal - ancestor.proximal).norm();
     }
   }
   return arc;

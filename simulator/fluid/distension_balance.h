@@ -14,6 +14,18 @@
 /// regime (below or above P_abs); step() solves it exactly, splitting the step where P crosses
 /// P_abs, and integrates the three flows exactly. Hence the balance
 /// used − drained − absorbed = C (P_end − P_start) holds to rounding for any step length.
+///
+/// Opened vessels (issue 18 §3–4) add one linear path each between the cavity and the blood
+/// behind the opening, G_v (P_v − P): below the vessel's pressure blood enters the cavity
+/// (bleeding), above it distension fluid enters the circulation (intravasation). One path in both
+/// directions is the trade-off of seed 000 §1.1.4 — raising the pressure stops a small bleed and
+/// "potentially aggravates the previously mentioned intravasation problems". The seeds state no
+/// intravasation model; this one makes it grow with the pressure above the vessel's and, through
+/// G_v, with the opened vessel's size. The step splits wherever P crosses a vessel pressure, so
+/// bled and intravasated volumes are exact too, and
+/// used + bled − drained − absorbed − intravasated = C (P_end − P_start).
+
+#include <vector>
 
 #include "core/scenario/scenario_parts.h"
 
@@ -42,15 +54,30 @@ struct DistensionChannels {
   static double poiseuille_conductance(double radius, double length, double viscosity);
 };
 
+/// An opened vessel (or a cut's capillary bed) as the cavity sees it: a conductance between the
+/// cavity and the blood pressure behind the opening.
+struct VesselOpening {
+  double conductance = 0.0;  ///< m³ s⁻¹ Pa⁻¹, ≥ 0 (0: closed by a clip or coagulation)
+  double pressure = 0.0;     ///< Pa, the blood's pressure behind the opening
+
+  bool operator==(const VesselOpening&) const = default;
+};
+
 /// Volumes exchanged so far, m³, and the pressure history's extremes.
 struct FluidTotals {
   double used = 0.0;                  ///< delivered by the pump through the inflow channel
   double drained = 0.0;               ///< collected through the outflow channel
-  double absorbed = 0.0;              ///< lost through the ostia and into the circulation
+  double absorbed = 0.0;              ///< lost through the ostia and the tissue
+  double bled = 0.0;                  ///< blood that entered the cavity through opened vessels
+  double intravasated = 0.0;          ///< fluid that entered the circulation through them
   double max_pressure = 0.0;          ///< Pa
   double time_above_threshold = 0.0;  ///< s with the pressure above the absorption threshold
-  /// The clinical fluid deficit: used − drained (what is in the patient: cavity and absorbed).
+  /// The clinical fluid deficit: used − drained, what the fluid-management system shows (the
+  /// drained fluid carries the blood that entered, so it is short of the patient's uptake by the
+  /// blood loss while the cavity holds the rest).
   double deficit() const { return used - drained; }
+  /// Distension fluid the patient took up: absorbed through tissue and ostia plus intravasated.
+  double uptake() const { return absorbed + intravasated; }
 };
 
 /// The cavity's fluid state, advanced step by step.
@@ -61,8 +88,17 @@ class DistensionBalance {
   /// not positive.
   explicit DistensionBalance(const core::FluidSpec& fluid, DistensionChannels channels = {});
 
-  /// Advances `dt` s with the valve openings (clamped to [0, 1]) held over the step.
+  /// Advances `dt` s with the valve openings (clamped to [0, 1]) and the vessel openings held
+  /// over the step.
   void step(double inflow_opening, double outflow_opening, double dt);
+
+  /// Replaces the opened vessels (the bleeding model's current set). Throws core::UsageError for
+  /// a negative or non-finite conductance or pressure.
+  void set_openings(std::vector<VesselOpening> openings);
+  const std::vector<VesselOpening>& openings() const { return openings_; }
+  /// Per opening, the volume that passed it in the last step, m³: positive for blood that
+  /// entered the cavity, negative for fluid that left into the circulation.
+  const std::vector<double>& last_step_volumes() const { return last_step_volumes_; }
 
   double pressure() const { return pressure_; }  ///< Pa
   /// m³ of fluid in the cavity, V₀ + C·P.
@@ -74,13 +110,19 @@ class DistensionBalance {
   const DistensionChannels& channels() const { return channels_; }
 
  private:
-  /// Solves one regime exactly over `dt`: returns the end pressure and adds the flows.
-  double advance_regime(double g_in, double g_out, bool absorbing, double dt);
+  struct Regime;
+  /// The linear regime in force at the current pressure for these valve conductances.
+  Regime regime(double g_in, double g_out) const;
+  /// Solves `regime` exactly over `dt` (no pressure of an opening or of the absorption threshold
+  /// crossed inside it), moves the pressure there and adds the flows.
+  void advance(const Regime& regime, double dt);
 
   core::FluidSpec fluid_;
   DistensionChannels channels_;
   double pressure_ = 0.0;
   FluidTotals totals_;
+  std::vector<VesselOpening> openings_;
+  std::vector<double> last_step_volumes_;
 };
 
 }  // namespace viscera::sim

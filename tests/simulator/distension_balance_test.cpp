@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <vector>
 
 #include "core/error.h"
 
@@ -24,7 +25,8 @@ core::FluidSpec saline() {
 /// or absorbed. Exact for any step, so any drift is a defect of step().
 double balance_error(const DistensionBalance& cavity) {
   const FluidTotals& t = cavity.totals();
-  return t.used - t.drained - t.absorbed - cavity.channels().cavity_compliance * cavity.pressure();
+  return t.used + t.bled - t.drained - t.absorbed - t.intravasated -
+         cavity.channels().cavity_compliance * cavity.pressure();
 }
 
 TEST(DistensionBalance, channel_conductance_is_hagen_poiseuille_and_gives_clinical_flow) {
@@ -97,6 +99,36 @@ TEST(DistensionBalance, volume_is_conserved_over_a_ten_minute_session_of_valve_c
   EXPECT_NEAR(balance_error(cavity), 0.0, 1e-12 * t.used);
   EXPECT_NEAR(t.deficit(), cavity.channels().cavity_compliance * cavity.pressure() + t.absorbed,
               1e-12 * t.used);
+}
+
+TEST(DistensionBalance, an_opened_vessel_bleeds_below_its_pressure_and_takes_fluid_above_it) {
+  // A cut artery (85 mmHg) and a capillary bed (25 mmHg) while the pump fills the cavity at
+  // 100 mmHg: bleeding first, intravasation once the cavity passes each vessel's pressure. The
+  // split at each crossing makes the result independent of the step.
+  const std::vector<VesselOpening> openings{{2.0e-11, 11300.0}, {4.0e-12, 3300.0}};
+  DistensionBalance fine(saline()), coarse(saline());
+  fine.set_openings(openings);
+  coarse.set_openings(openings);
+  for (int i = 0; i < 30000; ++i)
+    fine.step(1.0, 0.05, 1e-3);  // 30 s
+  for (int i = 0; i < 6; ++i)
+    coarse.step(1.0, 0.05, 5.0);
+  const FluidTotals& t = fine.totals();
+  ASSERT_GT(fine.pressure(), 11300.0);
+  EXPECT_GT(t.bled, 0.0);
+  EXPECT_GT(t.intravasated, 0.0);
+  EXPECT_NEAR(balance_error(fine), 0.0, 1e-12 * t.used);
+  EXPECT_NEAR(balance_error(coarse), 0.0, 1e-12 * t.used);
+  EXPECT_NEAR(coarse.pressure(), fine.pressure(), 1e-7 * fine.pressure());
+  EXPECT_NEAR(coarse.totals().bled, t.bled, 1e-7 * t.bled);
+  EXPECT_NEAR(coarse.totals().intravasated, t.intravasated, 1e-7 * t.intravasated);
+  // The last step's volumes are what each path passed: both take fluid now.
+  ASSERT_EQ(coarse.last_step_volumes().size(), 2u);
+  EXPECT_LT(coarse.last_step_volumes()[0], 0.0);
+  EXPECT_LT(coarse.last_step_volumes()[1], 0.0);
+  EXPECT_NEAR(t.uptake(), t.absorbed + t.intravasated, 0.0);
+
+  EXPECT_THROW(fine.set_openings({{-1.0, 100.0}}), core::UsageError);
 }
 
 TEST(DistensionBalance, closed_valves_hold_the_pressure_and_absorption_stops_at_its_threshold) {

@@ -1,0 +1,126 @@
+#include "simulator/fluid/bleeding_sources.h"
+
+#include <cmath>
+#include <utility>
+
+namespace viscera::sim::fluid {
+namespace {
+
+/// Ooze below this fraction of its opening rate counts as clotted.
+constexpr double kClottedFraction = 0.01;
+
+}  // namespace
+
+BleedingSources::BleedingSources(BleedingPhysiology physiology)
+    : physiology_(std::move(physiology)) {}
+
+int BleedingSources::add_cut(int body, std::span<const core::VesselTree> trees,
+                             std::span<const core::Vec3> nodes,
+                             std::span<const core::Triangle> triangles, double time) {
+  int added = 0;
+  for (const core::VesselTree& tree : trees) {
+    for (OpenedVessel& vessel : find_opened_vessels(tree, nodes, triangles, physiology_)) {
+      BleedingSource source;
+      source.vessel_tree = tree.id;
+      source.segment = vessel.segment;
+      source.path = std::move(vessel.path);
+      source.radius = vessel.radius;
+      source.level = vessel.level;
+      source.body = body;
+      source.nodes = triangles[static_cast<std::size_t>(vessel.triangle)];
+      source.barycentric = vessel.barycentric;
+      source.opened_at = time;
+      source.conductance = vessel.conductance;
+      source.pressure = vessel.pressure;
+      sources_.push_back(std::move(source));
+      ++added;
+    }
+  }
+  const double area = 0.5 * triangles_area(nodes, triangles);
+  if (area > 0.0) {
+    BleedingSource ooze;
+    ooze.capillary = true;
+    ooze.area = area;
+    ooze.body = body;
+    double largest = -1.0;
+    for (const core::Triangle& t : triangles) {
+      const double a = triangles_area(nodes, std::span<const core::Triangle>(&t, 1));
+      if (a > largest) {
+        largest = a;
+        ooze.nodes = t;
+      }
+    }
+    ooze.opened_at = time;
+    ooze.conductance = physiology_.capillary_conductance * area;
+    ooze.pressure = physiology_.capillary_pressure;
+    sources_.push_back(std::move(ooze));
+  }
+  return added;
+}
+
+std::vector<VesselOpening> BleedingSources::openings(double time) {
+  std::vector<VesselOpening> openings;
+  openings.reserve(sources_.size());
+  for (BleedingSource& source : sources_) {
+    double conductance = source.conductance;
+    if (source.capillary && source.stop == BleedingStop::Bleeding) {
+      const double decay = std::exp(-(time - source.opened_at) / physiology_.ooze_time_constant);
+      if (decay < kClottedFraction) stop(source, BleedingStop::Clotted, time);
+      conductance *= decay;
+    }
+    if (source.stop != BleedingStop::Bleeding) conductance = 0.0;
+    openings.push_back({conductance, source.pressure});
+  }
+  return openings;
+}
+
+void BleedingSources::record_step(std::span<const double> volumes) {
+  for (std::size_t i = 0; i < volumes.size() && i < sources_.size(); ++i) {
+    if (volumes[i] >= 0.0)
+      sources_[i].bled += volumes[i];
+    else
+      sources_[i].intravasated -= volumes[i];
+  }
+}
+
+int BleedingSources::coagulate(const core::Vec3& tip, double radius,
+                               std::span<const core::Vec3> sites, double time) {
+  int stopped = 0;
+  for (std::size_t i = 0; i < sources_.size() && i < sites.size(); ++i) {
+    if (sources_[i].stop == BleedingStop::Bleeding && (sites[i] - tip).norm() <= radius) {
+      stop(sources_[i], BleedingStop::Coagulated, time);
+      ++stopped;
+    }
+  }
+  return stopped;
+}
+
+int BleedingSources::clip(const std::string& vessel_tree, int segment, double time) {
+  int stopped = 0;
+  for (BleedingSource& source : sources_) {
+    if (source.capillary || source.stop != BleedingStop::Bleeding ||
+        source.vessel_tree != vessel_tree)
+      continue;
+    for (const int on_path : source.path) {
+      if (on_path == segment) {
+        stop(source, BleedingStop::Clipped, time);
+        ++stopped;
+        break;
+      }
+    }
+  }
+  return stopped;
+}
+
+void BleedingSources::stop(BleedingSource& source, BleedingStop why, double time) {
+  source.stop = why;
+  source.stopped_at = time;
+}
+
+core::Vec3 site_position(const BleedingSource& source, std::span<const core::Vec3> positions) {
+  return source.barycentric.x() * positions[static_cast<std::size_t>(source.nodes[0])] +
+         source.barycentric.y() * positions[static_cast<std::size_t>(source.nodes[1])] +
+         source.barycentric.z() * positions[static_cast<std::size_t>(source.nodes[2])];
+}
+
+}  // namespace viscera::sim::fluid

@@ -1,0 +1,104 @@
+#include "simulator/fluid/blood_particles.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "core/error.h"
+
+namespace viscera::sim::fluid {
+
+BloodParticles::BloodParticles(const BloodParticleSettings& settings, std::uint64_t seed)
+    : settings_(settings), rng_(seed) {
+  if (!(settings.particle_volume > 0.0) || !(settings.lifetime > 0.0) ||
+      !(settings.emitter_time_constant > 0.0) || !(settings.spread >= 0.0))
+    throw core::UsageError(
+        "blood particles need a positive volume, lifetime and emitter time constant and a "
+        "spread ≥ 0");
+  position_.reserve(settings.capacity);
+  emit_velocity_.reserve(settings.capacity);
+  age_.reserve(settings.capacity);
+  blood_.reserve(settings.capacity);
+}
+
+void BloodParticles::emit(const core::Vec3& site, const core::Vec3& normal, double speed,
+                          double volume, const FlowGrid& grid, ConcentrationField& field) {
+  if (!(volume > 0.0)) return;
+  pending_ += volume;
+  const double count = std::floor(pending_ / settings_.particle_volume);
+  pending_ -= count * settings_.particle_volume;
+  const core::Vec3 n = normal.normalized();
+  // Any two unit vectors across the normal span the cone's base.
+  const core::Vec3 u = n.unitOrthogonal();
+  const core::Vec3 w = n.cross(u);
+  const double cos_spread = std::cos(settings_.spread);
+  for (double k = 0; k < count; k += 1.0) {
+    emitted_ += settings_.particle_volume;
+    if (age_.size() >= settings_.capacity) {
+      release(grid, field, site, settings_.particle_volume);
+      continue;
+    }
+    const double cos_theta = rng_.uniform(cos_spread, 1.0);
+    const double sin_theta = std::sqrt(std::max(0.0, 1.0 - cos_theta * cos_theta));
+    const double phi = rng_.uniform(0.0, 2.0 * std::numbers::pi);
+    const core::Vec3 direction =
+        cos_theta * n + sin_theta * (std::cos(phi) * u + std::sin(phi) * w);
+    position_.push_back(site);
+    emit_velocity_.push_back(speed * direction);
+    age_.push_back(0.0);
+    blood_.push_back(settings_.particle_volume);
+  }
+}
+
+void BloodParticles::advance(const FlowGrid& grid, const ArtificialVortices* vortices,
+                             ConcentrationField& field, double time_step) {
+  if (!(time_step > 0.0)) return;
+  // Each particle gives the field its blood at a steady rate over its life.
+  const double release_per_step = settings_.particle_volume * time_step / settings_.lifetime;
+  std::size_t i = 0;
+  while (i < age_.size()) {
+    age_[i] += time_step;
+    const double weight = std::exp(-age_[i] / settings_.emitter_time_constant);
+    const core::Vec3 flow =
+        vortices ? vortices->flow_velocity(grid, position_[i]) : grid.velocity_at(position_[i]);
+    position_[i] += time_step * (weight * emit_velocity_[i] + (1.0 - weight) * flow);
+    const bool dies = age_[i] >= settings_.lifetime;
+    const double given = dies ? blood_[i] : std::min(blood_[i], release_per_step);
+    release(grid, field, position_[i], given);
+    blood_[i] -= given;
+    if (dies) {
+      remove(i);  // the last particle moves here and is advanced next
+    } else {
+      ++i;
+    }
+  }
+}
+
+double BloodParticles::carried_volume() const {
+  double total = 0.0;
+  for (const double b : blood_)
+    total += b;
+  return total;
+}
+
+void BloodParticles::release(const FlowGrid& grid, ConcentrationField& field,
+                             const core::Vec3& point, double volume) {
+  if (!(volume > 0.0)) return;
+  const double added = field.add_blood(grid, point, volume);
+  released_ += added;
+  lost_ += volume - added;
+}
+
+void BloodParticles::remove(std::size_t i) {
+  const std::size_t last = age_.size() - 1;
+  position_[i] = position_[last];
+  emit_velocity_[i] = emit_velocity_[last];
+  age_[i] = age_[last];
+  blood_[i] = blood_[last];
+  position_.pop_back();
+  emit_velocity_.pop_back();
+  age_.pop_back();
+  blood_.pop_back();
+}
+
+}  // namespace viscera::sim::fluid

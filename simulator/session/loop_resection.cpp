@@ -178,6 +178,7 @@ void LoopResection::cut(World& world, double time, CuttingSummary& summary,
     world.topology_changed(b, topology);
     summary.cut_seconds.push_back(
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    if (observer_) observer_(b, change, time);
 
     const cutting::CutStatistics& s = change.statistics;
     ++summary.cuts;

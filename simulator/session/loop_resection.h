@@ -17,6 +17,7 @@
 /// reaches pathology bodies only (polyps, myomas), not the wall they grow on, whose cutting
 /// needs the perforation rules of issue 17 §5. Chips stay in their body's node range.
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,12 @@ class LoopResection {
   void follow(const InstrumentState& state, World& world, double time, CuttingSummary& summary,
               std::vector<SessionEvent>& events);
 
+  /// Called for each body a cut changed, after the world took its new topology, with the world
+  /// body's index and the session time in s (the session starts bleeding there, issue 18 §3).
+  using CutObserver =
+      std::function<void(int body, const cutting::TopologyChange& change, double time)>;
+  void on_cut(CutObserver observer) { observer_ = std::move(observer); }
+
   /// True while the pedal is down.
   bool sweeping() const { return sweeping_; }
   const cutting::LoopElectrode& loop() const { return loop_; }
@@ -64,6 +71,7 @@ class LoopResection {
   cutting::HybridCutOptions options_;
   bool sweeping_ = false;
   std::vector<cutting::LoopPose> sweep_;
+  CutObserver observer_;
 };
 
 }  // namespace viscera::sim

@@ -113,10 +113,58 @@ nlohmann::json fluid_json(const SessionReport& r) {
   return {{"used", f.used},
           {"drained", f.drained},
           {"absorbed", f.absorbed},
+          {"bled", f.bled},
+          {"intravasated", f.intravasated},
           {"deficit", f.deficit()},
           {"max_pressure", f.max_pressure},
           {"final_pressure", r.final_cavity_pressure},
           {"time_above_absorption_threshold", f.time_above_threshold}};
+}
+
+/// The bleeding of the session's cuts (m³, s), or null when nothing could cut: blood loss,
+/// fluid taken up through the opened vessels, the episodes (one per source) and how long the
+/// controlled ones took to control.
+nlohmann::json bleeding_json(const SessionReport& r) {
+  if (!r.bleeding) return nullptr;
+  double blood_loss = 0.0, intravasated = 0.0, control_time = 0.0;
+  int controlled = 0;
+  nlohmann::json sources = nlohmann::json::array();
+  for (const fluid::BleedingSource& s : *r.bleeding) {
+    blood_loss += s.bled;
+    intravasated += s.intravasated;
+    const char* stop = s.stop == fluid::BleedingStop::Coagulated ? "coagulated"
+                       : s.stop == fluid::BleedingStop::Clipped  ? "clipped"
+                       : s.stop == fluid::BleedingStop::Clotted  ? "clotted"
+                                                                 : "bleeding";
+    if (s.stop != fluid::BleedingStop::Bleeding) {
+      ++controlled;
+      control_time += s.stopped_at - s.opened_at;
+    }
+    nlohmann::json source = {
+        {"kind", s.capillary ? "capillary" : "vessel"},
+        {"opened_at", s.opened_at},
+        {"state", stop},
+        {"stopped_at", s.stop == fluid::BleedingStop::Bleeding ? nlohmann::json(nullptr)
+                                                               : nlohmann::json(s.stopped_at)},
+        {"bled", s.bled},
+        {"intravasated", s.intravasated}};
+    if (s.capillary) {
+      source["area"] = s.area;
+    } else {
+      source["vessel_tree"] = s.vessel_tree;
+      source["segment"] = s.segment;
+      source["radius"] = s.radius;
+      source["level"] = s.level;
+    }
+    sources.push_back(std::move(source));
+  }
+  return {{"blood_loss", blood_loss},
+          {"intravasated", intravasated},
+          {"episodes", r.bleeding->size()},
+          {"controlled", controlled},
+          {"mean_time_to_control",
+           controlled > 0 ? nlohmann::json(control_time / controlled) : nlohmann::json(nullptr)},
+          {"sources", sources}};
 }
 
 /// How a threaded session kept time, or null for a headless one.
@@ -214,6 +262,7 @@ nlohmann::json report_to_json(const SessionReport& r) {
           {"path", path_json(r)},
           {"fluid", fluid_json(r)},
           {"cutting", cutting_json(r)},
+          {"bleeding", bleeding_json(r)},
           {"realtime", realtime_json(r)},
           {"end_reason", r.end_reason},
           {"events", events},

@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "simulator/fluid/bleeding_sources.h"
 #include "simulator/fluid/distension_balance.h"
 #include "simulator/session/instrument_state.h"
 #include "simulator/session/session_metrics.h"
@@ -153,8 +154,10 @@ struct SessionReport {
   double final_cavity_pressure = 0.0;     ///< Pa
   std::optional<RealtimeStats> realtime;  ///< of a threaded window session
   std::optional<CuttingSummary> cutting;  ///< with a cutting instrument
-  std::string end_reason = "duration";    ///< "duration", "time-limit", "completed", "perforation",
-                                          ///< "fluid-overload", "tissue-tear", "abort"
+  /// Every bleeding source the cuts opened, as the session left it (with a cutting instrument).
+  std::optional<std::vector<fluid::BleedingSource>> bleeding;
+  std::string end_reason = "duration";  ///< "duration", "time-limit", "completed", "perforation",
+                                        ///< "fluid-overload", "tissue-tear", "abort"
 };
 
 /// A period's score, or why it has none.

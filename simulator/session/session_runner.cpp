@@ -365,6 +365,40 @@ void SessionRunner::start_resection(const core::Scenario& scenario) {
       std::make_unique<LoopResection>(world_, std::move(bodies), standard_resection_loop());
   report_.cutting.emplace();
   resection_->begin(world_, *report_.cutting);
+
+  bleeding_.emplace();
+  report_.bleeding.emplace();
+  hosted_trees_.assign(world_.models().size(), {});
+  for (const core::VesselTree& tree : scenario.vessel_trees) {
+    for (const auto& model : world_.models()) {
+      if (model->name == tree.host_object)
+        hosted_trees_[static_cast<std::size_t>(model->body)].push_back(tree);
+    }
+  }
+  resection_->on_cut([this](int body, const cutting::TopologyChange& change, double time) {
+    start_bleeding(body, change, time);
+  });
+}
+
+void SessionRunner::start_bleeding(int body, const cutting::TopologyChange& change, double time) {
+  std::vector<core::Triangle> cut_triangles;
+  cut_triangles.reserve(change.cut_surface_faces.size());
+  for (const int f : change.cut_surface_faces)
+    cut_triangles.push_back(change.mesh.surface_faces[static_cast<std::size_t>(f)]);
+  const std::size_t before = bleeding_->sources().size();
+  bleeding_->add_cut(body, hosted_trees_[static_cast<std::size_t>(body)], change.mesh.nodes,
+                     cut_triangles, time);
+  const std::string& name = world_.models()[static_cast<std::size_t>(body)]->name;
+  for (std::size_t i = before; i < bleeding_->sources().size(); ++i) {
+    const fluid::BleedingSource& source = bleeding_->sources()[i];
+    if (source.capillary) continue;
+    report_.events.push_back({time, "vessel-opened",
+                              "the cut through " + name + " opened segment " +
+                                  std::to_string(source.segment) + " of vessel tree \"" +
+                                  source.vessel_tree + "\" (radius " +
+                                  std::to_string(source.radius * 1e3) + " mm, " +
+                                  std::to_string(source.level) + " bifurcation(s) from its root)"});
+  }
 }
 
 void SessionRunner::step_world() {
@@ -474,9 +508,21 @@ void SessionRunner::end(const std::string& reason, const std::string& message) {
 }
 
 void SessionRunner::balance_fluid(double dt) {
-  if (!fluid_) return;
+  const bool bleeding = bleeding_ && !bleeding_->sources().empty();
+  if (!fluid_) {
+    // No distension fluid (an open cavity): every source bleeds against no pressure.
+    if (bleeding) {
+      std::vector<double> volumes;
+      for (const VesselOpening& opening : bleeding_->openings(world_.time()))
+        volumes.push_back(opening.conductance * opening.pressure * dt);
+      bleeding_->record_step(volumes);
+    }
+    return;
+  }
+  if (bleeding) fluid_->set_openings(bleeding_->openings(world_.time()));
   const double used_before = fluid_->totals().used;
   fluid_->step(state_.inflow, state_.outflow, dt);
+  if (bleeding) bleeding_->record_step(fluid_->last_step_volumes());
   const double used = fluid_->totals().used - used_before;
   report_.metrics.record_fluid(used);
   if (current_ >= 0 && current_ < static_cast<int>(report_.procedure_steps.size()))
@@ -527,6 +573,7 @@ SessionReport SessionRunner::finish() {
     report_.fluid = fluid_->totals();
     report_.final_cavity_pressure = fluid_->pressure();
   }
+  if (bleeding_) report_.bleeding = bleeding_->sources();
   report_.max_penetration = world_.max_penetration();
   report_.contact_stiffness =
       world_.bodies().size() > 1 ? scenario_.session.contact_stiffness : 0.0;

@@ -11,6 +11,7 @@
 
 #include "core/scenario/scenario.h"
 #include "simulator/camera/surface_coverage.h"
+#include "simulator/fluid/bleeding_sources.h"
 #include "simulator/fluid/distension_balance.h"
 #include "simulator/session/instrument_input.h"
 #include "simulator/session/instrument_tissue.h"
@@ -124,9 +125,16 @@ class SessionRunner {
   /// The cavity's distension fluid, when the scenario enables it and an instrument drives the
   /// valves.
   std::optional<DistensionBalance> fluid_;
-  /// Feeds the valves of one step of `dt` s to the fluid balance and ends the session on
-  /// fluid overload.
+  /// Bleeding from what the loop cuts (issue 18 §3): sources at each cut's opened vessels and
+  /// cut surface, open paths of the fluid balance (or bleeding freely without one).
+  std::optional<fluid::BleedingSources> bleeding_;
+  /// Per world body, the vessel trees the scenario hosts in it.
+  std::vector<std::vector<core::VesselTree>> hosted_trees_;
+  /// Feeds the valves and the bleeding sources of one step of `dt` s to the fluid balance and
+  /// ends the session on fluid overload.
   void balance_fluid(double dt);
+  /// Starts the bleeding of a cut of world body `body` at `time` s.
+  void start_bleeding(int body, const cutting::TopologyChange& change, double time);
 };
 
 }  // namespace viscera::sim

@@ -153,6 +153,50 @@ TEST(LoopResection, the_same_sweep_replays_to_the_same_state) {
   EXPECT_EQ(a.report.checkpoints, b.report.checkpoints);
 }
 
+TEST(LoopResection, a_scoop_through_the_polyps_feeding_artery_bleeds_and_the_balance_holds) {
+  // A polyp's feeding artery (r 0.3 mm) up its axis from the base to the apex: the scoop 2 mm
+  // below the apex opens it (issue 18 §3). Blood enters the cavity through the opened artery
+  // and the cut surface, and the distension balance keeps every volume.
+  core::Scenario scenario = resectoscope_patient();
+  const PolypFrame frame = frame_of(scenario);
+  core::VesselTree artery;
+  artery.id = "polyp-artery";
+  artery.host_object = "polyp-1";
+  artery.segments.push_back({0, -1, frame.base, frame.apex, 0.3e-3, 0.0});
+  scenario.vessel_trees.push_back(artery);
+  const ScoopRun r = run(scenario, scoop_script(frame, 2.0e-3));
+  ASSERT_GE(r.report.cutting->cuts, 1);
+  ASSERT_TRUE(r.report.bleeding.has_value());
+  const auto& sources = *r.report.bleeding;
+  const auto vessel =
+      std::find_if(sources.begin(), sources.end(), [](const auto& s) { return !s.capillary; });
+  ASSERT_NE(vessel, sources.end());
+  EXPECT_EQ(vessel->vessel_tree, "polyp-artery");
+  EXPECT_EQ(vessel->stop, fluid::BleedingStop::Bleeding);  // nothing stopped it
+  EXPECT_GT(vessel->bled, 0.0);
+  EXPECT_TRUE(
+      std::any_of(sources.begin(), sources.end(), [](const auto& s) { return s.capillary; }));
+  // The artery bled at its Poiseuille rate against the cavity's pressure: no more than the
+  // rate into an empty cavity over the time since the cut.
+  const double since_cut = r.report.simulated_time - vessel->opened_at;
+  EXPECT_LT(vessel->bled, vessel->conductance * vessel->pressure * since_cut * (1 + 1e-9));
+  EXPECT_GT(vessel->bled, 0.1 * vessel->conductance * vessel->pressure * since_cut);
+  const auto opened = std::find_if(r.report.events.begin(), r.report.events.end(),
+                                   [](const auto& e) { return e.kind == "vessel-opened"; });
+  EXPECT_NE(opened, r.report.events.end());
+
+  ASSERT_TRUE(r.report.fluid.has_value());
+  const FluidTotals& f = *r.report.fluid;
+  double bled = 0.0;
+  for (const auto& s : sources)
+    bled += s.bled;
+  EXPECT_NEAR(f.bled, bled, 1e-12 * bled);
+  const double compliance = DistensionChannels{}.cavity_compliance;
+  const double retained = compliance * r.report.final_cavity_pressure;
+  EXPECT_NEAR(f.used + f.bled - f.drained - f.absorbed - f.intravasated, retained,
+              1e-9 * (f.used + f.bled));
+}
+
 TEST(LoopResection, a_pedal_released_inside_the_polyp_cuts_nothing) {
   const core::Scenario scenario = resectoscope_patient();
   const PolypFrame frame = frame_of(scenario);

@@ -64,6 +64,10 @@ std::vector<TemplateParameter> HysteroscopyTemplate::parameters() const {
       {"vessel_terminals", "count", "terminal segments of the CCO arterial tree (0: none)", 0, 400,
        60, true},
       {"vessel_seed", "count", "seed of the arterial tree", 0, 1e9, 1, true},
+      {"pathology_artery_radius", "m",
+       "radius of the artery feeding each polyp and cavity myoma up its axis (0: none); a cut "
+       "across it bleeds",
+       0.0, 0.0006, 0.0, false},
       {"texture_seed", "count", "seed of the tissue textures", 0, 1e9, 1, true},
       {"texture_size", "count", "width and height of the baked maps in pixels", 64, 2048, 256,
        true},
@@ -264,6 +268,15 @@ core::Scenario HysteroscopyTemplate::build(const ParameterValues& p, std::uint64
         {pathology.record.id, "apex of " + pathology.record.id, pathology.record.id, apex, axis});
     scenario.landmarks.push_back({pathology.record.id + "-base", "base of " + pathology.record.id,
                                   pathology.record.id, base, axis});
+    // A polyp's vascular stalk, a myoma's feeding vessel: one artery hosted by the pathology
+    // from the centre of its base to nine tenths of the way to its apex.
+    if (const double radius = p.at("pathology_artery_radius"); radius > 0.0) {
+      core::VesselTree artery;
+      artery.id = pathology.record.id + "-artery";
+      artery.host_object = pathology.record.id;
+      artery.segments.push_back({0, -1, base, base + 0.9 * (apex - base), radius, 0.0});
+      scenario.vessel_trees.push_back(std::move(artery));
+    }
   }
   for (auto& mark : scenario.landmarks) {
     if (mark.id.starts_with("tubal-orifice"))

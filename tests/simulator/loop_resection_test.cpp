@@ -154,16 +154,13 @@ TEST(LoopResection, the_same_sweep_replays_to_the_same_state) {
 }
 
 TEST(LoopResection, a_scoop_through_the_polyps_feeding_artery_bleeds_and_the_balance_holds) {
-  // A polyp's feeding artery (r 0.3 mm) up its axis from the base to the apex: the scoop 2 mm
+  // The template's feeding artery (r 0.3 mm) up the polyp's axis from its base: the scoop 2 mm
   // below the apex opens it (issue 18 §3). Blood enters the cavity through the opened artery
   // and the cut surface, and the distension balance keeps every volume.
-  core::Scenario scenario = resectoscope_patient();
+  core::Scenario scenario =
+      templates::build_from_template("hysteroscopy", {{"pathology_artery_radius", "0.0003"}}, 1);
+  scenario.session.instrument.kind = "resectoscope";
   const PolypFrame frame = frame_of(scenario);
-  core::VesselTree artery;
-  artery.id = "polyp-artery";
-  artery.host_object = "polyp-1";
-  artery.segments.push_back({0, -1, frame.base, frame.apex, 0.3e-3, 0.0});
-  scenario.vessel_trees.push_back(artery);
   const ScoopRun r = run(scenario, scoop_script(frame, 2.0e-3));
   ASSERT_GE(r.report.cutting->cuts, 1);
   ASSERT_TRUE(r.report.bleeding.has_value());
@@ -171,7 +168,8 @@ TEST(LoopResection, a_scoop_through_the_polyps_feeding_artery_bleeds_and_the_bal
   const auto vessel =
       std::find_if(sources.begin(), sources.end(), [](const auto& s) { return !s.capillary; });
   ASSERT_NE(vessel, sources.end());
-  EXPECT_EQ(vessel->vessel_tree, "polyp-artery");
+  EXPECT_EQ(vessel->vessel_tree, "polyp-1-artery");
+  EXPECT_DOUBLE_EQ(vessel->radius, 0.0003);
   EXPECT_EQ(vessel->stop, fluid::BleedingStop::Bleeding);  // nothing stopped it
   EXPECT_GT(vessel->bled, 0.0);
   EXPECT_TRUE(

@@ -45,6 +45,7 @@ TEST(ParameterGroups, hysteroscopy_parameters_are_grouped_as_a_clinician_expects
   EXPECT_EQ(groups.at("density"), ParameterGroup::Tissue);
   EXPECT_EQ(groups.at("fixed_cervix_fraction"), ParameterGroup::Tissue);
   EXPECT_EQ(groups.at("vessel_terminals"), ParameterGroup::Vessels);
+  EXPECT_EQ(groups.at("pathology_artery_radius"), ParameterGroup::Vessels);
   EXPECT_EQ(groups.at("texture_size"), ParameterGroup::Texture);
   EXPECT_EQ(groups.at("edge_length"), ParameterGroup::Meshing);
   EXPECT_EQ(to_string(ParameterGroup::Pathologies), "pathologies");

@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <new>
@@ -60,6 +61,17 @@ void prepare_guard_child(std::uint64_t memory_bytes) {
       ::setrlimit(RLIMIT_AS, &limit);
     }
   }
+}
+
+void narrow_guard_child_memory(std::uint64_t memory_bytes) {
+  if (kSanitized) return;
+  rlimit limit{};
+  if (::getrlimit(RLIMIT_AS, &limit) != 0) return;
+  const std::uint64_t mapped = mapped_bytes();
+  limit.rlim_cur = memory_bytes == 0 || mapped == 0
+                       ? limit.rlim_max
+                       : std::min<rlim_t>(limit.rlim_max, mapped + memory_bytes);
+  ::setrlimit(RLIMIT_AS, &limit);
 }
 
 bool ended_by_alarm(int status) {

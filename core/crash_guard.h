@@ -53,6 +53,12 @@ bool guard_limits_memory();
 /// fuzz build's libFuzzer bounds each allocation instead).
 void prepare_guard_child(std::uint64_t memory_bytes = kGuardMemoryBytes);
 
+/// In a child prepared by prepare_guard_child: bounds what it may still add to its address space
+/// to `memory_bytes` for the stage that follows (the soft RLIMIT_AS, never above the prepared
+/// bound), or lifts that back to the prepared bound with 0. For a reader whose first stage has a
+/// tight bound and whose second needs room (gdcm_parse_guard.h). Nothing under the sanitizers.
+void narrow_guard_child_memory(std::uint64_t memory_bytes);
+
 /// Runs `attempt` in a forked child process prepared by prepare_guard_child(memory_bytes), with
 /// an alarm after kGuardSeconds. True when the child finished (returned or threw: a clean refusal
 /// the caller will meet again), false when a signal ended it (a crash, an abort, a failed

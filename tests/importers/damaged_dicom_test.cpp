@@ -2,11 +2,13 @@
 // with their name, and the process reading them lives on (issue 21: a flipped byte in the file
 // meta header of a CT slice killed `viscera volume info` with SIGABRT).
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 
 #include <fstream>
 #include <iterator>
 #include <nlohmann/json.hpp>
 
+#include "core/crash_guard.h"
 #include "core/error.h"
 #include "importers/volume/volume_reader.h"
 #include "tests/importers/volume_fixtures.h"
@@ -55,6 +57,25 @@ TEST(DamagedDicom, a_file_whose_spacing_aborts_gdcms_image_reader_is_refused_nam
     EXPECT_NE(std::string(e.what()).find(file.string()), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("GDCM aborts or hangs"), std::string::npos) << e.what();
   }
+}
+
+TEST(DamagedDicom, a_file_whose_recovery_parse_asks_gigabytes_is_refused_within_the_bound) {
+  if (!core::guard_limits_memory()) GTEST_SKIP() << "sanitizer build: guards do not limit memory";
+  // Stop 20's second volume_dicom_file finding (20 KB): GDCM's first parse fails, its 16-bit
+  // length recovery reads an item tag's bytes as a length and zero-filled 4.2 GB for 6 s in the
+  // guard's child; the parse's bound (the file's size and 2 GiB) refuses it at once.
+  const fs::path file = testing::source_dir() /
+                        "tests/fuzz/regressions/volume_dicom_file/"
+                        "recovery_parse_zero_fills_gigabytes.dcm";
+  try {
+    importers::read_volume(file);
+    FAIL() << "the damaged file was read";
+  } catch (const core::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("GDCM aborts or hangs"), std::string::npos) << e.what();
+  }
+  rusage children{};
+  ::getrusage(RUSAGE_CHILDREN, &children);  // the largest child this process waited for
+  EXPECT_LT(children.ru_maxrss, 2L << 20) << "KB in a guard's child";
 }
 
 TEST(DamagedDicom, a_folder_is_read_without_the_files_that_abort_gdcm_and_lists_them) {

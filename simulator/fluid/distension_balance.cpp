@@ -98,6 +98,8 @@ void DistensionBalance::advance(const Regime& r, double dt) {
     last_step_volumes_[j] += volume;
   }
   totals_.max_pressure = std::max({totals_.max_pressure, pressure_, end});
+  totals_.pressure_time += pressure_time;
+  totals_.duration += dt;
   pressure_ = end;
 }
 
@@ -112,7 +114,11 @@ void DistensionBalance::step(double inflow_opening, double outflow_opening, doub
   double left = dt;
   for (std::size_t piece = 0; piece < openings_.size() + 2 && left > 0.0; ++piece) {
     const Regime r = regime(g_in, g_out);
-    if (r.b <= 0.0) return;  // sealed cavity: nothing flows
+    if (r.b <= 0.0) {  // sealed cavity: nothing flows, the pressure holds
+      totals_.pressure_time += pressure_ * left;
+      totals_.duration += left;
+      return;
+    }
     const double target = r.target();
     double duration = left;
     double kink_reached = pressure_;

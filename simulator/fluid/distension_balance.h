@@ -72,6 +72,10 @@ struct FluidTotals {
   double intravasated = 0.0;          ///< fluid that entered the circulation through them
   double max_pressure = 0.0;          ///< Pa
   double time_above_threshold = 0.0;  ///< s with the pressure above the absorption threshold
+  double pressure_time = 0.0;         ///< Pa·s, ∫P dt over the steps taken
+  double duration = 0.0;              ///< s stepped
+  /// Pa, the time-averaged cavity pressure (0 before the first step).
+  double mean_pressure() const { return duration > 0.0 ? pressure_time / duration : 0.0; }
   /// The clinical fluid deficit: used − drained, what the fluid-management system shows (the
   /// drained fluid carries the blood that entered, so it is short of the patient's uptake by the
   /// blood loss while the cavity holds the rest).

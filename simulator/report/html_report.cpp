@@ -72,6 +72,41 @@ std::string compare_metric(const MetricSpec& metric, double trainee, double refe
   return (trainee > reference) == metric.higher_is_better ? "better" : "worse";
 }
 
+namespace {
+
+/// The fluid balance and the bleeding (issue 18 §6) as a table, or nothing without either.
+std::string fluid_and_bleeding_table(const json& report) {
+  const json fluid = report.value("fluid", json());
+  const json bleeding = report.value("bleeding", json());
+  if (!fluid.is_object() && !bleeding.is_object()) return {};
+  std::ostringstream out;
+  constexpr double kMlPerM3 = 1e6, kMmHgPerPa = 1.0 / 133.322;
+  out << "<h2>Fluid and bleeding</h2>\n<table>\n";
+  const auto row = [&out](const char* label, const json& value, double scale) {
+    out << "<tr><td>" << label << "</td><td>" << number(value, scale) << "</td></tr>\n";
+  };
+  if (fluid.is_object()) {
+    row("Distension fluid used (ml)", fluid.value("used", json()), kMlPerM3);
+    row("Drained (ml)", fluid.value("drained", json()), kMlPerM3);
+    row("Deficit (ml)", fluid.value("deficit", json()), kMlPerM3);
+    row("Absorbed through tissue and ostia (ml)", fluid.value("absorbed", json()), kMlPerM3);
+    row("Peak cavity pressure (mmHg)", fluid.value("max_pressure", json()), kMmHgPerPa);
+    row("Mean cavity pressure (mmHg)", fluid.value("mean_pressure", json()), kMmHgPerPa);
+  }
+  if (bleeding.is_object()) {
+    row("Blood loss into the cavity (ml)", bleeding.value("blood_loss", json()), kMlPerM3);
+    row("Intravasated through opened vessels (ml)", bleeding.value("intravasated", json()),
+        kMlPerM3);
+    row("Bleeding episodes", bleeding.value("episodes", json()), 1.0);
+    row("Controlled (coagulated, clipped, clotted)", bleeding.value("controlled", json()), 1.0);
+    row("Mean time to control (s)", bleeding.value("mean_time_to_control", json()), 1.0);
+  }
+  out << "</table>\n";
+  return out.str();
+}
+
+}  // namespace
+
 std::vector<std::filesystem::path> write_html_report(const json& report, const json* reference,
                                                      const std::filesystem::path& folder) {
   if (!core::has_format(report, "viscera-session-report"))
@@ -86,6 +121,9 @@ std::vector<std::filesystem::path> write_html_report(const json& report, const j
   plot_tool_path(report, reference, "xz", folder / "path_xz.png");
   plot_force(report, reference, folder / "force.png");
   plot_step_scores(report, reference, folder / "scores.png");
+  const bool fluid_plot =
+      report.contains("fluid_series") && plot_fluid(report, reference, folder / "fluid.png");
+  if (fluid_plot) written.push_back(folder / "fluid.png");
 
   std::ostringstream html;
   html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
@@ -140,7 +178,14 @@ std::vector<std::filesystem::path> write_html_report(const json& report, const j
        << "<figure><img src=\"force.png\" alt=\"force over time\"><figcaption>Force on the "
           "instrument; dashed: the warning level.</figcaption></figure>\n"
        << "<figure><img src=\"scores.png\" alt=\"scores per step\"><figcaption>Score per step"
-       << (reference != nullptr ? " (grey: reference)" : "") << ".</figcaption></figure>\n</div>\n";
+       << (reference != nullptr ? " (grey: reference)" : "") << ".</figcaption></figure>\n";
+  if (fluid_plot) {
+    html << "<figure><img src=\"fluid.png\" alt=\"fluid deficit and blood over time\">"
+            "<figcaption>Distension fluid deficit (used − drained) and blood that entered the "
+            "cavity.</figcaption></figure>\n";
+  }
+  html << "</div>\n";
+  html << fluid_and_bleeding_table(report);
 
   html << "<h2>Procedure steps</h2>\n<table>\n<tr><th>Step</th><th>Started (s)</th><th>Ended (s)"
           "</th><th>Path (mm)</th><th>Collisions</th><th>Max force (N)</th><th>Seen (%)</th>"

@@ -89,6 +89,7 @@ struct Chart {
 constexpr unsigned char kTrainee[3] = {200, 40, 40};
 constexpr unsigned char kReference[3] = {150, 150, 150};
 constexpr unsigned char kWarning[3] = {240, 160, 0};
+constexpr unsigned char kBlood[3] = {120, 0, 20};
 
 int axis_of(char c) {
   return c == 'x' ? 0 : c == 'y' ? 1 : 2;
@@ -166,6 +167,36 @@ void plot_force(const json& report, const json* reference, const std::filesystem
     level->GetPen()->SetLineType(vtkPen::DASH_LINE);
   }
   chart.render(png);
+}
+
+bool plot_fluid(const json& report, const json* reference, const std::filesystem::path& png,
+                PlotSize size) {
+  const json& fluid = member(report, "fluid_series", "/fluid_series");
+  if (fluid.is_null()) return false;
+  Chart chart("Distension fluid deficit and blood in the cavity over time", "time (s)", "ml", size);
+  const auto millilitres = [](const json& series, const char* key) {
+    std::vector<double> values =
+        member(series, key, std::string("/fluid_series/") + key).get<std::vector<double>>();
+    for (double& v : values)
+      v *= 1e6;
+    return values;
+  };
+  if (reference != nullptr && reference->contains("fluid_series") &&
+      !(*reference)["fluid_series"].is_null()) {
+    const json& other = (*reference)["fluid_series"];
+    chart.line(
+        table({{"time (s)", member(other, "time", "/fluid_series/time").get<std::vector<double>>()},
+               {"reference deficit", millilitres(other, "deficit")}}),
+        0, 1, kReference, 1.5f);
+  }
+  const std::vector<double> t =
+      member(fluid, "time", "/fluid_series/time").get<std::vector<double>>();
+  chart.line(table({{"time (s)", t}, {"deficit", millilitres(fluid, "deficit")}}), 0, 1, kTrainee,
+             2.0f);
+  chart.line(table({{"time (s)", t}, {"blood in the cavity", millilitres(fluid, "bled")}}), 0, 1,
+             kBlood, 2.0f);
+  chart.render(png);
+  return true;
 }
 
 namespace {

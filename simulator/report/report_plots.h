@@ -25,6 +25,12 @@ void plot_tool_path(const nlohmann::json& report, const nlohmann::json* referenc
 void plot_force(const nlohmann::json& report, const nlohmann::json* reference,
                 const std::filesystem::path& png, PlotSize size = {});
 
+/// The distension fluid over time (issue 18 §6): the deficit and the blood that entered the
+/// cavity (ml), with the reference's deficit. False, and no file, when the report simulated no
+/// fluid (its "fluid_series" is null).
+bool plot_fluid(const nlohmann::json& report, const nlohmann::json* reference,
+                const std::filesystem::path& png, PlotSize size = {});
+
 /// Score (0…100) of each procedure step and of the whole session, beside the reference's.
 void plot_step_scores(const nlohmann::json& report, const nlohmann::json* reference,
                       const std::filesystem::path& png, PlotSize size = {});

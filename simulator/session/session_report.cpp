@@ -71,6 +71,24 @@ nlohmann::json path_json(const SessionReport& r) {
   return path;
 }
 
+/// The distension fluid over time (s, Pa, m³), or null without fluid.
+nlohmann::json fluid_series_json(const SessionReport& r) {
+  if (!r.fluid) return nullptr;
+  nlohmann::json series = {{"time", nlohmann::json::array()},
+                           {"pressure", nlohmann::json::array()},
+                           {"deficit", nlohmann::json::array()},
+                           {"bled", nlohmann::json::array()},
+                           {"intravasated", nlohmann::json::array()}};
+  for (const FluidSample& s : r.fluid_series) {
+    series["time"].push_back(s.time);
+    series["pressure"].push_back(s.pressure);
+    series["deficit"].push_back(s.deficit);
+    series["bled"].push_back(s.bled);
+    series["intravasated"].push_back(s.intravasated);
+  }
+  return series;
+}
+
 /// The cuts (issue 17 §5) in s, m³ and degrees, or null when the instrument cannot cut.
 nlohmann::json cutting_json(const SessionReport& r) {
   if (!r.cutting) return nullptr;
@@ -117,6 +135,7 @@ nlohmann::json fluid_json(const SessionReport& r) {
           {"intravasated", f.intravasated},
           {"deficit", f.deficit()},
           {"max_pressure", f.max_pressure},
+          {"mean_pressure", f.mean_pressure()},
           {"final_pressure", r.final_cavity_pressure},
           {"time_above_absorption_threshold", f.time_above_threshold}};
 }
@@ -261,6 +280,7 @@ nlohmann::json report_to_json(const SessionReport& r) {
           {"score_reason", reason_json(r.score, r.score_reason)},
           {"path", path_json(r)},
           {"fluid", fluid_json(r)},
+          {"fluid_series", fluid_series_json(r)},
           {"cutting", cutting_json(r)},
           {"bleeding", bleeding_json(r)},
           {"realtime", realtime_json(r)},

@@ -50,6 +50,15 @@ struct PathSample {
   int step = -1;  ///< index of the procedure step under way, −1 without steps
 };
 
+/// The distension fluid at one sample of the session (m³, Pa).
+struct FluidSample {
+  double time = 0.0;          ///< s
+  double pressure = 0.0;      ///< Pa in the cavity
+  double deficit = 0.0;       ///< used − drained so far
+  double bled = 0.0;          ///< blood that entered the cavity so far
+  double intravasated = 0.0;  ///< fluid that entered the circulation through opened vessels
+};
+
 /// One procedure step as the trainee did it.
 struct StepResult {
   std::string id;
@@ -151,6 +160,7 @@ struct SessionReport {
   std::vector<SessionEvent> events;
   /// The distension fluid's balance (m³, Pa), when the scenario simulates it.
   std::optional<FluidTotals> fluid;
+  std::vector<FluidSample> fluid_series;  ///< at the energy samples' rate, thinned alike
   double final_cavity_pressure = 0.0;     ///< Pa
   std::optional<RealtimeStats> realtime;  ///< of a threaded window session
   std::optional<CuttingSummary> cutting;  ///< with a cutting instrument

@@ -461,6 +461,12 @@ void SessionRunner::sample() {
                         world_.contacts().colliding_points, world_.contacts().max_penetration},
                        last);
   report_.max_displacement = std::max(report_.max_displacement, displacement);
+  if (fluid_ && (last || fluid_series_.due(index))) {
+    const FluidTotals& f = fluid_->totals();
+    fluid_series_.offer(report_.fluid_series, index,
+                        {world_.time(), fluid_->pressure(), f.deficit(), f.bled, f.intravasated},
+                        last);
+  }
   const bool has_instrument = options_.instrument != nullptr;
   if (has_instrument && (last || path_series_.due(index))) {
     PathSample p;

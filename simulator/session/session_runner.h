@@ -118,6 +118,7 @@ class SessionRunner {
   /// and path samples each (5.5 min at the default 50 Hz before the first thinning) and 8,192
   /// replay checkpoints (13.6 min at 1 ms steps and the default interval of 100 steps).
   SeriesThinning energy_series_{16384}, path_series_{16384}, checkpoint_series_{8192};
+  SeriesThinning fluid_series_{16384};
   bool finished_ = false, over_force_ = false;
   bool instrument_moved_ = false;  ///< the input has changed the instrument's state
   double last_view_distance_ = -1.0;

@@ -7,11 +7,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <fstream>
 
+#include "core/json_schema/json_schema_validator.h"
 #include "simulator/dynamics/attachment_term.h"
 #include "simulator/session/instrument_input.h"
 #include "simulator/session/session_runner.h"
 #include "templates/template_catalog.h"
+#include "tests/support/test_paths.h"
 
 namespace viscera::sim {
 namespace {
@@ -153,6 +156,25 @@ TEST(LoopResection, the_same_sweep_replays_to_the_same_state) {
   EXPECT_EQ(a.report.checkpoints, b.report.checkpoints);
 }
 
+TEST(LoopResection, a_sweep_that_bleeds_replays_to_the_same_blood_and_fluid) {
+  const core::Scenario scenario =
+      templates::build_from_template("hysteroscopy", {{"pathology_artery_radius", "0.0003"}}, 1);
+  core::Scenario resectoscope = scenario;
+  resectoscope.session.instrument.kind = "resectoscope";
+  const auto script = scoop_script(frame_of(resectoscope), 2.0e-3);
+  const ScoopRun a = run(resectoscope, script), b = run(resectoscope, script);
+  ASSERT_TRUE(a.report.bleeding.has_value() && b.report.bleeding.has_value());
+  ASSERT_FALSE(a.report.bleeding->empty());
+  EXPECT_EQ(a.report.final_state_hash, b.report.final_state_hash);
+  ASSERT_EQ(a.report.bleeding->size(), b.report.bleeding->size());
+  for (std::size_t i = 0; i < a.report.bleeding->size(); ++i) {
+    EXPECT_EQ((*a.report.bleeding)[i].bled, (*b.report.bleeding)[i].bled);  // bit for bit
+    EXPECT_EQ((*a.report.bleeding)[i].intravasated, (*b.report.bleeding)[i].intravasated);
+  }
+  EXPECT_EQ(a.report.fluid->bled, b.report.fluid->bled);
+  EXPECT_EQ(a.report.final_cavity_pressure, b.report.final_cavity_pressure);
+}
+
 TEST(LoopResection, a_scoop_through_the_polyps_feeding_artery_bleeds_and_the_balance_holds) {
   // The template's feeding artery (r 0.3 mm) up the polyp's axis from its base: the scoop 2 mm
   // below the apex opens it (issue 18 §3). Blood enters the cavity through the opened artery
@@ -189,6 +211,15 @@ TEST(LoopResection, a_scoop_through_the_polyps_feeding_artery_bleeds_and_the_bal
   for (const auto& s : sources)
     bled += s.bled;
   EXPECT_NEAR(f.bled, bled, 1e-12 * bled);
+  // The report's bleeding and fluid blocks follow the published schema.
+  std::ifstream schema_file(viscera::testing::source_dir() / "docs" / "session-report.schema.json");
+  const core::JsonSchemaValidator schema(nlohmann::json::parse(schema_file));
+  const nlohmann::json json = report_to_json(r.report);
+  for (const auto& violation : schema.validate(json))
+    ADD_FAILURE() << violation.pointer << ": " << violation.message;
+  EXPECT_GT(json["bleeding"]["blood_loss"].get<double>(), 0.0);
+  EXPECT_GT(json["fluid_series"]["bled"].back().get<double>(), 0.0);
+
   const double compliance = DistensionChannels{}.cavity_compliance;
   const double retained = compliance * r.report.final_cavity_pressure;
   EXPECT_NEAR(f.used + f.bled - f.drained - f.absorbed - f.intravasated, retained,

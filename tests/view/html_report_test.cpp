@@ -20,8 +20,9 @@
 namespace viscera::report {
 namespace {
 
-nlohmann::json scripted_report(const nlohmann::json& script) {
-  static const core::Scenario scenario = viscera::testing::cavity_scenario();
+nlohmann::json scripted_report(
+    const nlohmann::json& script,
+    const core::Scenario& scenario = viscera::testing::cavity_scenario()) {
   const auto input = sim::ScriptedTrajectory::from_json(script, "script");
   sim::HeadlessRunOptions options;
   options.duration = input.duration() + 1.0;
@@ -105,6 +106,32 @@ TEST(HtmlReport, an_unassessed_session_says_so_instead_of_a_score) {
   EXPECT_NE(score.find("not assessed: the instrument never moved"), std::string::npos) << score;
   EXPECT_EQ(score.find("/ 100"), std::string::npos) << score;
   EXPECT_TRUE(std::filesystem::exists(dir / "scores.png"));
+}
+
+TEST(HtmlReport, a_session_with_distension_fluid_plots_its_deficit_and_tables_the_balance) {
+  core::Scenario scenario = viscera::testing::cavity_scenario();
+  scenario.fluid.enabled = true;
+  const nlohmann::json report = scripted_report(viscera::testing::expert_cavity_script(), scenario);
+  ASSERT_FALSE(report["fluid_series"].is_null());
+  ASSERT_GT(report["fluid_series"]["time"].size(), 10u);
+  const auto dir = viscera::testing::scratch_dir();
+  const auto written = write_html_report(report, nullptr, dir);
+  EXPECT_EQ(written.back(), dir / "fluid.png");
+  const std::string html = viscera::testing::file_bytes(dir / "report.html");
+  const auto images = referenced_images(html);
+  ASSERT_EQ(images.size(), 5u);
+  EXPECT_EQ(images.back(), "fluid.png");
+  const auto png = view::decode_png(viscera::testing::file_bytes(dir / "fluid.png"), "fluid.png");
+  EXPECT_GT(viscera::testing::frame_statistics(png, 0.0).luminance_stddev, 10.0);
+  for (const char* row : {"<h2>Fluid and bleeding</h2>", "<td>Deficit (ml)</td>",
+                          "<td>Mean cavity pressure (mmHg)</td>"})
+    EXPECT_NE(html.find(row), std::string::npos) << row;
+  // The table's deficit is the report's, in ml.
+  const std::size_t at = html.find("<td>Deficit (ml)</td><td>");
+  ASSERT_NE(at, std::string::npos);
+  const double shown = std::stod(html.substr(at + std::string("<td>Deficit (ml)</td><td>").size()));
+  EXPECT_NEAR(shown, 1e6 * report["fluid"]["deficit"].get<double>(),
+              0.01 * std::abs(1e6 * report["fluid"]["deficit"].get<double>()) + 1e-3);
 }
 
 TEST(HtmlReport, refuses_what_is_not_a_session_report) {

@@ -141,6 +141,13 @@ ScriptedTrajectory ScriptedTrajectory::from_json(const nlohmann::json& json,
           fail(pointer + "/activate", "activate must be 0 or 1");
         s.electrode = pedal == 1;
       }
+      // The coagulation pedal, 0 or 1, held the same way.
+      if (w.contains("coagulate")) {
+        const auto& pedal = w["coagulate"];
+        if (!core::whole_number_fits<int>(pedal) || (pedal != 0 && pedal != 1))
+          fail(pointer + "/coagulate", "coagulate must be 0 or 1");
+        s.coagulation = pedal == 1;
+      }
       s.loop_extension = w.value("loop_extension", s.loop_extension);
       if (w.contains("look_at")) {
         const InstrumentState looking =

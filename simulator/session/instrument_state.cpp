@@ -53,6 +53,7 @@ InstrumentState blend(const InstrumentState& a, const InstrumentState& b, double
   s.outflow = (1.0 - f) * a.outflow + f * b.outflow;
   s.abort = f >= 1.0 && b.abort;
   s.electrode = f >= 1.0 ? b.electrode : a.electrode;
+  s.coagulation = f >= 1.0 ? b.coagulation : a.coagulation;
   s.loop_extension = (1.0 - f) * a.loop_extension + f * b.loop_extension;
   orthonormalise(s);
   return s;

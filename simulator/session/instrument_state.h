@@ -26,6 +26,10 @@ struct InstrumentState {
   /// travel. The surgeon extends the loop behind the tissue and draws it back towards the
   /// sheath to cut (seed 000 §5), so the sheath itself need not move through the tissue.
   double loop_extension = 0.0;
+  /// The coagulation pedal is down: the loop, energised with a coagulating current, seals the
+  /// bleeding sources it touches (seed 000 §1.1.4: a bleeding source is "stopped via unipolar
+  /// coagulation").
+  bool coagulation = false;
 
   bool operator==(const InstrumentState&) const = default;
 };
@@ -45,8 +49,8 @@ InstrumentState look_at(const core::Vec3& tip, const core::Vec3& target,
                         const core::Vec3& axis_hint, double optics_angle);
 
 /// Blends two states: positions linearly, directions by normalised linear blend, valves
-/// linearly; `f` in [0, 1]. Abort is taken from `b` once f reaches 1; the electrode (a pedal,
-/// not a blend) stays as in `a` until then.
+/// linearly; `f` in [0, 1]. Abort is taken from `b` once f reaches 1; the electrode and the
+/// coagulation (pedals, not blends) stay as in `a` until then.
 InstrumentState blend(const InstrumentState& a, const InstrumentState& b, double f);
 
 }  // namespace viscera::sim

@@ -136,6 +136,8 @@ class SessionRunner {
   void balance_fluid(double dt);
   /// Starts the bleeding of a cut of world body `body` at `time` s.
   void start_bleeding(int body, const cutting::TopologyChange& change, double time);
+  /// With the coagulation pedal down: seals the bleeding sources within reach of the loop.
+  void coagulate(double time);
 };
 
 }  // namespace viscera::sim

@@ -25,7 +25,8 @@ std::string package_manifest_sha256(const std::filesystem::path& package) {
 namespace {
 
 nlohmann::json state_to_json(long long step, const InstrumentState& s) {
-  return {step, s.tip, s.axis, s.up, s.inflow, s.outflow, s.abort, s.electrode, s.loop_extension};
+  return {step,    s.tip,       s.axis,           s.up,         s.inflow, s.outflow,
+          s.abort, s.electrode, s.loop_extension, s.coagulation};
 }
 
 std::pair<long long, InstrumentState> state_from_json(const nlohmann::json& j) {
@@ -39,6 +40,7 @@ std::pair<long long, InstrumentState> state_from_json(const nlohmann::json& j) {
   // Traces before the resection loop have 7 members.
   if (j.size() > 7) j.at(7).get_to(s.electrode);
   if (j.size() > 8) j.at(8).get_to(s.loop_extension);
+  if (j.size() > 9) j.at(9).get_to(s.coagulation);  // since the coagulation pedal
   return {core::whole_number<long long>(j.at(0), "", ""), s};
 }
 

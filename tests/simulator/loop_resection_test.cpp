@@ -81,6 +81,22 @@ nlohmann::json scoop_script(const PolypFrame& f, double depth, double release_fr
             {{"t", 1.5}, {"tip", point(release)}}}}};
 }
 
+/// The scoop, then the loop back over the cut's centre with the coagulation pedal down from
+/// `coagulate_from` s for 0.3 s.
+nlohmann::json scoop_and_coagulate_script(const PolypFrame& f, double depth,
+                                          double coagulate_from) {
+  nlohmann::json script = scoop_script(f, depth);
+  const core::Vec3 centre = f.apex + (kRadius - depth) * f.axis;
+  const nlohmann::json tip = {centre.x(), centre.y(), centre.z()};
+  auto& points = script["waypoints"];
+  points.erase(points.size() - 1);  // the final rest
+  points.push_back({{"t", coagulate_from - 0.1}, {"tip", tip}});
+  points.push_back({{"t", coagulate_from}, {"tip", tip}, {"coagulate", 1}});
+  points.push_back({{"t", coagulate_from + 0.3}, {"tip", tip}, {"coagulate", 0}});
+  points.push_back({{"t", 1.5}, {"tip", tip}});
+  return script;
+}
+
 struct ScoopRun {
   SessionReport report;
   std::vector<core::Vec3> polyp_at_release, polyp_at_end;
@@ -224,6 +240,34 @@ TEST(LoopResection, a_scoop_through_the_polyps_feeding_artery_bleeds_and_the_bal
   const double retained = compliance * r.report.final_cavity_pressure;
   EXPECT_NEAR(f.used + f.bled - f.drained - f.absorbed - f.intravasated, retained,
               1e-9 * (f.used + f.bled));
+}
+
+TEST(LoopResection, the_coagulation_pedal_over_the_cut_seals_the_artery) {
+  core::Scenario scenario =
+      templates::build_from_template("hysteroscopy", {{"pathology_artery_radius", "0.0003"}}, 1);
+  scenario.session.instrument.kind = "resectoscope";
+  const PolypFrame frame = frame_of(scenario);
+  const ScoopRun open = run(scenario, scoop_script(frame, 2.0e-3));
+  const ScoopRun sealed = run(scenario, scoop_and_coagulate_script(frame, 2.0e-3, 1.0));
+  const auto artery = [](const ScoopRun& r) {
+    for (const auto& s : *r.report.bleeding)
+      if (!s.capillary) return s;
+    throw std::runtime_error("no artery was opened");
+  };
+  EXPECT_EQ(artery(open).stop, fluid::BleedingStop::Bleeding);
+  const fluid::BleedingSource a = artery(sealed);
+  EXPECT_EQ(a.stop, fluid::BleedingStop::Coagulated);
+  EXPECT_GE(a.stopped_at, 1.0);
+  EXPECT_LE(a.stopped_at, 1.3);
+  // It bled the same until the pedal and nothing after: less than the open artery's whole run.
+  EXPECT_LT(a.bled, artery(open).bled);
+  EXPECT_GT(a.bled, 0.0);
+  const auto event = std::find_if(sealed.report.events.begin(), sealed.report.events.end(),
+                                  [](const auto& e) { return e.kind == "coagulated"; });
+  EXPECT_NE(event, sealed.report.events.end());
+  const nlohmann::json json = report_to_json(sealed.report);
+  EXPECT_GE(json["bleeding"]["controlled"].get<int>(), 1);
+  EXPECT_TRUE(json["bleeding"]["mean_time_to_control"].is_number());
 }
 
 TEST(LoopResection, a_pedal_released_inside_the_polyp_cuts_nothing) {

@@ -145,6 +145,9 @@ TEST(SessionTrace, round_trips_through_json_exactly) {
   b.axis = core::Vec3(1.0, 2.0, 3.0).normalized();
   b.inflow = 0.3;
   b.abort = true;
+  b.electrode = true;
+  b.loop_extension = 0.004;
+  b.coagulation = true;
   trace.inputs = {{0, a}, {17, b}};
   trace.checkpoints = {{100, "x"}, {200, "y"}};
   trace.final_state_hash = "z";

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 
 #include "core/error.h"
 #include "core/json_eigen.h"
@@ -394,11 +395,12 @@ void SessionRunner::start_bleeding(int body, const cutting::TopologyChange& chan
   for (std::size_t i = before; i < bleeding_->sources().size(); ++i) {
     const fluid::BleedingSource& source = bleeding_->sources()[i];
     if (source.capillary) continue;
+    char radius[32];
+    std::snprintf(radius, sizeof radius, "%.2f", source.radius * 1e3);
     report_.events.push_back({time, "vessel-opened",
                               "the cut through " + name + " opened segment " +
                                   std::to_string(source.segment) + " of vessel tree \"" +
-                                  source.vessel_tree + "\" (radius " +
-                                  std::to_string(source.radius * 1e3) + " mm, " +
+                                  source.vessel_tree + "\" (radius " + radius + " mm, " +
                                   std::to_string(source.level) + " bifurcation(s) from its root)"});
   }
 }

@@ -19,6 +19,8 @@ InstrumentState instrument_from_pose(const DevicePose& pose) {
   state.inflow = static_cast<double>(pose.inflow_valve);
   state.outflow = static_cast<double>(pose.outflow_valve);
   state.abort = (pose.buttons & kDeviceAbortButton) != 0U;
+  state.electrode = (pose.buttons & kDeviceCuttingPedal) != 0U;
+  state.coagulation = (pose.buttons & kDeviceCoagulationPedal) != 0U;
   orthonormalise(state);
   return state;
 }

@@ -19,10 +19,13 @@ namespace viscera::sim {
 
 /// Bit of DevicePose::buttons that ends the session while held.
 inline constexpr std::uint32_t kDeviceAbortButton = 1U;
+/// Bits of DevicePose::buttons for the foot pedals: the loop's cutting and coagulating current.
+inline constexpr std::uint32_t kDeviceCuttingPedal = 2U;
+inline constexpr std::uint32_t kDeviceCoagulationPedal = 4U;
 
 /// The instrument state a pose describes: tip = position, axis = q·ẑ, up = q·ŷ (q normalised;
-/// a zero quaternion counts as the identity), valves from the pose, abort from
-/// kDeviceAbortButton.
+/// a zero quaternion counts as the identity), valves from the pose, abort and the pedals from
+/// the buttons. The loop stands at the sheath (the device moves the whole instrument).
 InstrumentState instrument_from_pose(const DevicePose& pose);
 
 /// The instrument driven by a device on the loopback interface. Alone (a headless live run)

@@ -9,9 +9,10 @@
 namespace viscera::sim {
 
 namespace {
+/// The slot of a held motion (advance … retract loop), −1 for pedals, toggles and abort.
 int held_index(ManualCommand command) {
   const int index = static_cast<int>(command);
-  return index < static_cast<int>(ManualCommand::ToggleInflow) ? index : -1;
+  return index < static_cast<int>(ManualCommand::CuttingPedal) ? index : -1;
 }
 }  // namespace
 
@@ -22,14 +23,16 @@ ManualControl::ManualControl(const InstrumentState& start, ManualRates rates)
 
 std::optional<ManualCommand> ManualControl::command_for_key(const std::string& key) {
   static const std::map<std::string, ManualCommand> keys = {
-      {"w", ManualCommand::Advance},      {"Up", ManualCommand::Advance},
-      {"s", ManualCommand::Withdraw},     {"Down", ManualCommand::Withdraw},
-      {"a", ManualCommand::SwingLeft},    {"Left", ManualCommand::SwingLeft},
-      {"d", ManualCommand::SwingRight},   {"Right", ManualCommand::SwingRight},
-      {"r", ManualCommand::SwingUp},      {"f", ManualCommand::SwingDown},
-      {"q", ManualCommand::RollLeft},     {"e", ManualCommand::RollRight},
-      {"i", ManualCommand::ToggleInflow}, {"o", ManualCommand::ToggleOutflow},
-      {"Escape", ManualCommand::Abort},   {"x", ManualCommand::Abort}};
+      {"w", ManualCommand::Advance},          {"Up", ManualCommand::Advance},
+      {"s", ManualCommand::Withdraw},         {"Down", ManualCommand::Withdraw},
+      {"a", ManualCommand::SwingLeft},        {"Left", ManualCommand::SwingLeft},
+      {"d", ManualCommand::SwingRight},       {"Right", ManualCommand::SwingRight},
+      {"r", ManualCommand::SwingUp},          {"f", ManualCommand::SwingDown},
+      {"q", ManualCommand::RollLeft},         {"e", ManualCommand::RollRight},
+      {"i", ManualCommand::ToggleInflow},     {"o", ManualCommand::ToggleOutflow},
+      {"t", ManualCommand::ExtendLoop},       {"g", ManualCommand::RetractLoop},
+      {"space", ManualCommand::CuttingPedal}, {"c", ManualCommand::CoagulationPedal},
+      {"Escape", ManualCommand::Abort},       {"x", ManualCommand::Abort}};
   const auto it = keys.find(key);
   if (it == keys.end()) return std::nullopt;
   return it->second;
@@ -38,12 +41,17 @@ std::optional<ManualCommand> ManualControl::command_for_key(const std::string& k
 std::string ManualControl::bindings_text() {
   return "W/S or Up/Down: advance/withdraw   A/D or Left/Right: swing left/right\n"
          "R/F: swing up/down   Q/E: roll the optics   I/O: inflow/outflow valve\n"
+         "T/G: extend/retract the loop   Space: cutting pedal   C: coagulation pedal\n"
          "Left-drag: swing the shaft   Wheel: advance/withdraw   Esc or X: abort";
 }
 
 void ManualControl::press(ManualCommand command) {
   if (const int index = held_index(command); index >= 0) {
     held_[index] = true;
+  } else if (command == ManualCommand::CuttingPedal) {
+    state_.electrode = true;
+  } else if (command == ManualCommand::CoagulationPedal) {
+    state_.coagulation = true;
   } else if (command == ManualCommand::ToggleInflow) {
     state_.inflow = state_.inflow > 0.0 ? 0.0 : 1.0;
   } else if (command == ManualCommand::ToggleOutflow) {
@@ -55,6 +63,8 @@ void ManualControl::press(ManualCommand command) {
 
 void ManualControl::release(ManualCommand command) {
   if (const int index = held_index(command); index >= 0) held_[index] = false;
+  if (command == ManualCommand::CuttingPedal) state_.electrode = false;
+  if (command == ManualCommand::CoagulationPedal) state_.coagulation = false;
 }
 
 void ManualControl::drag(double dx, double dy) {
@@ -94,6 +104,11 @@ const InstrumentState& ManualControl::advance(double dt) {
   const double spin =
       rate(held(ManualCommand::RollLeft) - held(ManualCommand::RollRight), analog_.roll);
   if (spin != 0.0) roll(spin * rates_.roll * dt);
+  const double travel = held(ManualCommand::ExtendLoop) - held(ManualCommand::RetractLoop);
+  if (travel != 0.0) {
+    state_.loop_extension =
+        std::clamp(state_.loop_extension + travel * rates_.loop * dt, 0.0, kMaxLoopExtension);
+  }
   return state_;
 }
 

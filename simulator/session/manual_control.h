@@ -23,9 +23,13 @@ enum class ManualCommand {
   SwingDown,
   RollLeft,  ///< optics rolled about the shaft (the 30° view sweeps round)
   RollRight,
-  ToggleInflow,   ///< inflow valve open ↔ closed
-  ToggleOutflow,  ///< outflow valve open ↔ closed
-  Abort           ///< the trainee ends the session
+  ExtendLoop,        ///< the resection loop out in front of the sheath
+  RetractLoop,       ///< the loop back towards the sheath (the cutting stroke)
+  CuttingPedal,      ///< held: the loop's cutting current is on
+  CoagulationPedal,  ///< held: the loop's coagulating current is on
+  ToggleInflow,      ///< inflow valve open ↔ closed
+  ToggleOutflow,     ///< outflow valve open ↔ closed
+  Abort              ///< the trainee ends the session
 };
 
 /// Motion rates of the manual controls.
@@ -33,6 +37,7 @@ struct ManualRates {
   double advance = 0.01;  ///< m/s while an advance key is held
   double swing = 0.5;     ///< rad/s while a swing key is held
   double roll = 1.0;      ///< rad/s while a roll key is held
+  double loop = 0.01;     ///< m/s of loop travel while a loop key is held
   double mouse = 0.005;   ///< rad per pixel of mouse drag
   double wheel = 0.001;   ///< m per wheel notch
 };
@@ -57,7 +62,8 @@ class ManualControl {
   /// The bindings as the window shows them, one line each.
   static std::string bindings_text();
 
-  /// A key went down / up. Held motions act in advance(); toggles and abort act at once.
+  /// A key went down / up. Held motions act in advance(); pedals act while held; toggles and
+  /// abort act at once.
   void press(ManualCommand command);
   void release(ManualCommand command);
   /// A mouse drag of (dx, dy) pixels with the left button swings the shaft.
@@ -78,7 +84,7 @@ class ManualControl {
 
   InstrumentState state_;
   ManualRates rates_;
-  bool held_[8] = {};
+  bool held_[static_cast<int>(ManualCommand::CuttingPedal)] = {};
   AnalogMotion analog_;
 };
 

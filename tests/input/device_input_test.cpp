@@ -42,7 +42,14 @@ TEST(DeviceInput, pose_quaternion_turns_the_rest_frame_into_the_scene) {
   pose.orientation = {0, 0, 0, 0};  // no orientation: the rest frame
   const InstrumentState aborting = instrument_from_pose(pose);
   EXPECT_TRUE(aborting.abort);
+  EXPECT_FALSE(aborting.electrode);
   EXPECT_EQ(aborting.axis, core::Vec3::UnitZ());
+  pose.buttons = kDeviceCuttingPedal;
+  EXPECT_TRUE(instrument_from_pose(pose).electrode);
+  EXPECT_FALSE(instrument_from_pose(pose).coagulation);
+  pose.buttons = kDeviceCoagulationPedal;
+  EXPECT_TRUE(instrument_from_pose(pose).coagulation);
+  EXPECT_FALSE(instrument_from_pose(pose).electrode);
 }
 
 TEST(DeviceInput, a_device_on_loopback_drives_a_live_session_and_feels_the_tissue) {

@@ -29,6 +29,32 @@ TEST(ManualControl, held_keys_move_the_tip_along_the_shaft_at_the_set_rate) {
   EXPECT_NEAR(control.state().tip.x(), 0.015, 1e-12);
 }
 
+TEST(ManualControl, pedals_act_while_held_and_the_loop_travels_within_its_range) {
+  ManualRates rates;
+  rates.loop = 0.01;
+  ManualControl control(InstrumentState{}, rates);
+  control.press(*ManualControl::command_for_key("space"));
+  EXPECT_TRUE(control.state().electrode);
+  control.release(ManualCommand::CuttingPedal);
+  EXPECT_FALSE(control.state().electrode);
+  control.press(*ManualControl::command_for_key("c"));
+  EXPECT_TRUE(control.state().coagulation);
+  control.release(ManualCommand::CoagulationPedal);
+  EXPECT_FALSE(control.state().coagulation);
+  control.press(*ManualControl::command_for_key("t"));
+  control.advance(0.5);
+  EXPECT_NEAR(control.state().loop_extension, 0.005, 1e-15);
+  control.advance(10.0);
+  EXPECT_EQ(control.state().loop_extension, kMaxLoopExtension);  // the working element's stop
+  control.release(ManualCommand::ExtendLoop);
+  control.press(*ManualControl::command_for_key("g"));
+  control.advance(0.5);
+  EXPECT_NEAR(control.state().loop_extension, kMaxLoopExtension - 0.005, 1e-15);
+  control.advance(10.0);
+  EXPECT_EQ(control.state().loop_extension, 0.0);
+  EXPECT_EQ(control.state().tip, core::Vec3::Zero());  // the loop moves, not the sheath
+}
+
 TEST(ManualControl, swing_and_roll_turn_by_rate_times_time_and_keep_a_frame) {
   InstrumentState start;
   start.axis = core::Vec3::UnitX();

@@ -1,14 +1,18 @@
 #include "simulator/fluid/flow_grid.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 #include "core/error.h"
+#include "simulator/fluid/face_sampler.h"
 
 namespace viscera::sim::fluid {
 namespace {
 
 constexpr std::array<std::array<int, 3>, 3> kAxis{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+
+std::atomic<std::uint64_t> next_labelling{1};
 
 }  // namespace
 
@@ -30,52 +34,52 @@ FlowGrid::FlowGrid(int nx, int ny, int nz, double cell_size, const core::Vec3& o
 
 void FlowGrid::set_cell(int i, int j, int k, FlowCell cell, const core::Vec3& velocity) {
   const auto c = static_cast<std::size_t>(cell_index(i, j, k));
+  if (cells_[c] != cell) relabelled_ = true;
   cells_[c] = cell;
   solid_velocity_[c] = cell == FlowCell::Solid ? velocity : core::Vec3::Zero();
 }
 
-FlowCell FlowGrid::cell(int i, int j, int k) const {
-  return cells_[static_cast<std::size_t>(cell_index(i, j, k))];
-}
-
-FlowCell FlowGrid::cell_or_solid(int i, int j, int k) const {
-  if (i < 0 || j < 0 || k < 0 || i >= nx_ || j >= ny_ || k >= nz_) return FlowCell::Solid;
-  return cell(i, j, k);
-}
-
-const core::Vec3& FlowGrid::solid_velocity(int i, int j, int k) const {
-  static const core::Vec3 rest = core::Vec3::Zero();
-  if (i < 0 || j < 0 || k < 0 || i >= nx_ || j >= ny_ || k >= nz_) return rest;
-  return solid_velocity_[static_cast<std::size_t>(cell_index(i, j, k))];
+void FlowGrid::update_face(int axis, int i, int j, int k) {
+  const auto& e = kAxis[static_cast<std::size_t>(axis)];
+  const auto f = static_cast<std::size_t>(face_dims(axis).index(i, j, k));
+  // A planar grid has no z flow: its z faces are walls.
+  if (axis == 2 && planar()) {
+    states_[axis][f] = FaceState::Inside;
+    velocity_[axis][f] = 0.0;
+    return;
+  }
+  const bool solid_a = cell_or_solid(i - e[0], j - e[1], k - e[2]) == FlowCell::Solid;
+  const bool solid_b = cell_or_solid(i, j, k) == FlowCell::Solid;
+  if (!solid_a && !solid_b) {
+    states_[axis][f] = FaceState::Active;
+    return;
+  }
+  const double va = solid_velocity(i - e[0], j - e[1], k - e[2])[axis];
+  const double vb = solid_velocity(i, j, k)[axis];
+  states_[axis][f] = solid_a && solid_b ? FaceState::Inside : FaceState::Prescribed;
+  velocity_[axis][f] = solid_a && solid_b ? 0.5 * (va + vb) : (solid_a ? va : vb);
 }
 
 void FlowGrid::update_faces() {
+  if (relabelled_ || labelling_ == 0) labelling_ = next_labelling.fetch_add(1);
+  relabelled_ = false;
   for (int axis = 0; axis < 3; ++axis) {
     const FaceDims d = face_dims(axis);
+    for (int k = 0; k < d.z; ++k)
+      for (int j = 0; j < d.y; ++j)
+        for (int i = 0; i < d.x; ++i)
+          update_face(axis, i, j, k);
+  }
+}
+
+void FlowGrid::set_solid_velocity(int i, int j, int k, const core::Vec3& velocity) {
+  if (cell(i, j, k) != FlowCell::Solid)
+    throw core::UsageError("only a solid cell of the flow grid has a velocity of its own");
+  solid_velocity_[static_cast<std::size_t>(cell_index(i, j, k))] = velocity;
+  for (int axis = 0; axis < 3; ++axis) {
     const auto& e = kAxis[static_cast<std::size_t>(axis)];
-    for (int k = 0; k < d.z; ++k) {
-      for (int j = 0; j < d.y; ++j) {
-        for (int i = 0; i < d.x; ++i) {
-          const bool solid_a = cell_or_solid(i - e[0], j - e[1], k - e[2]) == FlowCell::Solid;
-          const bool solid_b = cell_or_solid(i, j, k) == FlowCell::Solid;
-          const auto f = static_cast<std::size_t>(d.index(i, j, k));
-          // A planar grid has no z flow: its z faces are walls.
-          if (axis == 2 && planar()) {
-            states_[axis][f] = FaceState::Inside;
-            velocity_[axis][f] = 0.0;
-            continue;
-          }
-          if (!solid_a && !solid_b) {
-            states_[axis][f] = FaceState::Active;
-            continue;
-          }
-          const double va = solid_velocity(i - e[0], j - e[1], k - e[2])[axis];
-          const double vb = solid_velocity(i, j, k)[axis];
-          states_[axis][f] = solid_a && solid_b ? FaceState::Inside : FaceState::Prescribed;
-          velocity_[axis][f] = solid_a && solid_b ? 0.5 * (va + vb) : (solid_a ? va : vb);
-        }
-      }
-    }
+    update_face(axis, i, j, k);
+    update_face(axis, i + e[0], j + e[1], k + e[2]);
   }
 }
 
@@ -91,39 +95,7 @@ double FlowGrid::sample(int axis, const core::Vec3& point) const {
 
 double FlowGrid::sample(int axis, const std::vector<double>& v, const core::Vec3& point,
                         double* low, double* high) const {
-  const FaceDims d = face_dims(axis);
-  const int n[3] = {d.x, d.y, d.z};
-  const int stride[3] = {1, d.x, d.x * d.y};
-  const double inverse_h = 1.0 / h_;
-  int base = 0;
-  double t[3];
-  int step[3];  // index offset to the upper corner along each axis (0 on a one-face axis)
-  for (int a = 0; a < 3; ++a) {
-    // Face coordinates: faces of this component sit at whole indices along its own axis and at
-    // half indices across it.
-    double c = (point[a] - origin_[a]) * inverse_h - (a == axis ? 0.0 : 0.5);
-    c = std::clamp(c, 0.0, static_cast<double>(n[a] - 1));
-    const int lo = std::min(static_cast<int>(c), std::max(n[a] - 2, 0));
-    t[a] = n[a] > 1 ? c - lo : 0.0;
-    step[a] = n[a] > 1 ? stride[a] : 0;
-    base += lo * stride[a];
-  }
-  const double* p = v.data() + base;
-  const double c000 = p[0], c100 = p[step[0]];
-  const double c010 = p[step[1]], c110 = p[step[0] + step[1]];
-  const double c001 = p[step[2]], c101 = p[step[0] + step[2]];
-  const double c011 = p[step[1] + step[2]], c111 = p[step[0] + step[1] + step[2]];
-  if (low != nullptr && high != nullptr) {
-    *low = std::min({c000, c100, c010, c110, c001, c101, c011, c111});
-    *high = std::max({c000, c100, c010, c110, c001, c101, c011, c111});
-  }
-  const double x00 = c000 + t[0] * (c100 - c000);
-  const double x10 = c010 + t[0] * (c110 - c010);
-  const double x01 = c001 + t[0] * (c101 - c001);
-  const double x11 = c011 + t[0] * (c111 - c011);
-  const double y0 = x00 + t[1] * (x10 - x00);
-  const double y1 = x01 + t[1] * (x11 - x01);
-  return y0 + t[2] * (y1 - y0);
+  return FaceSampler(*this, axis)(v.data(), point, low, high);
 }
 
 core::Vec3 FlowGrid::velocity_at(const core::Vec3& point) const {

@@ -58,14 +58,31 @@ class FlowGrid {
   /// Call update_faces() after a batch of labels.
   void set_cell(int i, int j, int k, FlowCell cell,
                 const core::Vec3& velocity = core::Vec3::Zero());
-  FlowCell cell(int i, int j, int k) const;
+  FlowCell cell(int i, int j, int k) const {
+    return cells_[static_cast<std::size_t>(cell_index(i, j, k))];
+  }
   /// Solid (at rest) outside the grid.
-  FlowCell cell_or_solid(int i, int j, int k) const;
-  const core::Vec3& solid_velocity(int i, int j, int k) const;
+  FlowCell cell_or_solid(int i, int j, int k) const {
+    if (i < 0 || j < 0 || k < 0 || i >= nx_ || j >= ny_ || k >= nz_) return FlowCell::Solid;
+    return cell(i, j, k);
+  }
+  /// A solid cell's own velocity, m/s (zero outside the grid).
+  core::Vec3 solid_velocity(int i, int j, int k) const {
+    if (i < 0 || j < 0 || k < 0 || i >= nx_ || j >= ny_ || k >= nz_) return core::Vec3::Zero();
+    return solid_velocity_[static_cast<std::size_t>(cell_index(i, j, k))];
+  }
+  /// Changes the velocity of solid cell (i,j,k) (m/s) and writes it into its six faces at once,
+  /// without relabelling: the sheath's inflow from one step to the next. Throws
+  /// core::UsageError for a cell that is not solid.
+  void set_solid_velocity(int i, int j, int k, const core::Vec3& velocity);
 
   /// Recomputes each face's state from the cells and writes the solid velocities into the
   /// prescribed and inside faces; active faces keep their values.
   void update_faces();
+  /// A number no other labelling of any grid has had: it changes with the update_faces() that
+  /// follows a change of any cell's label (not of a solid's velocity alone), so a solver's
+  /// structure built for one labelling knows when it is out of date.
+  std::uint64_t labelling() const { return labelling_; }
   const std::vector<FaceState>& face_states(int axis) const { return states_[axis]; }
 
   /// Face velocities of component `axis` (0 x, 1 y, 2 z), m/s.
@@ -100,6 +117,11 @@ class FlowGrid {
   std::array<std::vector<double>, 3> velocity_;
   std::array<std::vector<FaceState>, 3> states_;
   std::vector<double> pressure_;
+  /// The state and, for a face beside a solid, the velocity of face (i,j,k) of `axis`.
+  void update_face(int axis, int i, int j, int k);
+
+  std::uint64_t labelling_ = 0;
+  bool relabelled_ = true;  ///< a label changed since the last update_faces()
 };
 
 }  // namespace viscera::sim::fluid

@@ -2,10 +2,12 @@
 /// Parallel loops over the lines of a 3D array (all i for one (j,k)), spread over the worker
 /// threads by OpenMP's static schedule: the domain decomposition with a meeting point at the end
 /// of each loop that seed 000 §9 describes for the fluid solver. Sums are reduced per line and
-/// then added in line order, so every result is bit-identical for any number of threads.
+/// then added in line order, so every result is bit-identical for any number of threads. Loops
+/// over a compact list (the active faces of the viscous step) go by fixed-size chunks alike.
 
 #include <omp.h>
 
+#include <algorithm>
 #include <vector>
 
 namespace viscera::sim::fluid {
@@ -28,6 +30,31 @@ double sum_over_lines(int ny, int nz, int threads, std::vector<double>& partials
 #pragma omp parallel for schedule(static) num_threads(threads > 0 ? threads : omp_get_max_threads())
   for (int l = 0; l < lines; ++l)
     partials[static_cast<std::size_t>(l)] = line(l % ny, l / ny);
+  double total = 0.0;
+  for (const double p : partials)
+    total += p;
+  return total;
+}
+
+/// Calls `range(begin, end)` over `count` items cut into chunks of `chunk`, in parallel.
+template <typename Range>
+void for_each_chunk(int count, int chunk, int threads, const Range& range) {
+  const int chunks = (count + chunk - 1) / chunk;
+#pragma omp parallel for schedule(static) num_threads(threads > 0 ? threads : omp_get_max_threads())
+  for (int c = 0; c < chunks; ++c)
+    range(c * chunk, std::min(count, (c + 1) * chunk));
+}
+
+/// Σ over chunks of `range(begin, end)` (each chunk's sum), added in chunk order: the chunks do
+/// not depend on the thread count, so neither does the sum's rounding.
+template <typename Range>
+double sum_over_chunks(int count, int chunk, int threads, std::vector<double>& partials,
+                       const Range& range) {
+  const int chunks = (count + chunk - 1) / chunk;
+  partials.resize(static_cast<std::size_t>(chunks));
+#pragma omp parallel for schedule(static) num_threads(threads > 0 ? threads : omp_get_max_threads())
+  for (int c = 0; c < chunks; ++c)
+    partials[static_cast<std::size_t>(c)] = range(c * chunk, std::min(count, (c + 1) * chunk));
   double total = 0.0;
   for (const double p : partials)
     total += p;

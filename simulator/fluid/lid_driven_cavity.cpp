@@ -92,10 +92,11 @@ CavityResult run_lid_driven_cavity(const CavityRun& run, core::Progress& progres
   progress.begin_stage("lid-driven cavity at Re " + std::to_string(static_cast<int>(run.reynolds)),
                        max_steps);
   std::vector<double> before_u, before_v;
+  FlowSolver solver;
   for (int s = 0; s < max_steps && !result.steady; ++s) {
     before_u = grid.velocity(0);
     before_v = grid.velocity(1);
-    const FlowStepReport report = step_flow(grid, settings);
+    const FlowStepReport report = solver.step(grid, settings);
     result.pressure_iterations += report.pressure_iterations;
     double change = 0.0;
     for (std::size_t f = 0; f < before_u.size(); ++f)

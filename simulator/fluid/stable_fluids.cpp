@@ -9,7 +9,7 @@
 
 namespace viscera::sim::fluid {
 
-FlowStepReport step_flow(FlowGrid& grid, const FlowSettings& settings) {
+FlowStepReport FlowSolver::step(FlowGrid& grid, const FlowSettings& settings) {
   if (!(settings.time_step > 0.0) || !std::isfinite(settings.time_step))
     throw core::UsageError("the flow's time step must be a positive number of seconds");
   if (!(settings.viscosity >= 0.0) || !std::isfinite(settings.viscosity))
@@ -20,7 +20,7 @@ FlowStepReport step_flow(FlowGrid& grid, const FlowSettings& settings) {
   diffusion.viscosity = settings.viscosity;
   diffusion.time_step = settings.time_step;
   diffusion.threads = settings.threads;
-  report.diffusion_iterations = diffuse(grid, diffusion);
+  report.diffusion_iterations = diffusion_.diffuse(grid, diffusion);
   // Body forces last, just before the projection: a conservative force (gravity in a closed
   // cavity) is then taken up by the pressure whole, and viscosity never acts on it.
   if (!settings.acceleration.isZero()) {
@@ -37,11 +37,16 @@ FlowStepReport step_flow(FlowGrid& grid, const FlowSettings& settings) {
   projection.divergence_tolerance = settings.divergence_tolerance;
   projection.max_iterations = settings.max_pressure_iterations;
   projection.threads = settings.threads;
-  const ProjectionResult projected = project(grid, projection);
+  const ProjectionResult projected = projector_.project(grid, projection);
   report.pressure_iterations = projected.iterations;
   report.converged = projected.converged;
   report.max_divergence = projected.max_divergence;
   return report;
+}
+
+FlowStepReport step_flow(FlowGrid& grid, const FlowSettings& settings) {
+  FlowSolver solver;
+  return solver.step(grid, settings);
 }
 
 }  // namespace viscera::sim::fluid

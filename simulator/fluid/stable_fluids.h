@@ -7,6 +7,8 @@
 /// the whole force) instead of stirring where viscosity would act on the unprojected fall.
 
 #include "simulator/fluid/flow_grid.h"
+#include "simulator/fluid/pressure_projection.h"
+#include "simulator/fluid/viscous_diffusion.h"
 
 namespace viscera::sim::fluid {
 
@@ -29,9 +31,21 @@ struct FlowStepReport {
   double max_divergence = 0.0;  ///< 1/s, after the step
 };
 
-/// Advances `grid`'s velocity and pressure by settings.time_step. The faces must be up to date
-/// with the cells (FlowGrid::update_faces after relabelling). Throws core::UsageError for a
-/// non-positive step or a negative viscosity.
+/// The flow solver for repeated steps: keeps the viscous step's face lists and the projection's
+/// multigrid hierarchy while the grid's labels stay.
+class FlowSolver {
+ public:
+  /// Advances `grid`'s velocity and pressure by settings.time_step. The faces must be up to date
+  /// with the cells (FlowGrid::update_faces after relabelling). Throws core::UsageError for a
+  /// non-positive step or a negative viscosity.
+  FlowStepReport step(FlowGrid& grid, const FlowSettings& settings);
+
+ private:
+  ViscousDiffusion diffusion_;
+  PressureProjector projector_;
+};
+
+/// One step with a fresh FlowSolver (the hierarchy is built for this step alone).
 FlowStepReport step_flow(FlowGrid& grid, const FlowSettings& settings);
 
 }  // namespace viscera::sim::fluid

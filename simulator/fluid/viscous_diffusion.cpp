@@ -1,6 +1,5 @@
 #include "simulator/fluid/viscous_diffusion.h"
 
-#include <array>
 #include <cmath>
 
 #include "simulator/fluid/grid_lines.h"
@@ -12,168 +11,172 @@ namespace {
 constexpr std::array<std::array<int, 3>, 6> kNeighbours{
     {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}}};
 
-/// (I − α∇²) over the active faces of one component, with its constant part (prescribed and
-/// ghost neighbours) moved to the right-hand side.
-class DiffusionMatrix {
- public:
-  DiffusionMatrix(const FlowGrid& grid, int axis, double alpha)
-      : d_(grid.face_dims(axis)),
-        states_(grid.face_states(axis)),
-        alpha_(alpha),
-        planar_(grid.planar()) {
-    const auto& u = grid.velocity(axis);
-    diagonal_.assign(u.size(), 0.0);
-    rhs_.assign(u.size(), 0.0);
-    for (int k = 0; k < d_.z; ++k) {
-      for (int j = 0; j < d_.y; ++j) {
-        for (int i = 0; i < d_.x; ++i) {
-          const auto f = static_cast<std::size_t>(d_.index(i, j, k));
-          if (states_[f] != FaceState::Active) continue;
-          double weight = 0.0, constant = 0.0;
-          for (int n = 0; n < neighbour_count(); ++n) {
-            const auto& [di, dj, dk] = kNeighbours[static_cast<std::size_t>(n)];
-            const int a = i + di, b = j + dj, c = k + dk;
-            if (a < 0 || b < 0 || c < 0 || a >= d_.x || b >= d_.y || c >= d_.z) {
-              weight += 2.0;  // past the grid: a wall at rest
-              continue;
-            }
-            const auto g = static_cast<std::size_t>(d_.index(a, b, c));
-            switch (states_[g]) {
-              case FaceState::Active:
-                weight += 1.0;
-                break;
-              case FaceState::Prescribed:
-                weight += 1.0;
-                constant += u[g];
-                break;
-              case FaceState::Inside:  // ghost 2·u_wall − u across the wall
-                weight += 2.0;
-                constant += 2.0 * u[g];
-                break;
-            }
-          }
-          diagonal_[f] = 1.0 + alpha * weight;
-          rhs_[f] = u[f] + alpha * constant;
-        }
-      }
-    }
-  }
-
-  const FaceDims& dims() const { return d_; }
-  bool active(std::size_t f) const { return states_[f] == FaceState::Active; }
-  double diagonal(std::size_t f) const { return diagonal_[f]; }
-  double rhs(std::size_t f) const { return rhs_[f]; }
-
-  /// (A x) on line (j, k) into `out`; returns Σ y·(A x) over the line.
-  double apply_line(int j, int k, const std::vector<double>& x, std::vector<double>& out,
-                    const std::vector<double>& y) const {
-    double dot = 0.0;
-    for (int i = 0; i < d_.x; ++i) {
-      const auto f = static_cast<std::size_t>(d_.index(i, j, k));
-      if (!active(f)) continue;
-      double s = diagonal_[f] * x[f];
-      for (int n = 0; n < neighbour_count(); ++n) {
-        const auto& [di, dj, dk] = kNeighbours[static_cast<std::size_t>(n)];
-        const int a = i + di, b = j + dj, c = k + dk;
-        if (a < 0 || b < 0 || c < 0 || a >= d_.x || b >= d_.y || c >= d_.z) continue;
-        const auto g = static_cast<std::size_t>(d_.index(a, b, c));
-        if (active(g)) s -= alpha_ * x[g];
-      }
-      out[f] = s;
-      dot += y[f] * s;
-    }
-    return dot;
-  }
-
- private:
-  int neighbour_count() const { return planar_ ? 4 : 6; }
-
-  FaceDims d_;
-  const std::vector<FaceState>& states_;
-  double alpha_;
-  bool planar_;
-  std::vector<double> diagonal_, rhs_;
-};
+/// Unknowns per chunk of the parallel loops and sums.
+constexpr int kChunk = 2048;
 
 }  // namespace
 
-int diffuse(FlowGrid& grid, const DiffusionSettings& settings) {
+void ViscousDiffusion::build(const FlowGrid& grid) {
+  labelling_ = grid.labelling();
+  const int neighbours = grid.planar() ? 4 : 6;
+  for (int axis = 0; axis < 3; ++axis) {
+    Component& c = components_[static_cast<std::size_t>(axis)];
+    c = Component{};
+    if (axis == 2 && grid.planar()) continue;
+    const FaceDims d = grid.face_dims(axis);
+    const auto& states = grid.face_states(axis);
+    std::vector<int> unknown(states.size(), -1);
+    for (std::size_t f = 0; f < states.size(); ++f) {
+      if (states[f] != FaceState::Active) continue;
+      unknown[f] = static_cast<int>(c.faces.size());
+      c.faces.push_back(static_cast<int>(f));
+    }
+    const int m = static_cast<int>(c.faces.size());
+    c.next.assign(c.faces.size(), {m, m, m, m, m, m});
+    c.weight.assign(c.faces.size(), 0.0);
+    c.boundary_start.assign(c.faces.size() + 1, 0);
+    for (int u = 0; u < m; ++u) {
+      const int f = c.faces[static_cast<std::size_t>(u)];
+      const int i = f % d.x, j = (f / d.x) % d.y, k = f / (d.x * d.y);
+      double weight = 0.0;
+      for (int n = 0; n < neighbours; ++n) {
+        const auto& [di, dj, dk] = kNeighbours[static_cast<std::size_t>(n)];
+        const int a = i + di, b = j + dj, e = k + dk;
+        if (a < 0 || b < 0 || e < 0 || a >= d.x || b >= d.y || e >= d.z) {
+          weight += 2.0;  // past the grid: a wall at rest
+          continue;
+        }
+        const int g = d.index(a, b, e);
+        switch (states[static_cast<std::size_t>(g)]) {
+          case FaceState::Active:
+            weight += 1.0;
+            c.next[static_cast<std::size_t>(u)][static_cast<std::size_t>(n)] =
+                unknown[static_cast<std::size_t>(g)];
+            break;
+          case FaceState::Prescribed:
+            weight += 1.0;
+            c.boundary.emplace_back(g, 1.0);
+            break;
+          case FaceState::Inside:  // ghost 2·u_wall − u across the wall
+            weight += 2.0;
+            c.boundary.emplace_back(g, 2.0);
+            break;
+        }
+      }
+      c.weight[static_cast<std::size_t>(u)] = weight;
+      c.boundary_start[static_cast<std::size_t>(u) + 1] = static_cast<int>(c.boundary.size());
+    }
+  }
+}
+
+int ViscousDiffusion::diffuse(FlowGrid& grid, const DiffusionSettings& settings) {
   const double h = grid.cell_size();
   const double alpha = settings.viscosity * settings.time_step / (h * h);
   if (!(alpha > 0.0)) return 0;
+  if (grid.labelling() != labelling_) build(grid);
+  const int threads = settings.threads;
   int iterations = 0;
-  std::vector<double> partials;
   for (int axis = 0; axis < (grid.planar() ? 2 : 3); ++axis) {
-    const DiffusionMatrix A(grid, axis, alpha);
-    const FaceDims d = A.dims();
-    std::vector<double>& x = grid.velocity(axis);
-    const std::size_t n = x.size();
-    std::vector<double> r(n, 0.0), z(n, 0.0), p(n, 0.0), q(n, 0.0);
-    // x starts at the advected velocity, a close guess for small α.
-    for_each_line(d.y, d.z, settings.threads, [&](int j, int k) { A.apply_line(j, k, x, q, q); });
-    const auto line_start = [&](int j, int k) {
-      double rz = 0.0;
-      for (int i = 0; i < d.x; ++i) {
-        const auto f = static_cast<std::size_t>(d.index(i, j, k));
-        if (!A.active(f)) continue;
-        r[f] = A.rhs(f) - q[f];
-        z[f] = r[f] / A.diagonal(f);
-        p[f] = z[f];
-        rz += r[f] * z[f];
-      }
-      return rz;
+    const Component& c = components_[static_cast<std::size_t>(axis)];
+    const int m = static_cast<int>(c.faces.size());
+    if (m == 0) continue;
+    std::vector<double>& u = grid.velocity(axis);
+    for (auto* v : {&x_, &b_, &r_, &z_, &p_, &q_})
+      v->assign(static_cast<std::size_t>(m) + 1, 0.0);
+    const auto diagonal = [&](int v) {
+      return 1.0 + alpha * c.weight[static_cast<std::size_t>(v)];
     };
-    double rz = sum_over_lines(d.y, d.z, settings.threads, partials, line_start);
-    const double b_norm =
-        std::sqrt(sum_over_lines(d.y, d.z, settings.threads, partials, [&](int j, int k) {
-          double s = 0.0;
-          for (int i = 0; i < d.x; ++i) {
-            const auto f = static_cast<std::size_t>(d.index(i, j, k));
-            if (A.active(f)) s += A.rhs(f) * A.rhs(f);
-          }
-          return s;
-        }));
-    const double target = settings.relative_tolerance * b_norm;
+    // (A y) into q over [begin, end); returns Σ y·(A y) there.
+    const auto apply = [&](const std::vector<double>& y, int begin, int end) {
+      double dot = 0.0;
+      for (int v = begin; v < end; ++v) {
+        const auto& n = c.next[static_cast<std::size_t>(v)];
+        const double around =
+            y[static_cast<std::size_t>(n[0])] + y[static_cast<std::size_t>(n[1])] +
+            y[static_cast<std::size_t>(n[2])] + y[static_cast<std::size_t>(n[3])] +
+            y[static_cast<std::size_t>(n[4])] + y[static_cast<std::size_t>(n[5])];
+        const double s = diagonal(v) * y[static_cast<std::size_t>(v)] - alpha * around;
+        q_[static_cast<std::size_t>(v)] = s;
+        dot += y[static_cast<std::size_t>(v)] * s;
+      }
+      return dot;
+    };
+    // x starts at the advected velocity, a close guess for small α; the fixed neighbours (walls,
+    // the inflow, ghosts) move to the right-hand side.
+    const double b_norm2 = sum_over_chunks(m, kChunk, threads, partials_, [&](int begin, int end) {
+      double s = 0.0;
+      for (int v = begin; v < end; ++v) {
+        const auto vi = static_cast<std::size_t>(v);
+        x_[vi] = u[static_cast<std::size_t>(c.faces[vi])];
+        double constant = 0.0;
+        for (int t = c.boundary_start[vi]; t < c.boundary_start[vi + 1]; ++t) {
+          const auto& [g, factor] = c.boundary[static_cast<std::size_t>(t)];
+          constant += factor * u[static_cast<std::size_t>(g)];
+        }
+        b_[vi] = x_[vi] + alpha * constant;
+        s += b_[vi] * b_[vi];
+      }
+      return s;
+    });
+    for_each_chunk(m, kChunk, threads, [&](int begin, int end) { apply(x_, begin, end); });
+    double rz = sum_over_chunks(m, kChunk, threads, partials_, [&](int begin, int end) {
+      double s = 0.0;
+      for (int v = begin; v < end; ++v) {
+        const auto vi = static_cast<std::size_t>(v);
+        r_[vi] = b_[vi] - q_[vi];
+        z_[vi] = r_[vi] / diagonal(v);
+        p_[vi] = z_[vi];
+        s += r_[vi] * z_[vi];
+      }
+      return s;
+    });
+    const double target = settings.relative_tolerance * std::sqrt(b_norm2);
     for (int it = 0; it < settings.max_iterations; ++it) {
       const double r_norm =
-          std::sqrt(sum_over_lines(d.y, d.z, settings.threads, partials, [&](int j, int k) {
+          std::sqrt(sum_over_chunks(m, kChunk, threads, partials_, [&](int begin, int end) {
             double s = 0.0;
-            for (int i = 0; i < d.x; ++i) {
-              const auto f = static_cast<std::size_t>(d.index(i, j, k));
-              s += r[f] * r[f];
-            }
+            for (int v = begin; v < end; ++v)
+              s += r_[static_cast<std::size_t>(v)] * r_[static_cast<std::size_t>(v)];
             return s;
           }));
       if (r_norm <= target) break;
-      const double pq = sum_over_lines(d.y, d.z, settings.threads, partials,
-                                       [&](int j, int k) { return A.apply_line(j, k, p, q, p); });
+      const double pq = sum_over_chunks(m, kChunk, threads, partials_,
+                                        [&](int begin, int end) { return apply(p_, begin, end); });
       if (!(pq > 0.0)) break;
       const double step = rz / pq;
       const double rz_next =
-          sum_over_lines(d.y, d.z, settings.threads, partials, [&](int j, int k) {
+          sum_over_chunks(m, kChunk, threads, partials_, [&](int begin, int end) {
             double s = 0.0;
-            for (int i = 0; i < d.x; ++i) {
-              const auto f = static_cast<std::size_t>(d.index(i, j, k));
-              if (!A.active(f)) continue;
-              x[f] += step * p[f];
-              r[f] -= step * q[f];
-              z[f] = r[f] / A.diagonal(f);
-              s += r[f] * z[f];
+            for (int v = begin; v < end; ++v) {
+              const auto vi = static_cast<std::size_t>(v);
+              x_[vi] += step * p_[vi];
+              r_[vi] -= step * q_[vi];
+              z_[vi] = r_[vi] / diagonal(v);
+              s += r_[vi] * z_[vi];
             }
             return s;
           });
       const double beta = rz_next / rz;
       rz = rz_next;
-      for_each_line(d.y, d.z, settings.threads, [&](int j, int k) {
-        for (int i = 0; i < d.x; ++i) {
-          const auto f = static_cast<std::size_t>(d.index(i, j, k));
-          if (A.active(f)) p[f] = z[f] + beta * p[f];
-        }
+      for_each_chunk(m, kChunk, threads, [&](int begin, int end) {
+        for (int v = begin; v < end; ++v)
+          p_[static_cast<std::size_t>(v)] =
+              z_[static_cast<std::size_t>(v)] + beta * p_[static_cast<std::size_t>(v)];
       });
       ++iterations;
     }
+    for_each_chunk(m, kChunk, threads, [&](int begin, int end) {
+      for (int v = begin; v < end; ++v)
+        u[static_cast<std::size_t>(c.faces[static_cast<std::size_t>(v)])] =
+            x_[static_cast<std::size_t>(v)];
+    });
   }
   return iterations;
+}
+
+int diffuse(FlowGrid& grid, const DiffusionSettings& settings) {
+  ViscousDiffusion diffusion;
+  return diffusion.diffuse(grid, settings);
 }
 
 }  // namespace viscera::sim::fluid

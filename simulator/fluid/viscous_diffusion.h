@@ -2,7 +2,13 @@
 /// The implicit viscous step of stable fluids (Stam 1999; seed 000 §2.2): (I − νΔt∇²)u' = u for
 /// each velocity component on its active faces, unconditionally stable. No-slip at solid cells:
 /// the velocity beside a wall takes the wall's, through a ghost value 2·u_wall − u across it, so
-/// a moving lid drags the flow. Solved matrix-free by Jacobi-preconditioned conjugate gradients.
+/// a moving lid drags the flow. Solved by Jacobi-preconditioned conjugate gradients over a
+/// compact list of the active faces and their neighbours, kept while the grid's labels stay
+/// (νΔt/h² is small for saline at millimetre cells, so a few iterations do).
+
+#include <array>
+#include <cstdint>
+#include <vector>
 
 #include "simulator/fluid/flow_grid.h"
 
@@ -16,8 +22,31 @@ struct DiffusionSettings {
   int threads = 0;  ///< worker threads; 0 = all cores
 };
 
-/// Diffuses every component of `grid`'s active face velocities; returns the CG iterations
-/// summed over the components (0 when ν is 0).
+/// The viscous step for repeated use: keeps each component's face lists while the grid's
+/// labelling (FlowGrid::labelling) stays.
+class ViscousDiffusion {
+ public:
+  /// Diffuses every component of `grid`'s active face velocities; returns the CG iterations
+  /// summed over the components (0 when ν is 0).
+  int diffuse(FlowGrid& grid, const DiffusionSettings& settings);
+
+ private:
+  /// One component's active faces in grid order, as the unknowns 0…m−1 (m: the zero slot).
+  struct Component {
+    std::vector<int> faces;                        ///< grid face index of each unknown
+    std::vector<std::array<int, 6>> next;          ///< neighbouring unknowns, m where none
+    std::vector<double> weight;                    ///< Σ neighbour weights of each unknown
+    std::vector<int> boundary_start;               ///< per unknown, into `boundary` (size m + 1)
+    std::vector<std::pair<int, double>> boundary;  ///< (grid face, factor) of fixed neighbours
+  };
+  void build(const FlowGrid& grid);
+
+  std::uint64_t labelling_ = 0;
+  std::array<Component, 3> components_;
+  std::vector<double> x_, b_, r_, z_, p_, q_, partials_;
+};
+
+/// Diffuses once with a fresh ViscousDiffusion.
 int diffuse(FlowGrid& grid, const DiffusionSettings& settings);
 
 }  // namespace viscera::sim::fluid

@@ -1,0 +1,335 @@
+#include "simulator/fluid/multigrid_poisson.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "simulator/fluid/grid_lines.h"
+
+namespace viscera::sim::fluid {
+namespace {
+
+constexpr std::uint8_t kSolid = static_cast<std::uint8_t>(FlowCell::Solid);
+constexpr std::uint8_t kFluid = static_cast<std::uint8_t>(FlowCell::Fluid);
+constexpr std::uint8_t kOpen = static_cast<std::uint8_t>(FlowCell::Open);
+
+constexpr double kJacobiWeight = 2.0 / 3.0;
+constexpr int kSweeps = 2;           ///< Jacobi sweeps before and after each coarse correction
+constexpr int kCoarsestSweeps = 30;  ///< on a level of at most 3 cells per axis
+
+/// Cell-centred trilinear transfer along one axis: the parent of fine index i and its other
+/// neighbour, with weights ¾ and ¼; an axis that is not halved maps i to itself with weight 1.
+struct AxisTransfer {
+  int parent, neighbour;
+  double parent_weight, neighbour_weight;
+};
+
+AxisTransfer axis_transfer(int i, bool halved) {
+  if (!halved) return {i, i, 1.0, 0.0};
+  const int parent = i / 2;
+  return {parent, i % 2 == 0 ? parent - 1 : parent + 1, 0.75, 0.25};
+}
+
+/// Index of the largest of `values` (lines' maxima) — the largest residual.
+double largest_of(const std::vector<double>& values) {
+  double m = 0.0;
+  for (const double v : values)
+    m = std::max(m, v);
+  return m;
+}
+
+}  // namespace
+
+MultigridPoisson::MultigridPoisson(const FlowGrid& grid) : planar_(grid.planar()) {
+  restriction_scale_ = planar_ ? 1.0 : 0.5;
+  int nx = grid.nx(), ny = grid.ny(), nz = grid.nz();
+  std::vector<std::uint8_t> labels(static_cast<std::size_t>(grid.cell_count()));
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i) {
+        const FlowCell cell = grid.cell(i, j, k);
+        labels[static_cast<std::size_t>(grid.cell_index(i, j, k))] =
+            static_cast<std::uint8_t>(cell);
+        has_open_ = has_open_ || cell == FlowCell::Open;
+      }
+  for (;;) {
+    levels_.emplace_back();
+    build_level(levels_.back(), nx, ny, nz, labels);
+    const int smallest = planar_ ? std::min(nx, ny) : std::min({nx, ny, nz});
+    if (smallest < 4) break;
+    // The next level: each coarse cell open if a child is, else fluid if a child is.
+    const int cx = (nx + 1) / 2, cy = (ny + 1) / 2, cz = planar_ ? 1 : (nz + 1) / 2;
+    std::vector<std::uint8_t> coarse(static_cast<std::size_t>(cx * cy * cz), kSolid);
+    for (int k = 0; k < nz; ++k)
+      for (int j = 0; j < ny; ++j)
+        for (int i = 0; i < nx; ++i) {
+          const std::uint8_t child = labels[static_cast<std::size_t>(i + nx * (j + ny * k))];
+          auto& parent =
+              coarse[static_cast<std::size_t>(i / 2 + cx * (j / 2 + cy * (planar_ ? 0 : k / 2)))];
+          if (child == kOpen || (child == kFluid && parent == kSolid)) parent = child;
+        }
+    labels = std::move(coarse);
+    nx = cx, ny = cy, nz = cz;
+  }
+  const Level& finest = levels_.front();
+  unknown_.assign(static_cast<std::size_t>(finest.nx) * finest.ny * finest.nz, 0);
+  for (int k = 0, c = 0; k < finest.nz; ++k)
+    for (int j = 0; j < finest.ny; ++j)
+      for (int i = 0; i < finest.nx; ++i, ++c)
+        unknown_[static_cast<std::size_t>(c)] = finest.inverse_diagonal[finest.at(i, j, k)] != 0.0;
+  // Each fine cell's renormalisation over the parents that are not solid.
+  for (std::size_t l = 0; l + 1 < levels_.size(); ++l) {
+    Level& fine = levels_[l];
+    const Level& coarse = levels_[l + 1];
+    for (int k = 0; k < fine.nz; ++k)
+      for (int j = 0; j < fine.ny; ++j)
+        for (int i = 0; i < fine.nx; ++i) {
+          const std::size_t f = fine.at(i, j, k);
+          if (fine.inverse_diagonal[f] == 0.0) continue;
+          const AxisTransfer tx = axis_transfer(i, true), ty = axis_transfer(j, true),
+                             tz = axis_transfer(k, !planar_);
+          double total = 0.0;
+          for (const auto& [ci, wi] : {std::pair{tx.parent, tx.parent_weight},
+                                       std::pair{tx.neighbour, tx.neighbour_weight}})
+            for (const auto& [cj, wj] : {std::pair{ty.parent, ty.parent_weight},
+                                         std::pair{ty.neighbour, ty.neighbour_weight}})
+              for (const auto& [ck, wk] : {std::pair{tz.parent, tz.parent_weight},
+                                           std::pair{tz.neighbour, tz.neighbour_weight}})
+                if (coarse.non_solid[coarse.at(ci, cj, ck)] != 0) total += wi * wj * wk;
+          fine.prolongation_scale[f] = total > 0.0 ? 1.0 / total : 0.0;
+        }
+  }
+  const std::size_t n = levels_.front().size();
+  p_.assign(n, 0.0), r_.assign(n, 0.0), d_.assign(n, 0.0), q_.assign(n, 0.0);
+}
+
+void MultigridPoisson::build_level(Level& level, int nx, int ny, int nz,
+                                   const std::vector<std::uint8_t>& labels) {
+  level.nx = nx, level.ny = ny, level.nz = nz;
+  level.sx = nx + 3, level.sy = ny + 3;
+  const auto size = static_cast<std::size_t>(level.sx * level.sy * (nz + 3));
+  std::vector<std::uint8_t> padded(size, kSolid);
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i)
+        padded[level.at(i, j, k)] = labels[static_cast<std::size_t>(i + nx * (j + ny * k))];
+  level.diagonal.assign(size, 0.0);
+  level.inverse_diagonal.assign(size, 0.0);
+  level.non_solid.assign(size, 0);
+  level.prolongation_scale.assign(size, 0.0);
+  level.x.assign(size, 0.0), level.b.assign(size, 0.0), level.r.assign(size, 0.0);
+  level.scratch.assign(size, 0.0);
+  const std::size_t sx = static_cast<std::size_t>(level.sx), sxy = sx * level.sy;
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i) {
+        const std::size_t c = level.at(i, j, k);
+        if (padded[c] == kOpen) level.non_solid[c] = 1;
+        if (padded[c] != kFluid) continue;
+        int sides = 0;
+        for (const std::size_t n : {c - 1, c + 1, c - sx, c + sx, c - sxy, c + sxy})
+          sides += padded[n] != kSolid;
+        if (sides == 0) continue;  // a fluid pocket sealed by solid cells: no equation
+        level.diagonal[c] = sides;
+        level.inverse_diagonal[c] = 1.0 / sides;
+        level.non_solid[c] = 1;
+      }
+}
+
+void MultigridPoisson::smooth(Level& level, int sweeps, bool from_zero, int threads) {
+  for (int sweep = 0; sweep < sweeps; ++sweep) {
+    const bool first = from_zero && sweep == 0;
+    for_each_line(level.ny, level.nz, threads, [&](int j, int k) {
+      const std::size_t row = level.at(0, j, k);
+      for (std::size_t c = row; c < row + static_cast<std::size_t>(level.nx); ++c) {
+        const double inverse = level.inverse_diagonal[c];
+        if (first) {
+          level.scratch[c] = kJacobiWeight * inverse * level.b[c];
+        } else {
+          level.scratch[c] =
+              inverse == 0.0
+                  ? 0.0
+                  : level.x[c] + kJacobiWeight * inverse * (level.b[c] - apply(level, level.x, c));
+        }
+      }
+    });
+    std::swap(level.x, level.scratch);
+  }
+}
+
+void MultigridPoisson::residual(Level& level, int threads) {
+  for_each_line(level.ny, level.nz, threads, [&](int j, int k) {
+    const std::size_t row = level.at(0, j, k);
+    for (std::size_t c = row; c < row + static_cast<std::size_t>(level.nx); ++c)
+      level.r[c] = level.inverse_diagonal[c] == 0.0
+                       ? 0.0
+                       : (level.b[c] - apply(level, level.x, c)) * level.prolongation_scale[c];
+  });
+}
+
+void MultigridPoisson::restrict_residual(const Level& fine, Level& coarse, int threads) {
+  // fine.r already carries each fine cell's renormalisation: b_C = s Σ_f w_fC r_f / W_f.
+  constexpr double kWeights[4] = {0.25, 0.75, 0.75, 0.25};
+  const double scale = restriction_scale_;
+  const int z_taps = planar_ ? 1 : 4;
+  for_each_line(coarse.ny, coarse.nz, threads, [&](int J, int K) {
+    for (int I = 0; I < coarse.nx; ++I) {
+      const std::size_t C = coarse.at(I, J, K);
+      if (coarse.inverse_diagonal[C] == 0.0) {
+        coarse.b[C] = 0.0;
+        continue;
+      }
+      double sum = 0.0;
+      for (int c = 0; c < z_taps; ++c) {
+        const int k = planar_ ? K : 2 * K - 1 + c;
+        const double wk = planar_ ? 1.0 : kWeights[c];
+        for (int b = 0; b < 4; ++b) {
+          const std::size_t row = fine.at(2 * I - 1, 2 * J - 1 + b, k);
+          const double wjk = wk * kWeights[b];
+          sum += wjk * (0.25 * fine.r[row] + 0.75 * fine.r[row + 1] + 0.75 * fine.r[row + 2] +
+                        0.25 * fine.r[row + 3]);
+        }
+      }
+      coarse.b[C] = scale * sum;
+    }
+  });
+}
+
+void MultigridPoisson::prolong_add(const Level& coarse, Level& fine, int threads) {
+  for_each_line(fine.ny, fine.nz, threads, [&](int j, int k) {
+    const AxisTransfer ty = axis_transfer(j, true), tz = axis_transfer(k, !planar_);
+    for (int i = 0; i < fine.nx; ++i) {
+      const std::size_t f = fine.at(i, j, k);
+      if (fine.inverse_diagonal[f] == 0.0) continue;
+      const AxisTransfer tx = axis_transfer(i, true);
+      const auto plane = [&](int ck) {
+        const auto line = [&](int cj) {
+          return tx.parent_weight * coarse.x[coarse.at(tx.parent, cj, ck)] +
+                 tx.neighbour_weight * coarse.x[coarse.at(tx.neighbour, cj, ck)];
+        };
+        return ty.parent_weight * line(ty.parent) + ty.neighbour_weight * line(ty.neighbour);
+      };
+      double value = tz.parent_weight * plane(tz.parent);
+      if (tz.neighbour_weight != 0.0) value += tz.neighbour_weight * plane(tz.neighbour);
+      fine.x[f] += fine.prolongation_scale[f] * value;
+    }
+  });
+}
+
+void MultigridPoisson::vcycle(std::size_t l, int threads) {
+  Level& level = levels_[l];
+  if (l + 1 == levels_.size()) {
+    smooth(level, kCoarsestSweeps, true, threads);
+    return;
+  }
+  smooth(level, kSweeps, true, threads);
+  residual(level, threads);
+  restrict_residual(level, levels_[l + 1], threads);
+  vcycle(l + 1, threads);
+  prolong_add(levels_[l + 1], level, threads);
+  smooth(level, kSweeps, false, threads);
+}
+
+void MultigridPoisson::remove_mean(std::vector<double>& v, const Level& level) const {
+  double sum = 0.0, count = 0.0;
+  for (std::size_t c = 0; c < level.size(); ++c)
+    if (level.inverse_diagonal[c] != 0.0) sum += v[c], count += 1.0;
+  if (count == 0.0) return;
+  const double mean = sum / count;
+  for (std::size_t c = 0; c < level.size(); ++c)
+    if (level.inverse_diagonal[c] != 0.0) v[c] -= mean;
+}
+
+PoissonSolveResult MultigridPoisson::solve(const std::vector<double>& b, std::vector<double>& p,
+                                           const PoissonSolveSettings& settings) {
+  Level& fine = levels_.front();
+  const int threads = settings.threads;
+  const std::size_t nx = static_cast<std::size_t>(fine.nx);
+  line_largest_.resize(static_cast<std::size_t>(fine.ny * fine.nz));
+  // Into the padded layout: p from the guess, the level's b from `b`, both 0 off the unknowns.
+  for_each_line(fine.ny, fine.nz, threads, [&](int j, int k) {
+    const std::size_t row = fine.at(0, j, k);
+    const std::size_t cell = static_cast<std::size_t>(fine.nx * (j + fine.ny * k));
+    for (std::size_t i = 0; i < nx; ++i) {
+      const bool unknown = fine.inverse_diagonal[row + i] != 0.0;
+      p_[row + i] = unknown ? p[cell + i] : 0.0;
+      fine.b[row + i] = unknown ? b[cell + i] : 0.0;
+    }
+  });
+  const std::vector<double> rhs = fine.b;  // the V-cycle reuses fine.b
+  const auto line_index = [&](int j, int k) { return static_cast<std::size_t>(j + fine.ny * k); };
+  // r = b − A p, and the line's largest |r|.
+  for_each_line(fine.ny, fine.nz, threads, [&](int j, int k) {
+    const std::size_t row = fine.at(0, j, k);
+    double m = 0.0;
+    for (std::size_t c = row; c < row + nx; ++c) {
+      r_[c] = fine.inverse_diagonal[c] == 0.0 ? 0.0 : rhs[c] - apply(fine, p_, c);
+      m = std::max(m, std::abs(r_[c]));
+    }
+    line_largest_[line_index(j, k)] = m;
+  });
+  double largest = largest_of(line_largest_);
+  // z = M r (one V-cycle) into fine.x; returns r·z.
+  const auto precondition = [&] {
+    fine.b = r_;
+    vcycle(0, threads);
+    if (!has_open_) remove_mean(fine.x, fine);
+    return sum_over_lines(fine.ny, fine.nz, threads, partials_, [&](int j, int k) {
+      const std::size_t row = fine.at(0, j, k);
+      double s = 0.0;
+      for (std::size_t c = row; c < row + nx; ++c)
+        s += r_[c] * fine.x[c];
+      return s;
+    });
+  };
+  PoissonSolveResult result;
+  if (largest > settings.residual_tolerance) {
+    double rz = precondition();
+    d_ = fine.x;
+    while (result.iterations < settings.max_iterations) {
+      const double dq = sum_over_lines(fine.ny, fine.nz, threads, partials_, [&](int j, int k) {
+        const std::size_t row = fine.at(0, j, k);
+        double s = 0.0;
+        for (std::size_t c = row; c < row + nx; ++c) {
+          q_[c] = fine.inverse_diagonal[c] == 0.0 ? 0.0 : apply(fine, d_, c);
+          s += d_[c] * q_[c];
+        }
+        return s;
+      });
+      if (!(dq > 0.0)) break;
+      const double alpha = rz / dq;
+      for_each_line(fine.ny, fine.nz, threads, [&](int j, int k) {
+        const std::size_t row = fine.at(0, j, k);
+        double m = 0.0;
+        for (std::size_t c = row; c < row + nx; ++c) {
+          p_[c] += alpha * d_[c];
+          r_[c] -= alpha * q_[c];
+          m = std::max(m, std::abs(r_[c]));
+        }
+        line_largest_[line_index(j, k)] = m;
+      });
+      ++result.iterations;
+      largest = largest_of(line_largest_);
+      if (largest <= settings.residual_tolerance) break;
+      const double rz_next = precondition();
+      const double beta = rz_next / rz;
+      rz = rz_next;
+      for_each_line(fine.ny, fine.nz, threads, [&](int j, int k) {
+        const std::size_t row = fine.at(0, j, k);
+        for (std::size_t c = row; c < row + nx; ++c)
+          d_[c] = fine.x[c] + beta * d_[c];
+      });
+    }
+  }
+  result.largest_residual = largest;
+  result.converged = largest <= settings.residual_tolerance;
+  // Back to the grid's layout.
+  for_each_line(fine.ny, fine.nz, threads, [&](int j, int k) {
+    const std::size_t row = fine.at(0, j, k);
+    const std::size_t cell = static_cast<std::size_t>(fine.nx * (j + fine.ny * k));
+    for (std::size_t i = 0; i < nx; ++i)
+      p[cell + i] = p_[row + i];
+  });
+  return result;
+}
+
+}  // namespace viscera::sim::fluid

@@ -26,6 +26,12 @@ class ConcentrationField {
   /// be divergence-free: the flow solver's output). Returns the sub-steps taken.
   int advect(const FlowGrid& grid, double time_step);
 
+  /// After `grid` was relabelled: hands the blood of every cell that became solid to its
+  /// non-solid face neighbours in equal shares (a wall closing over a cell pushes its contents
+  /// aside). A solid cell with no such neighbour keeps its blood until the cavity reopens there,
+  /// so the total never changes. Returns the volume moved, m³.
+  double settle(const FlowGrid& grid);
+
   /// Blood volume fraction of cell (i,j,k).
   double at(const FlowGrid& grid, int i, int j, int k) const {
     return fraction_[static_cast<std::size_t>(grid.cell_index(i, j, k))];

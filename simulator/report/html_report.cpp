@@ -78,6 +78,7 @@ namespace {
 std::string fluid_and_bleeding_table(const json& report) {
   const json fluid = report.value("fluid", json());
   const json bleeding = report.value("bleeding", json());
+  const json flow = report.value("distension_flow", json());
   if (!fluid.is_object() && !bleeding.is_object()) return {};
   std::ostringstream out;
   constexpr double kMlPerM3 = 1e6, kMmHgPerPa = 1.0 / 133.322;
@@ -100,6 +101,11 @@ std::string fluid_and_bleeding_table(const json& report) {
     row("Bleeding episodes", bleeding.value("episodes", json()), 1.0);
     row("Controlled (coagulated, clipped, clotted)", bleeding.value("controlled", json()), 1.0);
     row("Mean time to control (s)", bleeding.value("mean_time_to_control", json()), 1.0);
+  }
+  if (flow.is_object()) {
+    row("View obscured by blood (s)", flow.value("view_obscured_time", json()), 1.0);
+    row("Blood still in the cavity (ml)", flow.value("blood_in_cavity", json()), kMlPerM3);
+    row("Blood carried out by the outflow (ml)", flow.value("blood_drained", json()), kMlPerM3);
   }
   out << "</table>\n";
   return out.str();

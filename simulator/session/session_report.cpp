@@ -186,6 +186,25 @@ nlohmann::json bleeding_json(const SessionReport& r) {
           {"sources", sources}};
 }
 
+/// The cavity's flow and how the blood clouded the view (m³, s), or null without a flow.
+nlohmann::json cavity_flow_json(const SessionReport& r) {
+  if (!r.cavity_flow) return nullptr;
+  const CavityFlowSummary& f = *r.cavity_flow;
+  return {{"flow_steps", f.flow_steps},
+          {"relabellings", f.relabellings},
+          {"cell_size", f.cell_size},
+          {"fluid_cells", f.fluid_cells},
+          {"mean_pressure_iterations", f.mean_pressure_iterations},
+          {"view_obscured_time", f.view_obscured_time},
+          {"lowest_transmission", f.lowest_transmission},
+          {"obscured_threshold", f.obscured_threshold},
+          {"blood_released", f.blood_released},
+          {"blood_in_cavity", f.blood_in_cavity},
+          {"blood_drained", f.blood_drained},
+          {"blood_lost", f.blood_lost},
+          {"particles", f.particles}};
+}
+
 /// How a threaded session kept time, or null for a headless one.
 nlohmann::json realtime_json(const SessionReport& r) {
   if (!r.realtime) return nullptr;
@@ -283,6 +302,7 @@ nlohmann::json report_to_json(const SessionReport& r) {
           {"fluid_series", fluid_series_json(r)},
           {"cutting", cutting_json(r)},
           {"bleeding", bleeding_json(r)},
+          {"distension_flow", cavity_flow_json(r)},
           {"realtime", realtime_json(r)},
           {"end_reason", r.end_reason},
           {"events", events},

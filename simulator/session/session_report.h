@@ -128,6 +128,25 @@ struct CuttingSummary {
   }
 };
 
+/// The distension flow in the cavity over a session (issue 18 §2, §6): how the flow ran and how
+/// much the blood in it clouded the optics (CavityFlow).
+struct CavityFlowSummary {
+  long long flow_steps = 0;
+  long long relabellings = 0;  ///< times the wall or a pathology was labelled again
+  double cell_size = 0.0;      ///< m
+  int fluid_cells = 0;         ///< at the start
+  double mean_pressure_iterations = 0.0;
+  double view_obscured_time = 0.0;   ///< s with the line of sight's transmission below the
+                                     ///< threshold
+  double lowest_transmission = 1.0;  ///< 0…1, over the flow steps
+  double obscured_threshold = 0.0;   ///< the transmission below which the view is obscured
+  double blood_released = 0.0;       ///< m³ handed to the flow as particles
+  double blood_in_cavity = 0.0;      ///< m³ at the end: in particles and in the field
+  double blood_drained = 0.0;        ///< m³ carried out through the outflow
+  double blood_lost = 0.0;           ///< m³ particles released into solid cells or off the grid
+  int particles = 0;                 ///< alive at the end
+};
+
 /// The result of a session.
 struct SessionReport {
   std::string package;
@@ -166,6 +185,7 @@ struct SessionReport {
   std::optional<CuttingSummary> cutting;  ///< with a cutting instrument
   /// Every bleeding source the cuts opened, as the session left it (with a cutting instrument).
   std::optional<std::vector<fluid::BleedingSource>> bleeding;
+  std::optional<CavityFlowSummary> cavity_flow;  ///< when the cavity's flow is simulated
   std::string end_reason = "duration";  ///< "duration", "time-limit", "completed", "perforation",
                                         ///< "fluid-overload", "tissue-tear", "abort"
 };

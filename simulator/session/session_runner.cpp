@@ -103,6 +103,7 @@ SessionRunner::SessionRunner(const core::Scenario& scenario, const HeadlessRunOp
     if (scenario.fluid.enabled) fluid_.emplace(scenario.fluid);
     if (tissue_->body() != nullptr) surface_object = tissue_->name();
     if (scenario.session.instrument.kind == "resectoscope") start_resection(scenario);
+    if (fluid_) start_cavity_flow(scenario);
   }
 
   // The camera observes the surface the instrument works in, restricted to the region the
@@ -303,6 +304,7 @@ void SessionRunner::step(const InstrumentState& input) {
     const double dt = world_.time_step();
     report_.metrics.record(state_.tip, force, contact, dt, state_.inflow);
     balance_fluid(dt);
+    flow_cavity(dt);
     if (current_ >= 0 && current_ < static_cast<int>(report_.procedure_steps.size())) {
       report_.procedure_steps[static_cast<std::size_t>(current_)].metrics.record(
           state_.tip, force, contact, dt, state_.inflow);
@@ -507,6 +509,20 @@ SessionReport SessionRunner::finish() {
     report_.final_cavity_pressure = fluid_->pressure();
   }
   if (bleeding_) report_.bleeding = bleeding_->sources();
+  if (cavity_) {
+    CavityFlowSummary& f = *report_.cavity_flow;
+    f.flow_steps = cavity_->flow_steps();
+    f.relabellings = cavity_->relabellings();
+    f.mean_pressure_iterations =
+        f.flow_steps > 0 ? static_cast<double>(pressure_iterations_) / f.flow_steps : 0.0;
+    f.blood_released = cavity_->released_blood();
+    f.blood_in_cavity = cavity_->particles().carried_volume() +
+                        cavity_->particles().pending_volume() +
+                        cavity_->blood().total_volume(cavity_->grid());
+    f.blood_drained = cavity_->blood().drained_volume();
+    f.blood_lost = cavity_->particles().lost_volume();
+    f.particles = static_cast<int>(cavity_->particles().size());
+  }
   report_.max_penetration = world_.max_penetration();
   report_.contact_stiffness =
       world_.bodies().size() > 1 ? scenario_.session.contact_stiffness : 0.0;

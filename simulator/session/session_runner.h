@@ -12,6 +12,7 @@
 #include "core/scenario/scenario.h"
 #include "simulator/camera/surface_coverage.h"
 #include "simulator/fluid/bleeding_sources.h"
+#include "simulator/fluid/cavity_flow.h"
 #include "simulator/fluid/distension_balance.h"
 #include "simulator/session/instrument_input.h"
 #include "simulator/session/instrument_tissue.h"
@@ -138,6 +139,21 @@ class SessionRunner {
   void start_bleeding(int body, const cutting::TopologyChange& change, double time);
   /// With the coagulation pedal down: seals the bleeding sources within reach of the loop.
   void coagulate(double time);
+
+  /// The flow in the cavity of the first body whose surface marks a "cavity" (issue 18 §2),
+  /// with the distension fluid.
+  std::unique_ptr<fluid::CavityFlow> cavity_;
+  int cavity_body_ = -1;
+  const core::SceneObject* cavity_object_ = nullptr;
+  std::vector<double> bled_seen_;  ///< per bleeding source, m³ already handed to the flow
+  bool cut_since_flow_ = false;    ///< a pathology was cut since the last flow step
+  double inflow_rate_ = 0.0;       ///< m³/s the pump delivered in the last step
+  long long pressure_iterations_ = 0;
+  void start_cavity_flow(const core::Scenario& scenario);
+  /// Hands the step's pump inflow, blood and surfaces to the flow; books the clouded view.
+  void flow_cavity(double dt);
+  /// The cavity wall's current surface positions, m.
+  std::vector<core::Vec3> cavity_wall() const;
 };
 
 }  // namespace viscera::sim

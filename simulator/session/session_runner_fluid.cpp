@@ -1,10 +1,13 @@
 // The session runner's operative part: the resectoscope's loop on the pathology bodies, the
 // bleeding its cuts start, the coagulation pedal, and the distension-fluid balance that carries
 // both (issue 17 §4, issue 18 §3-4). The rest of SessionRunner is in session_runner.cpp.
+#include <algorithm>
 #include <cstdio>
+#include <numbers>
 #include <string>
 #include <vector>
 
+#include "core/mesh/surface_embedding.h"
 #include "simulator/session/session_runner.h"
 
 namespace viscera::sim {
@@ -33,6 +36,7 @@ void SessionRunner::start_resection(const core::Scenario& scenario) {
   }
   resection_->on_cut([this](int body, const cutting::TopologyChange& change, double time) {
     start_bleeding(body, change, time);
+    cut_since_flow_ = true;
   });
 }
 
@@ -95,6 +99,7 @@ void SessionRunner::balance_fluid(double dt) {
   fluid_->step(state_.inflow, state_.outflow, dt);
   if (bleeding) bleeding_->record_step(fluid_->last_step_volumes());
   const double used = fluid_->totals().used - used_before;
+  inflow_rate_ = used / dt;
   report_.metrics.record_fluid(used);
   if (current_ >= 0 && current_ < static_cast<int>(report_.procedure_steps.size()))
     report_.procedure_steps[static_cast<std::size_t>(current_)].metrics.record_fluid(used);
@@ -104,6 +109,101 @@ void SessionRunner::balance_fluid(double dt) {
                               " ml, the overload limit of " +
                               std::to_string(fluid_->fluid().overload_volume * 1e6) + " ml");
   }
+}
+
+std::vector<core::Vec3> SessionRunner::cavity_wall() const {
+  const auto positions = world_.state().range(world_.state().positions, cavity_body_);
+  if (cavity_object_->embedding.empty()) return {positions.begin(), positions.end()};
+  return core::embedded_positions(cavity_object_->embedding, cavity_object_->body.tets, positions);
+}
+
+void SessionRunner::start_cavity_flow(const core::Scenario& scenario) {
+  for (const auto& model : world_.models()) {
+    const core::SceneObject* object = scenario.find_object(model->name);
+    if (object == nullptr || object->surface.triangles.empty()) continue;
+    const auto marks = object->surface.vertex_attributes.find("cavity");
+    if (marks == object->surface.vertex_attributes.end()) continue;
+    cavity_body_ = model->body;
+    cavity_object_ = object;
+    fluid::CavityFlowSettings settings;
+    settings.sheath_radius = 0.5 * instrument_.shaft_diameter;
+    cavity_ = std::make_unique<fluid::CavityFlow>(cavity_wall(), object->surface.triangles,
+                                                  marks->second, settings, 0x18f10dull);
+    CavityFlowSummary& summary = report_.cavity_flow.emplace();
+    summary.cell_size = cavity_->grid().cell_size();
+    for (int k = 0; k < cavity_->grid().nz(); ++k)
+      for (int j = 0; j < cavity_->grid().ny(); ++j)
+        for (int i = 0; i < cavity_->grid().nx(); ++i)
+          summary.fluid_cells += cavity_->grid().cell(i, j, k) == fluid::FlowCell::Fluid;
+    summary.obscured_threshold = settings.obscured_transmission;
+    return;
+  }
+}
+
+void SessionRunner::flow_cavity(double dt) {
+  if (!cavity_) return;
+  fluid::CavityInputs inputs;
+  inputs.sheath = true;
+  inputs.tip = state_.tip;
+  inputs.axis = state_.axis;
+  inputs.inflow_rate = inflow_rate_;
+  if (bleeding_) {
+    const auto& sources = bleeding_->sources();
+    bled_seen_.resize(sources.size(), 0.0);
+    for (std::size_t i = 0; i < sources.size(); ++i) {
+      const fluid::BleedingSource& source = sources[i];
+      const double volume = source.bled - bled_seen_[i];
+      if (!(volume > 0.0)) continue;
+      bled_seen_[i] = source.bled;
+      const auto positions = world_.state().range(world_.state().positions, source.body);
+      const core::Vec3 a = positions[static_cast<std::size_t>(source.nodes[0])];
+      const core::Vec3 b = positions[static_cast<std::size_t>(source.nodes[1])];
+      const core::Vec3 c = positions[static_cast<std::size_t>(source.nodes[2])];
+      fluid::BloodRelease release;
+      release.site = fluid::site_position(source, positions);
+      // Out of the tissue: the site's triangle normal, turned away from the body's centre.
+      core::Vec3 normal = (b - a).cross(c - a);
+      core::Vec3 centre = core::Vec3::Zero();
+      for (const core::Vec3& p : positions)
+        centre += p;
+      centre /= static_cast<double>(positions.size());
+      if (normal.dot(release.site - centre) < 0.0) normal = -normal;
+      release.normal = normal.norm() > 0.0 ? core::Vec3(normal.normalized()) : core::Vec3::UnitZ();
+      // A vessel spurts at its mean speed Q/(πr²) (at most 0.3 m/s); ooze seeps at 5 mm/s.
+      const double rate = volume / dt;
+      release.speed =
+          source.capillary
+              ? 0.005
+              : std::min(0.3, rate / (std::numbers::pi * source.radius * source.radius));
+      release.volume = volume;
+      inputs.blood.push_back(release);
+    }
+  }
+  std::vector<core::Vec3> wall;
+  if (cavity_->step_due(dt)) {
+    wall = cavity_wall();
+    inputs.wall = wall;
+    for (const auto& model : world_.models()) {
+      const core::SceneObject* object = scenario_.find_object(model->name);
+      if (object == nullptr || object->role != core::ObjectRole::Pathology ||
+          model->surface.empty())
+        continue;
+      inputs.obstacles.push_back(
+          {world_.state().range(world_.state().positions, model->body), &model->surface});
+    }
+    inputs.obstacles_cut = cut_since_flow_;
+    cut_since_flow_ = false;
+  }
+  const long long before = cavity_->flow_steps();
+  cavity_->advance(dt, inputs);
+  if (cavity_->flow_steps() == before) return;
+  pressure_iterations_ += cavity_->last_step().pressure_iterations;
+  CavityFlowSummary& summary = *report_.cavity_flow;
+  const double transmission =
+      cavity_->view_transmission(state_.tip, view_direction(state_, instrument_.optics_angle));
+  summary.lowest_transmission = std::min(summary.lowest_transmission, transmission);
+  if (transmission < cavity_->settings().obscured_transmission)
+    summary.view_obscured_time += cavity_->settings().interval;
 }
 
 }  // namespace viscera::sim

@@ -63,6 +63,32 @@ TEST(CavityGrid, a_hollow_ball_fills_its_inner_sphere) {
                core::InputError);
 }
 
+TEST(CavityGrid, pockets_cut_off_from_the_outflow_are_closed) {
+  // Three pockets in a 12×5×5 box walled all round: x 1–3 with the outflow, x 5–6 and x 8–10.
+  FlowGrid grid(12, 5, 5, 0.001);
+  for (int k = 0; k < 5; ++k)
+    for (int j = 0; j < 5; ++j)
+      for (int i = 0; i < 12; ++i)
+        if (i == 0 || i == 4 || i == 7 || i == 11 || j == 0 || j == 4 || k == 0 || k == 4)
+          grid.set_cell(i, j, k, FlowCell::Solid);
+  grid.set_cell(1, 2, 2, FlowCell::Open);
+  grid.update_faces();
+  EXPECT_EQ(close_stranded_pockets(grid), 2 * 9 + 3 * 9);
+  EXPECT_EQ(grid.cell(2, 2, 2), FlowCell::Fluid);
+  EXPECT_EQ(grid.cell(5, 2, 2), FlowCell::Solid);
+  EXPECT_EQ(grid.cell(9, 2, 2), FlowCell::Solid);
+  // Without an outflow the largest pocket stays.
+  grid.set_cell(1, 2, 2, FlowCell::Solid);
+  grid.set_cell(1, 1, 1, FlowCell::Solid);
+  for (int k = 1; k < 4; ++k)
+    for (int j = 1; j < 4; ++j)
+      for (int i = 8; i < 11; ++i)
+        grid.set_cell(i, j, k, FlowCell::Fluid);
+  EXPECT_EQ(close_stranded_pockets(grid), 3 * 9 - 2);
+  EXPECT_EQ(grid.cell(9, 2, 2), FlowCell::Fluid);
+  EXPECT_EQ(grid.cell(2, 2, 2), FlowCell::Solid);
+}
+
 TEST(CavityGrid, a_hysteroscopy_patient_s_cavity_fills_and_flows) {
   const core::Scenario patient = templates::build_from_template("hysteroscopy", {}, 1);
   const core::SceneObject& uterus = *patient.find_object("uterus");

@@ -227,6 +227,14 @@ TEST(LoopResection, a_scoop_through_the_polyps_feeding_artery_bleeds_and_the_bal
   for (const auto& s : sources)
     bled += s.bled;
   EXPECT_NEAR(f.bled, bled, 1e-12 * bled);
+  // Every drop that bled went into the cavity's flow, and the flow accounts for all of it.
+  ASSERT_TRUE(r.report.cavity_flow.has_value());
+  const CavityFlowSummary& flow = *r.report.cavity_flow;
+  EXPECT_GT(flow.flow_steps, 0);
+  EXPECT_NEAR(flow.blood_released, bled, 1e-12 * bled);
+  EXPECT_NEAR(flow.blood_in_cavity + flow.blood_drained + flow.blood_lost, flow.blood_released,
+              1e-9 * bled);
+  EXPECT_GT(flow.blood_in_cavity, 0.0);
   // The report's bleeding and fluid blocks follow the published schema.
   std::ifstream schema_file(viscera::testing::source_dir() / "docs" / "session-report.schema.json");
   const core::JsonSchemaValidator schema(nlohmann::json::parse(schema_file));

@@ -55,13 +55,37 @@ void BloodParticles::advance(const FlowGrid& grid, const ArtificialVortices* vor
   if (!(time_step > 0.0)) return;
   // Each particle gives the field its blood at a steady rate over its life.
   const double release_per_step = settings_.particle_volume * time_step / settings_.lifetime;
+  const double inverse_h = 1.0 / grid.cell_size();
+  constexpr int kMaxSubsteps = 32;
   std::size_t i = 0;
   while (i < age_.size()) {
     age_[i] += time_step;
     const double weight = std::exp(-age_[i] / settings_.emitter_time_constant);
-    const core::Vec3 flow =
-        vortices ? vortices->flow_velocity(grid, position_[i]) : grid.velocity_at(position_[i]);
-    position_[i] += time_step * (weight * emit_velocity_[i] + (1.0 - weight) * flow);
+    const auto velocity = [&](const core::Vec3& at) {
+      const core::Vec3 flow = vortices ? vortices->flow_velocity(grid, at) : grid.velocity_at(at);
+      return core::Vec3(weight * emit_velocity_[i] + (1.0 - weight) * flow);
+    };
+    // Sub-steps of at most one cell each, so a fast spurt meets the wall instead of jumping it;
+    // a particle that would enter tissue stays where it is, its emitter's push spent on the wall.
+    core::Vec3 v = velocity(position_[i]);
+    const int substeps =
+        std::clamp(static_cast<int>(std::ceil(v.norm() * time_step * inverse_h)), 1, kMaxSubsteps);
+    const double dt = time_step / substeps;
+    for (int s = 0; s < substeps; ++s) {
+      if (s > 0) v = velocity(position_[i]);
+      const core::Vec3 next = position_[i] + dt * v;
+      const core::Vec3 local = (next - grid.origin()) * inverse_h;
+      const int a = static_cast<int>(std::floor(local.x())),
+                b = static_cast<int>(std::floor(local.y())),
+                c = static_cast<int>(std::floor(local.z()));
+      const bool inside =
+          a >= 0 && b >= 0 && c >= 0 && a < grid.nx() && b < grid.ny() && c < grid.nz();
+      if (inside && grid.cell(a, b, c) == FlowCell::Solid) {
+        emit_velocity_[i] = core::Vec3::Zero();
+        break;
+      }
+      position_[i] = next;
+    }
     const bool dies = age_[i] >= settings_.lifetime;
     const double given = dies ? blood_[i] : std::min(blood_[i], release_per_step);
     release(grid, field, position_[i], given);
@@ -84,7 +108,14 @@ double BloodParticles::carried_volume() const {
 void BloodParticles::release(const FlowGrid& grid, ConcentrationField& field,
                              const core::Vec3& point, double volume) {
   if (!(volume > 0.0)) return;
-  const double added = field.add_blood(grid, point, volume);
+  double added = field.add_blood(grid, point, volume);
+  // A particle the tissue or the sheath has moved over gives its blood to the fluid beside it.
+  const double h = grid.cell_size();
+  for (int n = 0; n < 6 && added == 0.0; ++n) {
+    core::Vec3 beside = point;
+    beside[n / 2] += (n % 2 == 0 ? -h : h);
+    added = field.add_blood(grid, beside, volume);
+  }
   released_ += added;
   lost_ += volume - added;
 }

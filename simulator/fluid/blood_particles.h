@@ -6,12 +6,15 @@
 ///
 ///   v = w(a) v_emit + (1 − w(a)) v_flow(p),   w(a) = exp(−a / τ_e),   p ← p + Δt v
 ///
-/// (explicit Euler, as the seed). The seed leaves the weights open; these sum to one, so a
-/// particle moves at its emission speed at birth and with the flow once its emitter's push is
-/// spent. Each particle carries a volume of blood and releases it into the concentration field
-/// (concentration_field.h) evenly over its life, the rest when it dies: the field, not the
-/// particles, is what clouds the view and what the outflow carries away. Blood is conserved:
-/// emitted = carried + released into the field + lost outside the grid, to rounding.
+/// (explicit Euler, as the seed, in sub-steps of at most one cell). Particles do not interact
+/// (seed 000 §6.2), but they do not pass into tissue either: a sub-step that would end in a
+/// solid cell of the grid is not taken, and the particle's emitter push is spent on the wall. The
+/// seed leaves the weights open; these sum to one, so a particle moves at its emission speed at
+/// birth and with the flow once its emitter's push is spent. Each particle carries a volume of
+/// blood and releases it into the concentration field (concentration_field.h) evenly over its life,
+/// the rest when it dies: the field, not the particles, is what clouds the view and what the
+/// outflow carries away. Blood is conserved: emitted = carried + released into the field + lost
+/// outside the grid, to rounding.
 ///
 /// Particles are stored as columns (position, emission velocity, age, blood) so the view reads
 /// them without copying; their stage (age over life) picks the billboard's texture.
@@ -67,7 +70,8 @@ class BloodParticles {
   double pending_volume() const { return pending_; }
 
  private:
-  /// Releases `volume` at `point` into the field, or books it as lost when it lies outside.
+  /// Releases `volume` at `point` into the field (into a non-solid cell beside it when its own
+  /// is solid), or books it as lost when there is none.
   void release(const FlowGrid& grid, ConcentrationField& field, const core::Vec3& point,
                double volume);
   void remove(std::size_t i);

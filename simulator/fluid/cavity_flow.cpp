@@ -209,9 +209,20 @@ void CavityFlow::advance(double dt, const CavityInputs& inputs) {
   const double h = grid_.cell_size();
   for (const BloodRelease& release : inputs.blood) {
     if (!(release.volume > 0.0)) continue;
-    // Born a cell out of the cut surface, in the cavity rather than in the tissue's cell.
-    particles_.emit(release.site + h * release.normal, release.normal, release.speed,
-                    release.volume, grid_, blood_);
+    // Born in the cavity, not in the tissue's cell: the first non-solid cell out along the
+    // normal, a cell to four cells out (a cell out when all of them are solid).
+    core::Vec3 birth = release.site + h * release.normal;
+    for (double out = h; out <= 4.0 * h; out += 0.5 * h) {
+      const core::Vec3 at = release.site + out * release.normal;
+      const core::Vec3 local = (at - grid_.origin()) / h;
+      if (grid_.cell_or_solid(static_cast<int>(std::floor(local.x())),
+                              static_cast<int>(std::floor(local.y())),
+                              static_cast<int>(std::floor(local.z()))) != FlowCell::Solid) {
+        birth = at;
+        break;
+      }
+    }
+    particles_.emit(birth, release.normal, release.speed, release.volume, grid_, blood_);
     released_ += release.volume;
   }
   gathered_ += dt;
@@ -231,6 +242,7 @@ void CavityFlow::advance(double dt, const CavityInputs& inputs) {
                                 flow_steps_, "the pressure projection diverged on this labelling");
   blood_.advect(grid_, step);
   particles_.advance(grid_, &vortices_, blood_, step);
+  blood_.spill(grid_);
   ++flow_steps_;
 }
 

@@ -14,7 +14,8 @@
 /// - Relabelling: the wall, every pathology surface and the sheath are labelled again once any
 ///   of them has moved `relabel_motion` cells since it was last labelled, or has been cut. The
 ///   grid's frame never changes, so velocities and blood stay where they were; blood in cells
-///   the wall closes over is pushed to their open neighbours (ConcentrationField::settle).
+///   the wall closes over is pushed to their open neighbours (ConcentrationField::settle), and
+///   a cell never holds more blood than its volume (ConcentrationField::spill).
 /// - Sheath: cells within the shaft's radius of its axis behind the tip are solid at rest; the
 ///   last cell length of it is the inflow, its velocity along the axis scaled so that its net
 ///   flux into the cavity is the pump's inflow of the step (DistensionBalance). The outflow

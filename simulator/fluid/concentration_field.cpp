@@ -27,6 +27,36 @@ double ConcentrationField::total_volume(const FlowGrid& grid) const {
   return sum * h * h * h;
 }
 
+double ConcentrationField::spill(const FlowGrid& grid, int passes) {
+  double moved = 0.0;
+  const double h3 = grid.cell_size() * grid.cell_size() * grid.cell_size();
+  for (int pass = 0; pass < passes; ++pass) {
+    bool spilled = false;
+    for (int k = 0; k < grid.nz(); ++k)
+      for (int j = 0; j < grid.ny(); ++j)
+        for (int i = 0; i < grid.nx(); ++i) {
+          auto& c = fraction_[static_cast<std::size_t>(grid.cell_index(i, j, k))];
+          if (c <= 1.0 || grid.cell(i, j, k) == FlowCell::Solid) continue;
+          const int next[6][3] = {{i - 1, j, k}, {i + 1, j, k}, {i, j - 1, k},
+                                  {i, j + 1, k}, {i, j, k - 1}, {i, j, k + 1}};
+          int open = 0;
+          for (const auto& q : next)
+            open += grid.cell_or_solid(q[0], q[1], q[2]) != FlowCell::Solid;
+          if (open == 0) continue;
+          const double excess = c - 1.0;
+          for (const auto& q : next)
+            if (grid.cell_or_solid(q[0], q[1], q[2]) != FlowCell::Solid)
+              fraction_[static_cast<std::size_t>(grid.cell_index(q[0], q[1], q[2]))] +=
+                  excess / open;
+          c = 1.0;
+          moved += excess * h3;
+          spilled = true;
+        }
+    if (!spilled) break;
+  }
+  return moved;
+}
+
 double ConcentrationField::settle(const FlowGrid& grid) {
   double moved = 0.0;
   const double h3 = grid.cell_size() * grid.cell_size() * grid.cell_size();

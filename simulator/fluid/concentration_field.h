@@ -32,6 +32,12 @@ class ConcentrationField {
   /// so the total never changes. Returns the volume moved, m³.
   double settle(const FlowGrid& grid);
 
+  /// Spills what a cell holds above a fraction of 1 (more blood than the cell's volume: particles
+  /// stopped at a wall where the flow stands still) into its non-solid face neighbours, in equal
+  /// shares, over at most `passes` sweeps. The total does not change. Returns the volume moved,
+  /// m³.
+  double spill(const FlowGrid& grid, int passes = 8);
+
   /// Blood volume fraction of cell (i,j,k).
   double at(const FlowGrid& grid, int i, int j, int k) const {
     return fraction_[static_cast<std::size_t>(grid.cell_index(i, j, k))];

@@ -118,3 +118,28 @@ TEST(BloodParticles, the_same_seed_gives_the_same_particles_and_bad_settings_are
   bad.lifetime = 0.0;
   EXPECT_THROW(BloodParticles(bad, 1), core::UsageError);
 }
+
+TEST(BloodParticles, a_spurt_at_the_wall_stops_at_it_and_keeps_its_blood_in_the_fluid) {
+  // Tissue from x = 15 mm on; a fast spurt towards it, advanced in 40 ms steps (12 cells a step
+  // at its birth speed): no particle enters the tissue and no blood is lost into it.
+  FlowGrid grid(20, 20, 20, 0.001);
+  for (int k = 0; k < 20; ++k)
+    for (int j = 0; j < 20; ++j)
+      for (int i = 15; i < 20; ++i)
+        grid.set_cell(i, j, k, FlowCell::Solid);
+  grid.update_faces();
+  ConcentrationField field(grid);
+  BloodParticles blood(BloodParticleSettings{}, 3);
+  for (int step = 0; step < 50; ++step) {
+    if (step < 10) blood.emit(kCentre, core::Vec3(1, 0, 0), 0.3, 2e-9, grid, field);
+    blood.advance(grid, nullptr, field, 0.04);
+    for (const core::Vec3& p : blood.positions()) {
+      ASSERT_LT(p.x(), 0.015);
+      ASSERT_GT(p.x(), kCentre.x());  // it did leave along the normal
+    }
+  }
+  EXPECT_EQ(blood.lost_volume(), 0.0);
+  EXPECT_NEAR(field.total_volume(grid), blood.released_volume(), 1e-12 * blood.emitted_volume());
+  EXPECT_NEAR(blood.carried_volume() + blood.released_volume(), blood.emitted_volume(),
+              1e-12 * blood.emitted_volume());
+}

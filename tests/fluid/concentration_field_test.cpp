@@ -86,3 +86,33 @@ TEST(ConcentrationField, blood_in_the_cavity_plus_blood_drained_is_blood_shed) {
   EXPECT_GT(blood.drained_volume(), 0.1 * shed);
   EXPECT_NEAR(blood.total_volume(grid) + blood.drained_volume(), shed, 1e-9 * shed);
 }
+
+TEST(ConcentrationField,
+     a_cell_spills_what_it_holds_above_its_volume_and_a_closing_wall_pushes_it_out) {
+  // 5×5×5 cells of 1 mm, walled all round: 3 mm³ of blood in the centre cell (fraction 3).
+  FlowGrid grid(5, 5, 5, 0.001);
+  for (int k = 0; k < 5; ++k)
+    for (int j = 0; j < 5; ++j)
+      for (int i = 0; i < 5; ++i)
+        if (i == 0 || j == 0 || k == 0 || i == 4 || j == 4 || k == 4)
+          grid.set_cell(i, j, k, FlowCell::Solid);
+  grid.update_faces();
+  ConcentrationField field(grid);
+  const core::Vec3 centre(0.0025, 0.0025, 0.0025);
+  EXPECT_DOUBLE_EQ(field.add_blood(grid, centre, 3e-9), 3e-9);
+  EXPECT_NEAR(field.spill(grid), 2e-9, 1e-21);
+  EXPECT_DOUBLE_EQ(field.at(grid, 2, 2, 2), 1.0);
+  EXPECT_NEAR(field.at(grid, 1, 2, 2), 1.0 / 3.0, 1e-15);
+  EXPECT_NEAR(field.total_volume(grid), 3e-9, 1e-21);
+  for (int k = 0; k < 5; ++k)
+    for (int j = 0; j < 5; ++j)
+      for (int i = 0; i < 5; ++i)
+        EXPECT_LE(field.at(grid, i, j, k), 1.0);
+  // The wall closes over the centre cell: its blood goes to the six cells around it.
+  grid.set_cell(2, 2, 2, FlowCell::Solid);
+  grid.update_faces();
+  EXPECT_NEAR(field.settle(grid), 1e-9, 1e-21);
+  EXPECT_EQ(field.at(grid, 2, 2, 2), 0.0);
+  EXPECT_NEAR(field.at(grid, 2, 3, 2), 0.5, 1e-15);
+  EXPECT_NEAR(field.total_volume(grid), 3e-9, 1e-21);
+}

@@ -189,6 +189,15 @@ TEST(LoopResection, a_sweep_that_bleeds_replays_to_the_same_blood_and_fluid) {
   }
   EXPECT_EQ(a.report.fluid->bled, b.report.fluid->bled);
   EXPECT_EQ(a.report.final_cavity_pressure, b.report.final_cavity_pressure);
+  // The flow that carries the blood replays too: the same particles, field and clouding.
+  ASSERT_TRUE(a.report.cavity_flow.has_value() && b.report.cavity_flow.has_value());
+  const CavityFlowSummary &fa = *a.report.cavity_flow, &fb = *b.report.cavity_flow;
+  EXPECT_GT(fa.blood_released, 0.0);
+  EXPECT_EQ(fa.blood_in_cavity, fb.blood_in_cavity);
+  EXPECT_EQ(fa.blood_drained, fb.blood_drained);
+  EXPECT_EQ(fa.particles, fb.particles);
+  EXPECT_EQ(fa.lowest_transmission, fb.lowest_transmission);
+  EXPECT_EQ(fa.view_obscured_time, fb.view_obscured_time);
 }
 
 TEST(LoopResection, a_scoop_through_the_polyps_feeding_artery_bleeds_and_the_balance_holds) {

@@ -1,5 +1,7 @@
 #include "simulator/runtime/session_snapshot.h"
 
+#include <cmath>
+
 #include "simulator/session/session_runner.h"
 
 namespace viscera::sim {
@@ -28,6 +30,20 @@ void capture_snapshot(const SessionRunner& runner, SessionSnapshot& out) {
     out.step = result.name.empty() ? result.id : result.name;
   }
   out.ended = runner.finished() ? report.end_reason : std::string();
+  out.blood.clear();
+  out.blood_stage.clear();
+  out.haze_density = 0.0;
+  if (const fluid::CavityFlow* flow = runner.cavity_flow()) {
+    const fluid::BloodParticles& particles = flow->particles();
+    out.blood.assign(particles.positions().begin(), particles.positions().end());
+    out.blood_stage.resize(particles.size());
+    for (std::size_t i = 0; i < particles.size(); ++i)
+      out.blood_stage[i] = static_cast<float>(particles.stage(i));
+    const double depth = flow->settings().view_depth;
+    const double transmission = flow->view_transmission(
+        out.instrument.tip, view_direction(out.instrument, out.optics_angle));
+    if (depth > 0.0 && transmission > 0.0) out.haze_density = -std::log(transmission) / depth;
+  }
 }
 
 }  // namespace viscera::sim

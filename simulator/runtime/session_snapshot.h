@@ -33,6 +33,12 @@ struct SessionSnapshot {
   double surface_seen = 0.0;                         ///< fraction 0…1
   std::string step;                                  ///< procedure step under way, or ""
   std::string ended;                                 ///< end reason once finished, or ""
+  /// Blood in the cavity's flow (issue 18 §5): each particle's position (m) and stage (age over
+  /// life, 0…1), and the blood's mean extinction along the optics' line of sight, 1/m (the
+  /// lens pass's haze).
+  std::vector<core::Vec3> blood;
+  std::vector<float> blood_stage;
+  double haze_density = 0.0;
 };
 
 /// Fills `out` from `runner` at its current step, reusing out's storage (no allocation once

@@ -83,6 +83,8 @@ class SessionRunner {
   /// The camera's coverage of the instrument body's surface, or null without a surface.
   const SurfaceCoverage* coverage() const { return coverage_.get(); }
   double time_limit() const { return time_limit_; }
+  /// The distension flow in the cavity with its blood, or null without one.
+  const fluid::CavityFlow* cavity_flow() const { return cavity_.get(); }
 
  private:
   struct Monitor;

@@ -40,6 +40,8 @@ uniform float blurPerDioptre;
 uniform float maxBlur;       // px
 uniform float texelsPerPixel; // scene texels per output pixel (the render scale)
 uniform int fieldStop;
+uniform float hazeDensity;   // 1/m
+uniform vec3 hazeColour;
 float eyeDepth(vec2 uv) {
   float d = texture(depth, uv).r;
   return 2.0 * nearPlane * farPlane /
@@ -64,6 +66,8 @@ const char* kBody = R"(
   // averages 2^L texels, so L = log2(diameter in scene texels) blurs over about the disc.
   float lod = log2(max(1.0, 2.0 * radius * texelsPerPixel));
   vec3 rgb = textureLod(colour, uv, lod).rgb;
+  // Blood in the fluid between the lens and the surface (Beer–Lambert over the eye depth).
+  rgb = mix(hazeColour, rgb, exp(-hazeDensity * z));
   // The rod lens loses light towards the rim of the field (cos^4 law, gently).
   float fall = 1.0 - 0.35 * r2 * r2;
   gl_FragData[0] = vec4(rgb * fall, 1.0);
@@ -192,6 +196,10 @@ void EndoscopeLensPass::Render(const vtkRenderState* state) {
   program->SetUniformf("texelsPerPixel",
                        static_cast<float>(scene_width) / static_cast<float>(width));
   program->SetUniformi("fieldStop", field_stop ? 1 : 0);
+  program->SetUniformf("hazeDensity", static_cast<float>(std::max(0.0, haze_density)));
+  const float haze[3] = {static_cast<float>(haze_colour[0]), static_cast<float>(haze_colour[1]),
+                         static_cast<float>(haze_colour[2])};
+  program->SetUniform3f("hazeColour", haze);
   quad_->Render();
   gl->vtkglScissor(origin[0], origin[1], width, height);
   depth_->Deactivate();

@@ -2,7 +2,8 @@
 /// The optics of a rigid endoscope as one image-space render pass over the rendered scene:
 /// barrel distortion of the wide-angle rod lens, depth of field around the focus distance
 /// (seed 002 §4: the circle of confusion of an out-of-focus point, done as a post pass instead
-/// of the paper's jittered eye positions) and the round field stop of the eyepiece.
+/// of the paper's jittered eye positions), the round field stop of the eyepiece, and the haze of
+/// blood in the distension fluid (seed 000 §6.2: "the view is clouded").
 ///
 /// The delegate pass renders colour and depth into textures; one full-screen fragment shader
 /// then, for every output pixel at normalised radius r (1 = the edge of the round field),
@@ -42,6 +43,11 @@ class EndoscopeLensPass : public vtkDepthImageProcessingPass {
   /// resamples it anyway (distortion, blur), so 0.5 costs a quarter of the rasterisation for a
   /// slightly softer image. Blur radii stay in output pixels.
   double render_scale = 1.0;
+  /// Blood clouding the distension fluid (issue 18 §5): a pixel at eye depth z (m) keeps
+  /// exp(−haze_density·z) of its colour and takes the rest from haze_colour — Beer–Lambert
+  /// with the blood's mean extinction along the line of sight, 1/m (0: clear fluid).
+  double haze_density = 0.0;
+  double haze_colour[3] = {0.42, 0.04, 0.03};
 
   void Render(const vtkRenderState* state) override;
   void ReleaseGraphicsResources(vtkWindow* window) override;

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "simulator/view/blood_billboards.h"
 #include "simulator/view/endoscope_lens_pass.h"
 #include "simulator/view/image_files.h"
 #include "simulator/view/scene_surfaces.h"
@@ -43,6 +44,7 @@ EndoscopicView::EndoscopicView(const core::Scenario& scenario, const std::filesy
   scene_->LightFollowCameraOff();
   scene_->TwoSidedLightingOn();
   surfaces_->add_to(scene_);
+  blood_ = std::make_unique<BloodBillboards>(scene_);
 
   // The head light: a spot at the tip along the optics, dimming with distance.
   light_ = vtkSmartPointer<vtkLight>::New();
@@ -107,6 +109,8 @@ void EndoscopicView::update(const sim::SessionRunner& runner) {
 
 void EndoscopicView::update(const sim::SessionSnapshot& snapshot) {
   surfaces_->update(snapshot.bodies);
+  blood_->update(snapshot.blood, snapshot.blood_stage);
+  if (lens_) lens_->haze_density = snapshot.haze_density;
   set_instrument(snapshot.instrument, snapshot.optics_angle);
   OverlayState state;
   state.elapsed = snapshot.time;
@@ -126,6 +130,10 @@ void EndoscopicView::update(const sim::SessionSnapshot& snapshot) {
 void EndoscopicView::set_render_scale(double scale) {
   options_.render_scale = std::clamp(scale, 0.25, 1.0);
   if (lens_) lens_->render_scale = options_.render_scale;
+}
+
+double EndoscopicView::haze_density() const {
+  return lens_ ? lens_->haze_density : 0.0;
 }
 
 double EndoscopicView::render_scale() const {

@@ -24,6 +24,7 @@ class vtkLight;
 
 namespace viscera::view {
 
+class BloodBillboards;
 class EndoscopeLensPass;
 class SceneSurfaces;
 
@@ -81,6 +82,9 @@ class EndoscopicView {
   vtkRenderer* scene_renderer() const { return scene_; }
   SessionOverlay& overlay() { return *overlay_; }
   const SceneSurfaces& surfaces() const { return *surfaces_; }
+  const BloodBillboards& blood() const { return *blood_; }
+  /// The blood haze's extinction in the lens pass, 1/m (0 without lens effects).
+  double haze_density() const;
 
  private:
   const core::Scenario& scenario_;
@@ -91,6 +95,7 @@ class EndoscopicView {
   vtkSmartPointer<EndoscopeLensPass> lens_;
   std::unique_ptr<SceneSurfaces> surfaces_;
   std::unique_ptr<SessionOverlay> overlay_;
+  std::unique_ptr<BloodBillboards> blood_;
   sim::SessionSnapshot captured_;  ///< reused by update(runner)
 };
 

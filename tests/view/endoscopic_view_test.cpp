@@ -13,6 +13,7 @@
 
 #include "core/package/scenario_package.h"
 #include "simulator/session/manual_control.h"
+#include "simulator/view/blood_billboards.h"
 #include "simulator/view/scene_surfaces.h"
 #include "tests/support/command_runner.h"
 #include "tests/support/test_paths.h"
@@ -148,6 +149,54 @@ TEST(EndoscopicView, half_resolution_scene_under_the_lens_keeps_the_picture) {
   EXPECT_LT(difference, 6.0);
   // Rendering the same pose twice gives the same bytes (no state carried between frames).
   EXPECT_EQ(testing::mean_abs_difference(soft, half.capture()), 0.0);
+}
+
+TEST(EndoscopicView, blood_in_the_flow_shows_as_billboards_and_clouds_the_lens) {
+  // Issue 18 §5: a cloud of fresh blood particles in front of the optics, then the haze of
+  // blood mixed into the fluid. Both turn the picture towards red and darken it.
+  const auto& patient = testing::hysteroscopy_patient();
+  view::EndoscopicView view(patient.scenario, patient.package, offscreen(true));
+  const double angle = patient.scenario.session.instrument.optics_angle;
+  sim::SessionSnapshot snapshot;
+  snapshot.instrument = sim::starting_pose(patient.scenario, angle);
+  snapshot.optics_angle = angle;
+  view.update(snapshot);
+  const auto clear = view.capture();
+  const FrameStatistics before = frame_statistics(clear, 0.9);
+
+  // 2,000 fresh drops in a 4 mm ball 8 mm ahead of the lens.
+  const core::Vec3 ahead =
+      snapshot.instrument.tip + 0.008 * sim::view_direction(snapshot.instrument, angle);
+  std::uint64_t state = 12345;
+  const auto uniform = [&state] {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return static_cast<double>(state >> 11) / 9007199254740992.0 * 2.0 - 1.0;
+  };
+  while (snapshot.blood.size() < 2000) {
+    const core::Vec3 offset(uniform(), uniform(), uniform());
+    if (offset.norm() > 1.0) continue;
+    snapshot.blood.push_back(ahead + 0.002 * offset);
+    snapshot.blood_stage.push_back(0.1f);
+  }
+  view.update(snapshot);
+  EXPECT_EQ(view.blood().size(), 2000u);
+  const FrameStatistics drops = frame_statistics(view.capture(), 0.9);
+  EXPECT_GT(drops.chromaticity[0], before.chromaticity[0] + 0.03);
+  EXPECT_GT(testing::mean_abs_difference(clear, view.capture(), 0.9), 2.0);
+
+  // The haze alone: 200 /m (e.g. 4 % blood at the issue's k = 5,000 /m) over the cavity.
+  snapshot.blood.clear();
+  snapshot.blood_stage.clear();
+  snapshot.haze_density = 200.0;
+  view.update(snapshot);
+  EXPECT_DOUBLE_EQ(view.haze_density(), 200.0);
+  const FrameStatistics haze = frame_statistics(view.capture(), 0.9);
+  EXPECT_GT(haze.chromaticity[0], before.chromaticity[0] + 0.03);
+  EXPECT_LT(haze.mean_luminance, before.mean_luminance);
+  // Clear fluid again: the picture comes back exactly.
+  snapshot.haze_density = 0.0;
+  view.update(snapshot);
+  EXPECT_LT(testing::mean_abs_difference(clear, view.capture(), 0.9), 0.5);
 }
 
 TEST(SessionOverlay, force_bars_fill_and_warn_as_the_force_nears_the_limit) {

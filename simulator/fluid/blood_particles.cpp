@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "core/error.h"
+#include "simulator/fluid/face_sampler.h"
 
 namespace viscera::sim::fluid {
 
@@ -56,13 +57,19 @@ void BloodParticles::advance(const FlowGrid& grid, const ArtificialVortices* vor
   // Each particle gives the field its blood at a steady rate over its life.
   const double release_per_step = settings_.particle_volume * time_step / settings_.lifetime;
   const double inverse_h = 1.0 / grid.cell_size();
+  const VelocitySampler sample(grid);  // the grid's strides taken once for every particle
   constexpr int kMaxSubsteps = 32;
-  std::size_t i = 0;
-  while (i < age_.size()) {
+  // First every particle moves (each on its own: in parallel, the same bits on any number of
+  // threads), then each releases its blood into the field in order.
+  const auto count = static_cast<std::ptrdiff_t>(age_.size());
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t n = 0; n < count; ++n) {
+    const auto i = static_cast<std::size_t>(n);
     age_[i] += time_step;
     const double weight = std::exp(-age_[i] / settings_.emitter_time_constant);
     const auto velocity = [&](const core::Vec3& at) {
-      const core::Vec3 flow = vortices ? vortices->flow_velocity(grid, at) : grid.velocity_at(at);
+      const core::Vec3 flow =
+          vortices ? core::Vec3(sample(at) + vortices->velocity(at)) : sample(at);
       return core::Vec3(weight * emit_velocity_[i] + (1.0 - weight) * flow);
     };
     // Sub-steps of at most one cell each, so a fast spurt meets the wall instead of jumping it;
@@ -86,12 +93,15 @@ void BloodParticles::advance(const FlowGrid& grid, const ArtificialVortices* vor
       }
       position_[i] = next;
     }
+  }
+  std::size_t i = 0;
+  while (i < age_.size()) {
     const bool dies = age_[i] >= settings_.lifetime;
     const double given = dies ? blood_[i] : std::min(blood_[i], release_per_step);
     release(grid, field, position_[i], given);
     blood_[i] -= given;
     if (dies) {
-      remove(i);  // the last particle moves here and is advanced next
+      remove(i);  // the last particle, moved already, is released next
     } else {
       ++i;
     }

@@ -52,7 +52,8 @@ class BloodParticles {
             const FlowGrid& grid, ConcentrationField& field);
 
   /// Moves every particle through `time_step` s in the flow of `grid` (plus `vortices` when
-  /// given), releases its blood into `field`, and retires the particles past their life.
+  /// given; on all cores, bit-identical for any number), releases its blood into `field`, and
+  /// retires the particles past their life.
   void advance(const FlowGrid& grid, const ArtificialVortices* vortices, ConcentrationField& field,
                double time_step);
 

@@ -2,12 +2,9 @@
 
 #include <vtkActor.h>
 #include <vtkCellArray.h>
-#include <vtkFloatArray.h>
-#include <vtkLookupTable.h>
-#include <vtkPointData.h>
-#include <vtkPointGaussianMapper.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
 
@@ -15,71 +12,64 @@
 
 namespace viscera::view {
 
-BloodBillboards::BloodBillboards(vtkRenderer* scene)
-    : points_(vtkSmartPointer<vtkPoints>::New()),
-      stage_(vtkSmartPointer<vtkFloatArray>::New()),
-      radius_(vtkSmartPointer<vtkFloatArray>::New()),
-      cloud_(vtkSmartPointer<vtkPolyData>::New()),
-      mapper_(vtkSmartPointer<vtkPointGaussianMapper>::New()),
-      actor_(vtkSmartPointer<vtkActor>::New()) {
-  points_->SetDataTypeToDouble();
-  stage_->SetName("stage");
-  radius_->SetName("radius");
-  cloud_->SetPoints(points_);
-  cloud_->GetPointData()->AddArray(stage_);
-  cloud_->GetPointData()->AddArray(radius_);
-  cloud_->GetPointData()->SetActiveScalars("stage");
-
-  // Stage 0 → 1: bright arterial red, opaque, to dark venous red, faint.
-  vtkNew<vtkLookupTable> stages;
-  stages->SetNumberOfTableValues(64);
-  for (int i = 0; i < 64; ++i) {
-    const double s = i / 63.0;
-    stages->SetTableValue(i, 0.72 - 0.40 * s, 0.03 + 0.02 * s, 0.03 + 0.02 * s, 0.85 - 0.70 * s);
+BloodBillboards::BloodBillboards(vtkRenderer* scene) {
+  for (int s = 0; s < kStages; ++s) {
+    Stage& stage = stages_[static_cast<std::size_t>(s)];
+    stage.points = vtkSmartPointer<vtkPoints>::New();
+    stage.points->SetDataTypeToDouble();
+    stage.vertices = vtkSmartPointer<vtkCellArray>::New();
+    stage.cloud = vtkSmartPointer<vtkPolyData>::New();
+    stage.cloud->SetPoints(stage.points);
+    stage.cloud->SetVerts(stage.vertices);
+    auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+    mapper->SetInputData(stage.cloud);
+    mapper->ScalarVisibilityOff();
+    stage.actor = vtkSmartPointer<vtkActor>::New();
+    stage.actor->SetMapper(mapper);
+    // Stage 0 → 1: small bright arterial red drops to larger dark venous red ones.
+    const double t = s / (kStages - 1.0);
+    vtkProperty* look = stage.actor->GetProperty();
+    look->SetColor(0.72 - 0.40 * t, 0.03 + 0.02 * t, 0.03 + 0.02 * t);
+    look->SetAmbient(0.35);
+    look->SetDiffuse(0.65);
+    look->SetSpecular(0.0);
+    look->SetPointSize(static_cast<float>(kBirthSize + (kDeathSize - kBirthSize) * t));
+    look->SetRenderPointsAsSpheres(false);
+    stage.actor->SetVisibility(false);
+    scene->AddActor(stage.actor);
   }
-  stages->SetTableRange(0.0, 1.0);
-  stages->Build();
-  mapper_->SetInputData(cloud_);
-  mapper_->SetLookupTable(stages);
-  mapper_->SetScalarModeToUsePointFieldData();
-  mapper_->SelectColorArray("stage");
-  mapper_->SetScalarRange(0.0, 1.0);
-  mapper_->SetColorModeToMapScalars();
-  mapper_->ScalarVisibilityOn();
-  mapper_->SetScaleArray("radius");
-  mapper_->SetScaleFactor(1.0);
-  mapper_->EmissiveOff();
-  actor_->SetMapper(mapper_);
-  actor_->GetProperty()->SetOpacity(0.999);  // drawn in the translucent pass, blended
-  actor_->SetVisibility(false);
-  scene->AddActor(actor_);
 }
 
 BloodBillboards::~BloodBillboards() = default;
 
 void BloodBillboards::update(const std::vector<core::Vec3>& positions,
                              const std::vector<float>& stages) {
-  const auto n = static_cast<vtkIdType>(std::min(positions.size(), stages.size()));
-  points_->SetNumberOfPoints(n);
-  stage_->SetNumberOfTuples(n);
-  radius_->SetNumberOfTuples(n);
-  for (vtkIdType i = 0; i < n; ++i) {
-    const auto u = static_cast<std::size_t>(i);
-    const float s = std::clamp(stages[u], 0.0f, 1.0f);
-    points_->SetPoint(i, positions[u].data());
-    stage_->SetValue(i, s);
-    radius_->SetValue(i, static_cast<float>(kBirthRadius + (kDeathRadius - kBirthRadius) *
-                                                               static_cast<double>(s)));
+  const std::size_t n = std::min(positions.size(), stages.size());
+  std::array<vtkIdType, kStages> counts{};
+  const auto bin = [](float stage) {
+    return std::clamp(static_cast<int>(std::clamp(stage, 0.0f, 1.0f) * kStages), 0, kStages - 1);
+  };
+  for (std::size_t i = 0; i < n; ++i)
+    ++counts[static_cast<std::size_t>(bin(stages[i]))];
+  for (int s = 0; s < kStages; ++s) {
+    Stage& stage = stages_[static_cast<std::size_t>(s)];
+    stage.points->SetNumberOfPoints(counts[static_cast<std::size_t>(s)]);
+    stage.vertices->Reset();
   }
-  points_->Modified();
-  stage_->Modified();
-  radius_->Modified();
-  cloud_->Modified();
-  actor_->SetVisibility(n > 0);
-}
-
-std::size_t BloodBillboards::size() const {
-  return static_cast<std::size_t>(points_->GetNumberOfPoints());
+  std::array<vtkIdType, kStages> next{};
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto s = static_cast<std::size_t>(bin(stages[i]));
+    stages_[s].points->SetPoint(next[s], positions[i].data());
+    stages_[s].vertices->InsertNextCell(1, &next[s]);
+    ++next[s];
+  }
+  size_ = n;
+  for (Stage& stage : stages_) {
+    stage.points->Modified();
+    stage.vertices->Modified();
+    stage.cloud->Modified();
+    stage.actor->SetVisibility(stage.points->GetNumberOfPoints() > 0);
+  }
 }
 
 }  // namespace viscera::view

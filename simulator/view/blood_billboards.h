@@ -1,22 +1,24 @@
 #pragma once
 /// Blood in the endoscopic view as billboards (seed 000 §6.2 and §7: "the particles are rendered
-/// as billboards", textured by the stage of their life): each particle of the cavity's flow is
-/// a round Gaussian splat facing the camera, drawn in the scene pass so the lens distorts and
-/// blurs it with the tissue. Its stage (age over life, 0…1) picks colour, opacity and size: a
-/// fresh drop is small, opaque and bright arterial red; as it mixes into the distension fluid it
-/// grows, darkens and fades — the cloud the concentration field then carries as haze (the lens
-/// pass's haze_density). Sizes and colours are stated choices; the seed gives none.
+/// as billboards", textured by the stage of their life): each particle of the cavity's flow is a
+/// small screen-aligned sprite (a point sprite of a few pixels, softened by the lens pass's
+/// resampling and blur), drawn opaque in the scene pass so the lens distorts and blurs it with
+/// the tissue. Its stage (age over life, 0…1) picks one of `kStages` looks, from a
+/// small bright arterial-red drop to a larger dark venous-red one; the blood the particles
+/// release clouds the view as the lens pass's haze (haze_density, from the concentration
+/// field). Sprites are sized in pixels, not metres, and square: blended world-size splats cost
+/// seconds a frame on a software rasteriser with 10,000 of them, sphere impostors 40 ms. Sizes and
+/// colours are stated choices; the seed gives none.
 
-#include <vtkNew.h>
 #include <vtkSmartPointer.h>
 
+#include <array>
 #include <vector>
 
 #include "core/math_types.h"
 
 class vtkActor;
-class vtkFloatArray;
-class vtkPointGaussianMapper;
+class vtkCellArray;
 class vtkPoints;
 class vtkPolyData;
 class vtkRenderer;
@@ -25,9 +27,10 @@ namespace viscera::view {
 
 class BloodBillboards {
  public:
-  /// Splat radius at birth and at the end of life, m.
-  static constexpr double kBirthRadius = 0.4e-3;
-  static constexpr double kDeathRadius = 1.6e-3;
+  static constexpr int kStages = 4;
+  /// Sprite diameter at birth and at the end of life, pixels of the scene pass.
+  static constexpr double kBirthSize = 6.0;
+  static constexpr double kDeathSize = 12.0;
 
   /// Adds the (empty) billboards to `scene`.
   explicit BloodBillboards(vtkRenderer* scene);
@@ -37,14 +40,17 @@ class BloodBillboards {
 
   /// Shows one billboard per particle at `positions` (m) with `stages` (0…1, one each).
   void update(const std::vector<core::Vec3>& positions, const std::vector<float>& stages);
-  std::size_t size() const;
+  std::size_t size() const { return size_; }
 
  private:
-  vtkSmartPointer<vtkPoints> points_;
-  vtkSmartPointer<vtkFloatArray> stage_, radius_;
-  vtkSmartPointer<vtkPolyData> cloud_;
-  vtkSmartPointer<vtkPointGaussianMapper> mapper_;
-  vtkSmartPointer<vtkActor> actor_;
+  struct Stage {
+    vtkSmartPointer<vtkPoints> points;
+    vtkSmartPointer<vtkCellArray> vertices;
+    vtkSmartPointer<vtkPolyData> cloud;
+    vtkSmartPointer<vtkActor> actor;
+  };
+  std::array<Stage, kStages> stages_;
+  std::size_t size_ = 0;
 };
 
 }  // namespace viscera::view

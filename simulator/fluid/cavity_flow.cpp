@@ -70,6 +70,9 @@ CavityFlow::CavityFlow(std::span<const core::Vec3> wall,
 
 void CavityFlow::relabel(const CavityInputs& inputs) {
   const double reach = settings_.relabel_motion * grid_.cell_size();
+  // Without the wall's positions (a step that was not due) nothing is labelled again.
+  if (inputs.wall.size() != wall_labelled_.size())
+    throw core::UsageError("the cavity flow needs the wall's current positions, one per vertex");
   bool tissue = inputs.obstacles_cut || largest_motion(inputs.wall, wall_labelled_) > reach ||
                 inputs.obstacles.size() != obstacles_labelled_.size();
   for (std::size_t o = 0; o < inputs.obstacles.size() && !tissue; ++o)

@@ -89,7 +89,8 @@ class CavityFlow {
 
   /// Advances `dt` s: releases the step's blood as particles and, once `interval` s have
   /// gathered, relabels what moved and takes one flow step, moving particles and blood with it.
-  /// Throws core::SimulationError when the flow's velocity is no longer finite.
+  /// Throws core::SimulationError when the flow's velocity is no longer finite, and
+  /// core::UsageError when a flow step is due and `inputs.wall` does not have the wall's size.
   void advance(double dt, const CavityInputs& inputs);
   /// True when advancing `dt` s takes a flow step (and needs the surfaces in its inputs).
   bool step_due(double dt) const { return gathered_ + dt >= settings_.interval * (1.0 - 1e-9); }

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/error.h"
 #include "core/primitives/icosphere.h"
 
 using namespace viscera;
@@ -207,4 +208,7 @@ TEST(CavityFlow, an_obstacle_in_the_cavity_is_solid_until_it_leaves) {
   flow.advance(0.02, inputs);
   EXPECT_EQ(g.cell(i, j, k), FlowCell::Fluid);
   EXPECT_EQ(count_cells(g, FlowCell::Fluid), fluid_before);
+  // A due step without the wall's positions is refused, not labelled from nothing.
+  inputs.wall = {};
+  EXPECT_THROW(flow.advance(0.02, inputs), core::UsageError);
 }

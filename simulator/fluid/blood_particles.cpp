@@ -81,13 +81,8 @@ void BloodParticles::advance(const FlowGrid& grid, const ArtificialVortices* vor
     for (int s = 0; s < substeps; ++s) {
       if (s > 0) v = velocity(position_[i]);
       const core::Vec3 next = position_[i] + dt * v;
-      const core::Vec3 local = (next - grid.origin()) * inverse_h;
-      const int a = static_cast<int>(std::floor(local.x())),
-                b = static_cast<int>(std::floor(local.y())),
-                c = static_cast<int>(std::floor(local.z()));
-      const bool inside =
-          a >= 0 && b >= 0 && c >= 0 && a < grid.nx() && b < grid.ny() && c < grid.nz();
-      if (inside && grid.cell(a, b, c) == FlowCell::Solid) {
+      const CellCoord cell = grid.cell_of(next);
+      if (grid.contains(cell) && grid.cell(cell.i, cell.j, cell.k) == FlowCell::Solid) {
         emit_velocity_[i] = core::Vec3::Zero();
         break;
       }

@@ -109,13 +109,9 @@ void CavityFlow::relabel(const CavityInputs& inputs) {
 }
 
 bool CavityFlow::in_tissue_fluid(const core::Vec3& point) const {
-  const core::Vec3 local = (point - grid_.origin()) / grid_.cell_size();
-  const int i = static_cast<int>(std::floor(local.x()));
-  const int j = static_cast<int>(std::floor(local.y()));
-  const int k = static_cast<int>(std::floor(local.z()));
-  if (i < 0 || j < 0 || k < 0 || i >= grid_.nx() || j >= grid_.ny() || k >= grid_.nz())
-    return false;
-  return tissue_labels_[static_cast<std::size_t>(grid_.cell_index(i, j, k))] == FlowCell::Fluid;
+  const CellCoord cell = grid_.cell_of(point);
+  if (!grid_.contains(cell)) return false;
+  return tissue_labels_[static_cast<std::size_t>(grid_.cell_index(cell))] == FlowCell::Fluid;
 }
 
 void CavityFlow::label_sheath(const CavityInputs& inputs, bool in_cavity) {
@@ -217,10 +213,7 @@ void CavityFlow::advance(double dt, const CavityInputs& inputs) {
     core::Vec3 birth = release.site + h * release.normal;
     for (double out = h; out <= 4.0 * h; out += 0.5 * h) {
       const core::Vec3 at = release.site + out * release.normal;
-      const core::Vec3 local = (at - grid_.origin()) / h;
-      if (grid_.cell_or_solid(static_cast<int>(std::floor(local.x())),
-                              static_cast<int>(std::floor(local.y())),
-                              static_cast<int>(std::floor(local.z()))) != FlowCell::Solid) {
+      if (grid_.cell_or_solid(grid_.cell_of(at)) != FlowCell::Solid) {
         birth = at;
         break;
       }
@@ -255,17 +248,13 @@ double CavityFlow::view_transmission(const core::Vec3& eye, const core::Vec3& di
   const core::Vec3 d = direction.normalized();
   double depth = 0.0;  // ∫ c ds, m
   for (double s = 0.5 * ds; s < settings_.view_depth; s += ds) {
-    const core::Vec3 local = (eye + s * d - grid_.origin()) / h;
-    const int i = static_cast<int>(std::floor(local.x()));
-    const int j = static_cast<int>(std::floor(local.y()));
-    const int k = static_cast<int>(std::floor(local.z()));
-    const FlowCell cell = grid_.cell_or_solid(i, j, k);
-    if (i < 0 || j < 0 || k < 0 || i >= grid_.nx() || j >= grid_.ny() || k >= grid_.nz()) break;
-    if (cell == FlowCell::Solid) {
+    const CellCoord at = grid_.cell_of(eye + s * d);
+    if (!grid_.contains(at)) break;
+    if (grid_.cell(at.i, at.j, at.k) == FlowCell::Solid) {
       if (s > h) break;  // the wall, or the sheath's own cells at the eye
       continue;
     }
-    depth += blood_.at(grid_, i, j, k) * ds;
+    depth += blood_.at(grid_, at.i, at.j, at.k) * ds;
   }
   return std::exp(-settings_.extinction * depth);
 }

@@ -152,16 +152,12 @@ FlowGrid label_cavity(std::span<const core::Vec3> positions,
   std::vector<long long> votes(sizes.size(), 0);
   for (std::size_t v = 0; v < positions.size() && v < cavity_marks.size(); ++v) {
     if (cavity_marks[v] != 1.0) continue;
-    const core::Vec3 local = (positions[v] - origin) / cell_size;
-    const int i = static_cast<int>(std::floor(local.x()));
-    const int j = static_cast<int>(std::floor(local.y()));
-    const int k = static_cast<int>(std::floor(local.z()));
-    const int near[7][3] = {{i, j, k},     {i - 1, j, k}, {i + 1, j, k}, {i, j - 1, k},
-                            {i, j + 1, k}, {i, j, k - 1}, {i, j, k + 1}};
-    for (const auto& q : near) {
-      if (q[0] < 0 || q[1] < 0 || q[2] < 0 || q[0] >= n[0] || q[1] >= n[1] || q[2] >= n[2])
-        continue;
-      const int p = pocket[static_cast<std::size_t>(grid.cell_index(q[0], q[1], q[2]))];
+    const auto [i, j, k] = grid.cell_of(positions[v]);
+    const CellCoord near[7] = {{i, j, k},     {i - 1, j, k}, {i + 1, j, k}, {i, j - 1, k},
+                               {i, j + 1, k}, {i, j, k - 1}, {i, j, k + 1}};
+    for (const CellCoord& q : near) {
+      if (!grid.contains(q)) continue;
+      const int p = pocket[static_cast<std::size_t>(grid.cell_index(q))];
       if (p >= 0) ++votes[static_cast<std::size_t>(p)];
     }
   }

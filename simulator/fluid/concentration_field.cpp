@@ -9,13 +9,10 @@ ConcentrationField::ConcentrationField(const FlowGrid& grid)
     : fraction_(static_cast<std::size_t>(grid.cell_count()), 0.0) {}
 
 double ConcentrationField::add_blood(const FlowGrid& grid, const core::Vec3& point, double volume) {
-  const core::Vec3 local = (point - grid.origin()) / grid.cell_size();
-  const int i = static_cast<int>(std::floor(local.x()));
-  const int j = static_cast<int>(std::floor(local.y()));
-  const int k = static_cast<int>(std::floor(local.z()));
-  if (grid.cell_or_solid(i, j, k) == FlowCell::Solid || !(volume > 0.0)) return 0.0;
+  const CellCoord cell = grid.cell_of(point);
+  if (grid.cell_or_solid(cell) == FlowCell::Solid || !(volume > 0.0)) return 0.0;
   const double h = grid.cell_size();
-  fraction_[static_cast<std::size_t>(grid.cell_index(i, j, k))] += volume / (h * h * h);
+  fraction_[static_cast<std::size_t>(grid.cell_index(cell))] += volume / (h * h * h);
   return volume;
 }
 
@@ -25,6 +22,20 @@ double ConcentrationField::total_volume(const FlowGrid& grid) const {
     sum += c;
   const double h = grid.cell_size();
   return sum * h * h * h;
+}
+
+bool ConcentrationField::share_with_neighbours(const FlowGrid& grid, int i, int j, int k,
+                                               double amount) {
+  const CellCoord next[6] = {{i - 1, j, k}, {i + 1, j, k}, {i, j - 1, k},
+                             {i, j + 1, k}, {i, j, k - 1}, {i, j, k + 1}};
+  int open = 0;
+  for (const CellCoord& q : next)
+    open += grid.cell_or_solid(q) != FlowCell::Solid;
+  if (open == 0) return false;
+  for (const CellCoord& q : next)
+    if (grid.cell_or_solid(q) != FlowCell::Solid)
+      fraction_[static_cast<std::size_t>(grid.cell_index(q))] += amount / open;
+  return true;
 }
 
 double ConcentrationField::spill(const FlowGrid& grid, int passes) {
@@ -37,17 +48,8 @@ double ConcentrationField::spill(const FlowGrid& grid, int passes) {
         for (int i = 0; i < grid.nx(); ++i) {
           auto& c = fraction_[static_cast<std::size_t>(grid.cell_index(i, j, k))];
           if (c <= 1.0 || grid.cell(i, j, k) == FlowCell::Solid) continue;
-          const int next[6][3] = {{i - 1, j, k}, {i + 1, j, k}, {i, j - 1, k},
-                                  {i, j + 1, k}, {i, j, k - 1}, {i, j, k + 1}};
-          int open = 0;
-          for (const auto& q : next)
-            open += grid.cell_or_solid(q[0], q[1], q[2]) != FlowCell::Solid;
-          if (open == 0) continue;
           const double excess = c - 1.0;
-          for (const auto& q : next)
-            if (grid.cell_or_solid(q[0], q[1], q[2]) != FlowCell::Solid)
-              fraction_[static_cast<std::size_t>(grid.cell_index(q[0], q[1], q[2]))] +=
-                  excess / open;
+          if (!share_with_neighbours(grid, i, j, k, excess)) continue;
           c = 1.0;
           moved += excess * h3;
           spilled = true;
@@ -65,16 +67,7 @@ double ConcentrationField::settle(const FlowGrid& grid) {
       for (int i = 0; i < grid.nx(); ++i) {
         auto& c = fraction_[static_cast<std::size_t>(grid.cell_index(i, j, k))];
         if (c == 0.0 || grid.cell(i, j, k) != FlowCell::Solid) continue;
-        const int next[6][3] = {{i - 1, j, k}, {i + 1, j, k}, {i, j - 1, k},
-                                {i, j + 1, k}, {i, j, k - 1}, {i, j, k + 1}};
-        int open = 0;
-        for (const auto& q : next)
-          open += grid.cell_or_solid(q[0], q[1], q[2]) != FlowCell::Solid;
-        if (open == 0) continue;
-        const double share = c / open;
-        for (const auto& q : next)
-          if (grid.cell_or_solid(q[0], q[1], q[2]) != FlowCell::Solid)
-            fraction_[static_cast<std::size_t>(grid.cell_index(q[0], q[1], q[2]))] += share;
+        if (!share_with_neighbours(grid, i, j, k, c)) continue;
         moved += c * h3;
         c = 0.0;
       }

@@ -48,6 +48,10 @@ class ConcentrationField {
   double drained_volume() const { return drained_; }
 
  private:
+  /// Adds `amount` (a volume fraction) to cell (i,j,k)'s non-solid face neighbours in equal
+  /// shares; false, and nothing added, when all six are solid.
+  bool share_with_neighbours(const FlowGrid& grid, int i, int j, int k, double amount);
+
   std::vector<double> fraction_;
   double drained_ = 0.0;
 };

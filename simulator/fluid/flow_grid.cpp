@@ -146,4 +146,10 @@ double FlowGrid::max_divergence() const {
   return worst;
 }
 
+CellCoord FlowGrid::cell_of(const core::Vec3& point) const {
+  const core::Vec3 local = (point - origin_) / h_;
+  return {static_cast<int>(std::floor(local.x())), static_cast<int>(std::floor(local.y())),
+          static_cast<int>(std::floor(local.z()))};
+}
+
 }  // namespace viscera::sim::fluid

@@ -29,6 +29,11 @@ enum class FaceState : std::uint8_t {
   Inside,      ///< between two solid cells (or past the grid): their mean velocity
 };
 
+/// Integer coordinates of one cell; they may lie outside the grid.
+struct CellCoord {
+  int i = 0, j = 0, k = 0;
+};
+
 /// Sizes of one component's face array: the cell counts plus one along the component's axis.
 struct FaceDims {
   int x = 0, y = 0, z = 0;
@@ -63,12 +68,19 @@ class FlowGrid {
   }
   /// Solid (at rest) outside the grid.
   FlowCell cell_or_solid(int i, int j, int k) const {
-    if (i < 0 || j < 0 || k < 0 || i >= nx_ || j >= ny_ || k >= nz_) return FlowCell::Solid;
+    if (!contains({i, j, k})) return FlowCell::Solid;
     return cell(i, j, k);
   }
+  FlowCell cell_or_solid(const CellCoord& c) const { return cell_or_solid(c.i, c.j, c.k); }
+  /// The cell holding `point` (m): ⌊(point − origin)/h⌋ on each axis, possibly outside the grid.
+  CellCoord cell_of(const core::Vec3& point) const;
+  bool contains(const CellCoord& c) const {
+    return c.i >= 0 && c.j >= 0 && c.k >= 0 && c.i < nx_ && c.j < ny_ && c.k < nz_;
+  }
+  int cell_index(const CellCoord& c) const { return cell_index(c.i, c.j, c.k); }
   /// A solid cell's own velocity, m/s (zero outside the grid).
   core::Vec3 solid_velocity(int i, int j, int k) const {
-    if (i < 0 || j < 0 || k < 0 || i >= nx_ || j >= ny_ || k >= nz_) return core::Vec3::Zero();
+    if (!contains({i, j, k})) return core::Vec3::Zero();
     return solid_velocity_[static_cast<std::size_t>(cell_index(i, j, k))];
   }
   /// Changes the velocity of solid cell (i,j,k) (m/s) and writes it into its six faces at once,

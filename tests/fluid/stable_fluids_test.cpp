@@ -149,3 +149,20 @@ TEST(StableFluids, bad_settings_are_refused) {
   EXPECT_THROW(FlowGrid(0, 4, 4, 0.001), core::UsageError);
   EXPECT_THROW(FlowGrid(4, 4, 4, 0.0), core::UsageError);
 }
+
+TEST(FlowGrid, the_cell_of_a_point_is_the_floor_of_its_grid_coordinates_inside_or_out) {
+  // 4×3×2 cells of 5 mm with the corner at (−10, 0, 20) mm.
+  const FlowGrid grid(4, 3, 2, 0.005, core::Vec3(-0.010, 0.0, 0.020));
+  const CellCoord inside = grid.cell_of(core::Vec3(-0.0001, 0.0126, 0.0251));
+  EXPECT_EQ(inside.i, 1);
+  EXPECT_EQ(inside.j, 2);
+  EXPECT_EQ(inside.k, 1);
+  EXPECT_TRUE(grid.contains(inside));
+  EXPECT_EQ(grid.cell_index(inside), grid.cell_index(1, 2, 1));
+  // Just below the corner is cell −1, not 0 (floor, not truncation), and outside: solid.
+  const CellCoord below = grid.cell_of(core::Vec3(-0.0101, 0.0001, 0.0201));
+  EXPECT_EQ(below.i, -1);
+  EXPECT_FALSE(grid.contains(below));
+  EXPECT_EQ(grid.cell_or_solid(below), FlowCell::Solid);
+  EXPECT_FALSE(grid.contains(grid.cell_of(core::Vec3(0.0101, 0.0001, 0.0201))));
+}

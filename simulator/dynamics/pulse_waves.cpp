@@ -1,6 +1,7 @@
 #include "simulator/dynamics/pulse_waves.h"
 
 #include <cmath>
+#include <string>
 
 #include "core/error.h"
 
@@ -44,9 +45,38 @@ void PulseWaves::build(const SimulationState& state, int first) {
   double spacing = mean_edge_length(model().mesh);
   if (!(spacing > 0.0)) spacing = 1e-3;  // a body of isolated nodes: sample every millimetre
   knots_ = pulse_wall_knots(tree_, state.range(state.rest_positions, model().body), spacing);
+  block_downstream();
   pushed_.clear();
   pushed_force_.clear();
   pushed_rest_.clear();
+}
+
+void PulseWaves::occlude(int segment, double along) {
+  if (segment < 0 || segment >= static_cast<int>(tree_.segments.size()))
+    throw core::UsageError("pulse \"" + id_ + "\": no segment " + std::to_string(segment) +
+                           " in vessel tree \"" + tree_.id + "\" to occlude");
+  const auto& seg = tree_.segments[static_cast<std::size_t>(segment)];
+  const double length = (seg.distal - seg.proximal).norm();
+  if (!(along >= 0.0 && along <= length))
+    throw core::UsageError("pulse \"" + id_ + "\": an occlusion must lie on its segment (0 to " +
+                           std::to_string(length) + " m along)");
+  occlusions_.emplace_back(segment,
+                           proximal_arc_lengths(tree_)[static_cast<std::size_t>(segment)] + along);
+  block_downstream();
+}
+
+void PulseWaves::block_downstream() {
+  blocked_.assign(knots_.size(), false);
+  for (std::size_t k = 0; k < knots_.size(); ++k)
+    for (const auto& [segment, arc] : occlusions_) {
+      // Downstream: on the clipped segment past the clip, or on any segment below it.
+      int s = knots_[k].segment;
+      bool below = s == segment && knots_[k].arc > arc;
+      for (s = tree_.segments[static_cast<std::size_t>(s)].parent; !below && s >= 0;
+           s = tree_.segments[static_cast<std::size_t>(s)].parent)
+        below = s == segment;
+      if (below) blocked_[k] = true;
+    }
 }
 
 void PulseWaves::shift(int delta) {
@@ -66,9 +96,11 @@ void PulseWaves::prepare(const SimulationState& state, const StepContext& contex
   const double margin = 1e-6 * context.h;
   const double start = context.time - margin;
   const double end = context.time + context.h - margin;
-  for (const auto& knot : knots_) {
+  for (std::size_t k = 0; k < knots_.size(); ++k) {
+    const PulseWallKnot& knot = knots_[k];
     const double travel = knot.arc / spec_.pulse_velocity;
     if (travel >= period_) break;  // sorted by arc: no wave reaches this far
+    if (blocked_[k]) continue;
     const double beat = (std::ceil((end - travel) / period_) - 1.0) * period_;
     if (beat < -margin || beat + travel < start) continue;
     pushed_.push_back(first_ + knot.node);

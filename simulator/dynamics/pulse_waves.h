@@ -13,6 +13,7 @@
 /// Energy of the step's load, relative to rest: E = −Σ F_k · (x_k − X_k) over the knots pushed
 /// (a load constant in x, zero Hessian).
 
+#include <utility>
 #include <vector>
 
 #include "core/scenario/scenario_parts.h"
@@ -38,6 +39,16 @@ class PulseWaves : public BodyTerm {
   void declare_blocks(BlockPattern&) const override {}
   void add_stiffness(std::span<const Vec3>, double, bool, BlockSparseMatrix&) const override {}
 
+  /// A clip or a coagulated spot on segment `segment` (index into the tree's segments), `along`
+  /// m from its proximal end: the wave no longer passes it, so no knot downstream of it (further
+  /// along that segment, or on any of its descendants) is pushed from the next prepare() on
+  /// (seed 001 §5.1.2: "the pulse stops behind the clip"). Occlusions add up and survive
+  /// topology changes. Throws core::UsageError for a segment not in the tree or `along` outside
+  /// [0, its length].
+  void occlude(int segment, double along);
+  /// Whether the wave still reaches wall knot `k` (an index into knots()).
+  bool reaches(std::size_t k) const { return !blocked_[k]; }
+
   /// s between beats.
   double period() const { return period_; }
   /// The wall knots, with body-local node indices.
@@ -56,6 +67,9 @@ class PulseWaves : public BodyTerm {
   double period_ = 1.0;
   int first_ = 0;
   std::vector<PulseWallKnot> knots_;
+  std::vector<std::pair<int, double>> occlusions_;  ///< (segment, hierarchy arc m) of each clip
+  std::vector<bool> blocked_;                       ///< per knot: downstream of an occlusion
+  void block_downstream();
   std::vector<int> pushed_;         ///< global nodes
   std::vector<Vec3> pushed_force_;  ///< N, per pushed node
   std::vector<Vec3> pushed_rest_;   ///< m, their rest positions

@@ -144,6 +144,37 @@ TEST(PulseWaves, a_wave_reaches_each_knot_at_its_path_length_over_the_wave_speed
   EXPECT_EQ(pulse.pushed().front() - first, 0);
 }
 
+TEST(PulseWaves, a_clip_stops_the_wave_downstream_and_not_upstream_or_on_the_sister_branch) {
+  PulseSetup setup = pulse_setup(branching_tree());
+  const core::PulseSpec spec{"arteries", 60.0, 2.0, 0.05};
+  PulseWaves pulse(setup.model, setup.state, spec, branching_tree(), "pulse");
+  pulse.occlude(1, 0.01);  // 10 mm down the upper daughter: hierarchy arc 30 mm
+  const int first = setup.state.body(setup.model->body).first;
+  std::map<int, int> pushes;
+  for (long long s = 0; s < 1000; ++s) {  // one beat
+    pulse.prepare(setup.state, {static_cast<double>(s) * 1e-3, 1e-3, s + 1});
+    for (const int g : pulse.pushed())
+      ++pushes[g - first];
+  }
+  int upstream = 0, downstream = 0;
+  for (std::size_t n = 0; n < setup.host.nodes.size(); ++n) {
+    const double path = setup.host.path_length[n];
+    const bool upper = setup.host.nodes[n].y() > 1e-9;  // the upper daughter and its daughter
+    const bool behind_clip = upper && path > 0.03 + 1e-9;
+    if (behind_clip) {
+      EXPECT_EQ(pushes.count(static_cast<int>(n)), 0u) << "pushed behind the clip: " << path;
+      ++downstream;
+    } else {
+      EXPECT_EQ(pushes[static_cast<int>(n)], 1) << "not reached before the clip: " << path;
+      ++upstream;
+    }
+  }
+  EXPECT_GT(downstream, 5);  // the rest of the upper daughter and all of the grand-daughter
+  EXPECT_GT(upstream, 20);
+  EXPECT_THROW(pulse.occlude(4, 0.0), core::UsageError);
+  EXPECT_THROW(pulse.occlude(1, 0.03), core::UsageError);  // the daughter is 22.4 mm long
+}
+
 TEST(PulseWaves, pushes_with_the_wall_force_outward_and_its_forces_are_the_energy_gradient) {
   PulseSetup setup = pulse_setup(branching_tree());
   const core::PulseSpec spec{"arteries", 60.0, 2.0, 0.05};

@@ -1,5 +1,6 @@
 #include "simulator/dynamics/pulse_waves.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -63,6 +64,19 @@ void PulseWaves::occlude(int segment, double along) {
   occlusions_.emplace_back(segment,
                            proximal_arc_lengths(tree_)[static_cast<std::size_t>(segment)] + along);
   block_downstream();
+}
+
+void PulseWaves::occlude_at(int segment, const Vec3& rest_point) {
+  if (segment < 0 || segment >= static_cast<int>(tree_.segments.size())) {
+    occlude(segment, 0.0);  // refuses it with the message
+    return;
+  }
+  const auto& seg = tree_.segments[static_cast<std::size_t>(segment)];
+  const Vec3 axis = seg.distal - seg.proximal;
+  const double length = axis.norm();
+  const double along =
+      length > 0.0 ? std::clamp((rest_point - seg.proximal).dot(axis) / length, 0.0, length) : 0.0;
+  occlude(segment, along);
 }
 
 void PulseWaves::block_downstream() {

@@ -46,6 +46,11 @@ class PulseWaves : public BodyTerm {
   /// topology changes. Throws core::UsageError for a segment not in the tree or `along` outside
   /// [0, its length].
   void occlude(int segment, double along);
+  /// occlude() at the point of segment `segment`'s axis nearest `rest_point` (m, in the frame
+  /// the tree was authored in: the host's rest frame).
+  void occlude_at(int segment, const Vec3& rest_point);
+  /// The id of the vessel tree the wave runs on.
+  const std::string& vessel_tree() const { return tree_.id; }
   /// Whether the wave still reaches wall knot `k` (an index into knots()).
   bool reaches(std::size_t k) const { return !blocked_[k]; }
 

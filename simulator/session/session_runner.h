@@ -141,6 +141,8 @@ class SessionRunner {
   void start_bleeding(int body, const cutting::TopologyChange& change, double time);
   /// With the coagulation pedal down: seals the bleeding sources within reach of the loop.
   void coagulate(double time);
+  /// Stops the pulse waves of the vessels coagulated at `time` s at their sites.
+  void stop_pulse_at_sealed_vessels(double time);
 
   /// The flow in the cavity of the first body whose surface marks a "cavity" (issue 18 §2),
   /// with the distension fluid.

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/mesh/surface_embedding.h"
+#include "simulator/dynamics/pulse_waves.h"
 #include "simulator/session/session_runner.h"
 
 namespace viscera::sim {
@@ -79,6 +80,27 @@ void SessionRunner::coagulate(double time) {
     report_.events.push_back(
         {time, "coagulated",
          "the loop coagulated " + std::to_string(sealed) + " bleeding source(s)"});
+    stop_pulse_at_sealed_vessels(time);
+  }
+}
+
+void SessionRunner::stop_pulse_at_sealed_vessels(double time) {
+  // A coagulated vessel is closed: its pulse wave stops there (issue 19 §1, seed 001 §5.1.2).
+  for (const fluid::BleedingSource& source : bleeding_->sources()) {
+    if (source.capillary || source.stop != fluid::BleedingStop::Coagulated ||
+        source.stopped_at != time)
+      continue;
+    const core::Vec3 rest_site = fluid::site_position(
+        source, world_.state().range(world_.state().rest_positions, source.body));
+    for (const auto& term : world_.terms()) {
+      auto* pulse = dynamic_cast<PulseWaves*>(term.get());
+      if (pulse == nullptr || pulse->vessel_tree() != source.vessel_tree) continue;
+      pulse->occlude_at(source.segment, rest_site);
+      report_.events.push_back({time, "pulse-stopped",
+                                "the pulse of vessel tree \"" + source.vessel_tree +
+                                    "\" stops at coagulated segment " +
+                                    std::to_string(source.segment)});
+    }
   }
 }
 

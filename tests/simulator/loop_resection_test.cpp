@@ -259,10 +259,16 @@ TEST(LoopResection, a_scoop_through_the_polyps_feeding_artery_bleeds_and_the_bal
               1e-9 * (f.used + f.bled));
 }
 
-TEST(LoopResection, the_coagulation_pedal_over_the_cut_seals_the_artery) {
+TEST(LoopResection, the_coagulation_pedal_over_the_cut_seals_the_artery_and_stops_its_pulse) {
   core::Scenario scenario =
       templates::build_from_template("hysteroscopy", {{"pathology_artery_radius", "0.0003"}}, 1);
   scenario.session.instrument.kind = "resectoscope";
+  // The polyp's artery pulses (a gentle 2 mN wave): coagulating it must stop the wave there.
+  const auto tree = std::find_if(scenario.vessel_trees.begin(), scenario.vessel_trees.end(),
+                                 [](const auto& t) { return t.id == "polyp-1-artery"; });
+  ASSERT_NE(tree, scenario.vessel_trees.end());
+  scenario.active_deformations.push_back(
+      {"polyp-pulse", tree->host_object, core::PulseSpec{tree->id, 70.0, 5.0, 0.002}});
   const PolypFrame frame = frame_of(scenario);
   const ScoopRun open = run(scenario, scoop_script(frame, 2.0e-3));
   const ScoopRun sealed = run(scenario, scoop_and_coagulate_script(frame, 2.0e-3, 1.0));
@@ -282,6 +288,13 @@ TEST(LoopResection, the_coagulation_pedal_over_the_cut_seals_the_artery) {
   const auto event = std::find_if(sealed.report.events.begin(), sealed.report.events.end(),
                                   [](const auto& e) { return e.kind == "coagulated"; });
   EXPECT_NE(event, sealed.report.events.end());
+  const auto stopped_pulse = [](const ScoopRun& r) {
+    return std::find_if(r.report.events.begin(), r.report.events.end(),
+                        [](const auto& e) { return e.kind == "pulse-stopped"; });
+  };
+  ASSERT_NE(stopped_pulse(sealed), sealed.report.events.end());
+  EXPECT_EQ(stopped_pulse(sealed)->time, a.stopped_at);
+  EXPECT_EQ(stopped_pulse(open), open.report.events.end());
   const nlohmann::json json = report_to_json(sealed.report);
   EXPECT_GE(json["bleeding"]["controlled"].get<int>(), 1);
   EXPECT_TRUE(json["bleeding"]["mean_time_to_control"].is_number());

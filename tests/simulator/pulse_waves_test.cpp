@@ -175,6 +175,25 @@ TEST(PulseWaves, a_clip_stops_the_wave_downstream_and_not_upstream_or_on_the_sis
   EXPECT_THROW(pulse.occlude(1, 0.03), core::UsageError);  // the daughter is 22.4 mm long
 }
 
+TEST(PulseWaves, occluding_at_a_point_clips_where_the_point_projects_on_the_segment_axis) {
+  PulseSetup setup = pulse_setup(branching_tree());
+  const core::PulseSpec spec{"arteries", 60.0, 2.0, 0.05};
+  PulseWaves by_length(setup.model, setup.state, spec, branching_tree(), "pulse");
+  PulseWaves by_point(setup.model, setup.state, spec, branching_tree(), "pulse");
+  by_length.occlude(1, 0.01);
+  // 10 mm down the upper daughter from (20, 0, 0) mm along (20, 10, 0)/|…|, 1 mm off its axis.
+  const core::Vec3 dir = core::Vec3(0.02, 0.01, 0.0).normalized();
+  by_point.occlude_at(1, core::Vec3(0.02, 0.0, 0.0) + 0.01 * dir + core::Vec3(0.0, 0.0, 0.001));
+  EXPECT_EQ(by_point.vessel_tree(), "arteries");
+  int blocked = 0;
+  for (std::size_t k = 0; k < by_length.knots().size(); ++k) {
+    EXPECT_EQ(by_point.reaches(k), by_length.reaches(k)) << k;
+    blocked += !by_point.reaches(k);
+  }
+  EXPECT_GT(blocked, 0);
+  EXPECT_THROW(by_point.occlude_at(7, core::Vec3::Zero()), core::UsageError);
+}
+
 TEST(PulseWaves, pushes_with_the_wall_force_outward_and_its_forces_are_the_energy_gradient) {
   PulseSetup setup = pulse_setup(branching_tree());
   const core::PulseSpec spec{"arteries", 60.0, 2.0, 0.05};

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "core/error.h"
@@ -52,11 +53,15 @@ void PulseWaves::build(const SimulationState& state, int first) {
   pushed_rest_.clear();
 }
 
-void PulseWaves::occlude(int segment, double along) {
-  if (segment < 0 || segment >= static_cast<int>(tree_.segments.size()))
-    throw core::UsageError("pulse \"" + id_ + "\": no segment " + std::to_string(segment) +
+const core::VesselSegment& PulseWaves::segment(int index) const {
+  if (index < 0 || index >= static_cast<int>(tree_.segments.size()))
+    throw core::UsageError("pulse \"" + id_ + "\": no segment " + std::to_string(index) +
                            " in vessel tree \"" + tree_.id + "\" to occlude");
-  const auto& seg = tree_.segments[static_cast<std::size_t>(segment)];
+  return tree_.segments[static_cast<std::size_t>(index)];
+}
+
+void PulseWaves::occlude(int segment, double along) {
+  const auto& seg = this->segment(segment);
   const double length = (seg.distal - seg.proximal).norm();
   if (!(along >= 0.0 && along <= length))
     throw core::UsageError("pulse \"" + id_ + "\": an occlusion must lie on its segment (0 to " +
@@ -67,16 +72,29 @@ void PulseWaves::occlude(int segment, double along) {
 }
 
 void PulseWaves::occlude_at(int segment, const Vec3& rest_point) {
-  if (segment < 0 || segment >= static_cast<int>(tree_.segments.size())) {
-    occlude(segment, 0.0);  // refuses it with the message
-    return;
-  }
-  const auto& seg = tree_.segments[static_cast<std::size_t>(segment)];
+  const auto& seg = this->segment(segment);
   const Vec3 axis = seg.distal - seg.proximal;
   const double length = axis.norm();
   const double along =
       length > 0.0 ? std::clamp((rest_point - seg.proximal).dot(axis) / length, 0.0, length) : 0.0;
   occlude(segment, along);
+}
+
+bool PulseWaves::occlude_nearest(const Vec3& rest_point, double reach) {
+  int best = -1;
+  double best_distance = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < tree_.segments.size(); ++k) {
+    const auto& seg = tree_.segments[k];
+    const Vec3 axis = seg.distal - seg.proximal;
+    const double length2 = axis.squaredNorm();
+    const double t =
+        length2 > 0.0 ? std::clamp((rest_point - seg.proximal).dot(axis) / length2, 0.0, 1.0) : 0.0;
+    const double d = (seg.proximal + t * axis - rest_point).norm() - seg.radius;
+    if (d < best_distance) best_distance = d, best = static_cast<int>(k);
+  }
+  if (best < 0 || best_distance > reach) return false;
+  occlude_at(best, rest_point);
+  return true;
 }
 
 void PulseWaves::block_downstream() {

@@ -49,6 +49,10 @@ class PulseWaves : public BodyTerm {
   /// occlude() at the point of segment `segment`'s axis nearest `rest_point` (m, in the frame
   /// the tree was authored in: the host's rest frame).
   void occlude_at(int segment, const Vec3& rest_point);
+  /// A clip or coagulation at `rest_point` (m, host rest frame): occludes the segment whose
+  /// wall (axis distance minus radius) lies nearest, when that is within `reach` m. Returns
+  /// whether a segment was occluded.
+  bool occlude_nearest(const Vec3& rest_point, double reach);
   /// The id of the vessel tree the wave runs on.
   const std::string& vessel_tree() const { return tree_.id; }
   /// Whether the wave still reaches wall knot `k` (an index into knots()).
@@ -75,6 +79,8 @@ class PulseWaves : public BodyTerm {
   std::vector<std::pair<int, double>> occlusions_;  ///< (segment, hierarchy arc m) of each clip
   std::vector<bool> blocked_;                       ///< per knot: downstream of an occlusion
   void block_downstream();
+  /// Segment `index` of the tree; throws core::UsageError naming the pulse when out of range.
+  const core::VesselSegment& segment(int index) const;
   std::vector<int> pushed_;         ///< global nodes
   std::vector<Vec3> pushed_force_;  ///< N, per pushed node
   std::vector<Vec3> pushed_rest_;   ///< m, their rest positions

@@ -21,6 +21,10 @@ InstrumentState instrument_from_pose(const DevicePose& pose) {
   state.abort = (pose.buttons & kDeviceAbortButton) != 0U;
   state.electrode = (pose.buttons & kDeviceCuttingPedal) != 0U;
   state.coagulation = (pose.buttons & kDeviceCoagulationPedal) != 0U;
+  state.jaws_closed = (pose.buttons & kDeviceJawsClosed) != 0U;
+  const std::uint32_t tool = (pose.buttons & kDeviceToolMask) >> kDeviceToolShift;
+  if (tool <= static_cast<std::uint32_t>(LaparoscopicTool::Bipolar))
+    state.tool = static_cast<LaparoscopicTool>(tool);
   orthonormalise(state);
   return state;
 }

@@ -22,10 +22,17 @@ inline constexpr std::uint32_t kDeviceAbortButton = 1U;
 /// Bits of DevicePose::buttons for the foot pedals: the loop's cutting and coagulating current.
 inline constexpr std::uint32_t kDeviceCuttingPedal = 2U;
 inline constexpr std::uint32_t kDeviceCoagulationPedal = 4U;
+/// Bit of DevicePose::buttons for the laparoscopic tool's handle: set while the jaws are closed.
+inline constexpr std::uint32_t kDeviceJawsClosed = 8U;
+/// Bits 4–6 of DevicePose::buttons: the laparoscopic tool in the working port, as the index of
+/// LaparoscopicTool (0 none, 1 grasper, 2 clip applier, 3 scissors, 4 bipolar; 5–7 mean none).
+inline constexpr int kDeviceToolShift = 4;
+inline constexpr std::uint32_t kDeviceToolMask = 7U << kDeviceToolShift;
 
 /// The instrument state a pose describes: tip = position, axis = q·ẑ, up = q·ŷ (q normalised;
-/// a zero quaternion counts as the identity), valves from the pose, abort and the pedals from
-/// the buttons. The loop stands at the sheath (the device moves the whole instrument).
+/// a zero quaternion counts as the identity), valves from the pose, abort, the pedals, the
+/// laparoscopic tool and its jaws from the buttons. The loop stands at the sheath (the device moves
+/// the whole instrument).
 InstrumentState instrument_from_pose(const DevicePose& pose);
 
 /// The instrument driven by a device on the loopback interface. Alone (a headless live run)

@@ -62,6 +62,7 @@ struct GamepadState {
 struct GamepadCommand {
   AnalogMotion motion;
   std::vector<ManualCommand> pressed;
+  std::vector<ManualCommand> released;  ///< held commands whose button came up
 };
 
 /// A stick or trigger deflection with the dead zone removed: 0 for |value| ≤ dead_zone, then

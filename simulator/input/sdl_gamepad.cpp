@@ -76,6 +76,8 @@ InstrumentState GamepadInput::next(double dt) {
     const GamepadCommand command = map_gamepad(reading, previous_, dead_zone_);
     for (const ManualCommand pressed : command.pressed)
       control_.press(pressed);
+    for (const ManualCommand released : command.released)
+      control_.release(released);
     control_.set_analog(command.motion);
     previous_ = reading;
   }

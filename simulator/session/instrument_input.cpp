@@ -148,6 +148,22 @@ ScriptedTrajectory ScriptedTrajectory::from_json(const nlohmann::json& json,
           fail(pointer + "/coagulate", "coagulate must be 0 or 1");
         s.coagulation = pedal == 1;
       }
+      // The laparoscopic tool in the working port and its jaws, held like the pedals.
+      if (w.contains("tool")) {
+        const auto& name = w["tool"];
+        const auto tool = name.is_string() ? tool_from_name(name.get<std::string>()) : std::nullopt;
+        if (!tool)
+          fail(pointer + "/tool",
+               "tool must be one of \"none\", \"grasper\", \"clip-applier\", \"scissors\", "
+               "\"bipolar\"");
+        s.tool = *tool;
+      }
+      if (w.contains("close")) {
+        const auto& jaws = w["close"];
+        if (!core::whole_number_fits<int>(jaws) || (jaws != 0 && jaws != 1))
+          fail(pointer + "/close", "close must be 0 or 1");
+        s.jaws_closed = jaws == 1;
+      }
       s.loop_extension = w.value("loop_extension", s.loop_extension);
       if (w.contains("look_at")) {
         const InstrumentState looking =

@@ -1,10 +1,14 @@
 #include "simulator/session/instrument_state.h"
 
+#include <array>
 #include <cmath>
 #include <numbers>
 
 namespace viscera::sim {
 namespace {
+
+constexpr std::array<std::string_view, 5> kToolNames = {"none", "grasper", "clip-applier",
+                                                        "scissors", "bipolar"};
 
 double radians(double degrees) {
   return degrees * std::numbers::pi / 180.0;
@@ -44,6 +48,16 @@ InstrumentState look_at(const core::Vec3& tip, const core::Vec3& target,
   return s;
 }
 
+std::string_view tool_name(LaparoscopicTool tool) {
+  return kToolNames[static_cast<std::size_t>(tool)];
+}
+
+std::optional<LaparoscopicTool> tool_from_name(std::string_view name) {
+  for (std::size_t i = 0; i < kToolNames.size(); ++i)
+    if (kToolNames[i] == name) return static_cast<LaparoscopicTool>(i);
+  return std::nullopt;
+}
+
 InstrumentState blend(const InstrumentState& a, const InstrumentState& b, double f) {
   InstrumentState s;
   s.tip = (1.0 - f) * a.tip + f * b.tip;
@@ -54,6 +68,8 @@ InstrumentState blend(const InstrumentState& a, const InstrumentState& b, double
   s.abort = f >= 1.0 && b.abort;
   s.electrode = f >= 1.0 ? b.electrode : a.electrode;
   s.coagulation = f >= 1.0 ? b.coagulation : a.coagulation;
+  s.tool = f >= 1.0 ? b.tool : a.tool;
+  s.jaws_closed = f >= 1.0 ? b.jaws_closed : a.jaws_closed;
   s.loop_extension = (1.0 - f) * a.loop_extension + f * b.loop_extension;
   orthonormalise(s);
   return s;

@@ -3,9 +3,23 @@
 /// shaft points, how the angled optics are rolled, the valve states, and whether the trainee
 /// aborts (seed 000 §8.1: the resectoscope's sensors report valve positions and camera angle).
 
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
 #include "core/math_types.h"
 
 namespace viscera::sim {
+
+/// The instrument in the working port of a laparoscopic session (seed 001 §4.1; issue 19 §3),
+/// at the same tip and shaft as the pose. `None` is the bare shaft of the optics: a probe.
+enum class LaparoscopicTool : std::uint8_t { None, Grasper, ClipApplier, Scissors, Bipolar };
+
+/// "none", "grasper", "clip-applier", "scissors", "bipolar": the names scripts, traces and the
+/// procedures' task parameters use.
+std::string_view tool_name(LaparoscopicTool tool);
+/// The tool of that name, or nullopt.
+std::optional<LaparoscopicTool> tool_from_name(std::string_view name);
 
 /// Longest travel of a resection loop in front of the sheath, m.
 inline constexpr double kMaxLoopExtension = 0.02;
@@ -30,6 +44,11 @@ struct InstrumentState {
   /// bleeding sources it touches (seed 000 §1.1.4: a bleeding source is "stopped via unipolar
   /// coagulation").
   bool coagulation = false;
+  /// The laparoscopic tool in the working port (switched during a session).
+  LaparoscopicTool tool = LaparoscopicTool::None;
+  /// The tool's jaws are closed (the handle squeezed): a grasper holds, a clip applier fires
+  /// its clip, scissors cut, bipolar forceps press the tissue between their electrodes.
+  bool jaws_closed = false;
 
   bool operator==(const InstrumentState&) const = default;
 };
@@ -49,8 +68,8 @@ InstrumentState look_at(const core::Vec3& tip, const core::Vec3& target,
                         const core::Vec3& axis_hint, double optics_angle);
 
 /// Blends two states: positions linearly, directions by normalised linear blend, valves
-/// linearly; `f` in [0, 1]. Abort is taken from `b` once f reaches 1; the electrode and the
-/// coagulation (pedals, not blends) stay as in `a` until then.
+/// linearly; `f` in [0, 1]. Abort is taken from `b` once f reaches 1; the electrode, the
+/// coagulation, the tool and its jaws (switches, not blends) stay as in `a` until then.
 InstrumentState blend(const InstrumentState& a, const InstrumentState& b, double f);
 
 }  // namespace viscera::sim

@@ -10,6 +10,7 @@
 #include "core/error.h"
 #include "simulator/cutting/fragments.h"
 #include "simulator/dynamics/attachment_term.h"
+#include "simulator/session/cut_topology.h"
 
 namespace viscera::sim {
 
@@ -18,36 +19,6 @@ namespace {
 /// A tenth of the radius, or 5°, between recorded poses of the sweep.
 constexpr double kPoseSpacingOfRadius = 0.1;
 const double kPoseTurnCosine = std::cos(5.0 * std::numbers::pi / 180.0);
-
-/// The cut's node sources as the core's per-node origins (at most four: an unchanged or copied
-/// node has one, a node on a cut edge two, a relaxed node the four corners of its old tet).
-std::vector<NodeOrigin> node_origins(const cutting::TopologyChange& change) {
-  std::vector<NodeOrigin> origins(change.mesh.nodes.size());
-  for (std::size_t i = 0; i < origins.size(); ++i) {
-    auto [begin, end] = change.sources(static_cast<int>(i));
-    // At most four by the cut's rules; anything longer keeps its four heaviest, renormalised.
-    std::array<cutting::NodeSource, 4> kept{};
-    std::size_t count = 0;
-    for (const cutting::NodeSource* s = begin; s != end; ++s) {
-      if (count < kept.size()) {
-        kept[count++] = *s;
-        continue;
-      }
-      auto lightest = std::min_element(kept.begin(), kept.end(), [](const auto& a, const auto& b) {
-        return a.weight < b.weight;
-      });
-      if (s->weight > lightest->weight) *lightest = *s;
-    }
-    double total = 0.0;
-    for (std::size_t k = 0; k < count; ++k)
-      total += kept[k].weight;
-    for (std::size_t k = 0; k < count; ++k) {
-      origins[i].node[k] = kept[k].old_node;
-      origins[i].weight[k] = total > 0.0 ? kept[k].weight / total : 0.0;
-    }
-  }
-  return origins;
-}
 
 struct Box {
   core::Vec3 lo = core::Vec3::Constant(std::numeric_limits<double>::infinity());
@@ -170,12 +141,7 @@ void LoopResection::cut(World& world, double time, CuttingSummary& summary,
     const cutting::TopologyChange change =
         cutting::hybrid_cut(model.mesh, current, surface, options_);
     if (!change.changed) continue;
-    BodyTopology topology;
-    topology.rest_mesh = change.mesh;
-    topology.positions = change.current;
-    topology.origin = node_origins(change);
-    topology.tet_parent = change.tet_parent;
-    world.topology_changed(b, topology);
+    world.topology_changed(b, topology_of_cut(change));
     summary.cut_seconds.push_back(
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     if (observer_) observer_(b, change, time);

@@ -32,6 +32,9 @@ std::optional<ManualCommand> ManualControl::command_for_key(const std::string& k
       {"i", ManualCommand::ToggleInflow},     {"o", ManualCommand::ToggleOutflow},
       {"t", ManualCommand::ExtendLoop},       {"g", ManualCommand::RetractLoop},
       {"space", ManualCommand::CuttingPedal}, {"c", ManualCommand::CoagulationPedal},
+      {"j", ManualCommand::CloseJaws},        {"0", ManualCommand::ToolNone},
+      {"1", ManualCommand::ToolGrasper},      {"2", ManualCommand::ToolClipApplier},
+      {"3", ManualCommand::ToolScissors},     {"4", ManualCommand::ToolBipolar},
       {"Escape", ManualCommand::Abort},       {"x", ManualCommand::Abort}};
   const auto it = keys.find(key);
   if (it == keys.end()) return std::nullopt;
@@ -42,6 +45,7 @@ std::string ManualControl::bindings_text() {
   return "W/S or Up/Down: advance/withdraw   A/D or Left/Right: swing left/right\n"
          "R/F: swing up/down   Q/E: roll the optics   I/O: inflow/outflow valve\n"
          "T/G: extend/retract the loop   Space: cutting pedal   C: coagulation pedal\n"
+         "1 grasper  2 clip applier  3 scissors  4 bipolar  0 none   J: close the jaws\n"
          "Left-drag: swing the shaft   Wheel: advance/withdraw   Esc or X: abort";
 }
 
@@ -52,6 +56,18 @@ void ManualControl::press(ManualCommand command) {
     state_.electrode = true;
   } else if (command == ManualCommand::CoagulationPedal) {
     state_.coagulation = true;
+  } else if (command == ManualCommand::CloseJaws) {
+    state_.jaws_closed = true;
+  } else if (command >= ManualCommand::ToolNone && command <= ManualCommand::ToolBipolar) {
+    // Switching opens the jaws: a tool comes in through the port with them open.
+    state_.tool = static_cast<LaparoscopicTool>(static_cast<int>(command) -
+                                                static_cast<int>(ManualCommand::ToolNone));
+    state_.jaws_closed = false;
+  } else if (command == ManualCommand::NextTool || command == ManualCommand::PreviousTool) {
+    const int count = static_cast<int>(LaparoscopicTool::Bipolar) + 1;
+    const int step = command == ManualCommand::NextTool ? 1 : count - 1;
+    state_.tool = static_cast<LaparoscopicTool>((static_cast<int>(state_.tool) + step) % count);
+    state_.jaws_closed = false;
   } else if (command == ManualCommand::ToggleInflow) {
     state_.inflow = state_.inflow > 0.0 ? 0.0 : 1.0;
   } else if (command == ManualCommand::ToggleOutflow) {
@@ -65,6 +81,7 @@ void ManualControl::release(ManualCommand command) {
   if (const int index = held_index(command); index >= 0) held_[index] = false;
   if (command == ManualCommand::CuttingPedal) state_.electrode = false;
   if (command == ManualCommand::CoagulationPedal) state_.coagulation = false;
+  if (command == ManualCommand::CloseJaws) state_.jaws_closed = false;
 }
 
 void ManualControl::drag(double dx, double dy) {

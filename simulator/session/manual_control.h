@@ -29,6 +29,14 @@ enum class ManualCommand {
   CoagulationPedal,  ///< held: the loop's coagulating current is on
   ToggleInflow,      ///< inflow valve open ↔ closed
   ToggleOutflow,     ///< outflow valve open ↔ closed
+  CloseJaws,         ///< held: the laparoscopic tool's jaws are closed
+  ToolNone,          ///< the working port empty (the bare optics shaft)
+  ToolGrasper,       ///< a grasper in the working port
+  ToolClipApplier,   ///< a clip applier
+  ToolScissors,      ///< scissors
+  ToolBipolar,       ///< bipolar forceps
+  NextTool,          ///< the next tool in the order above (after bipolar: none)
+  PreviousTool,      ///< the previous one
   Abort              ///< the trainee ends the session
 };
 

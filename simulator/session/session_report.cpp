@@ -124,6 +124,15 @@ nlohmann::json cutting_json(const SessionReport& r) {
           {"pathologies", bodies}};
 }
 
+/// m³ of blood every bleeding source let out.
+double blood_loss(const SessionReport& r) {
+  double bled = 0.0;
+  if (r.bleeding)
+    for (const auto& source : *r.bleeding)
+      bled += source.bled;
+  return bled;
+}
+
 /// The distension fluid's balance in m³ and Pa, or null without fluid.
 nlohmann::json fluid_json(const SessionReport& r) {
   if (!r.fluid) return nullptr;
@@ -302,6 +311,8 @@ nlohmann::json report_to_json(const SessionReport& r) {
           {"fluid_series", fluid_series_json(r)},
           {"cutting", cutting_json(r)},
           {"bleeding", bleeding_json(r)},
+          {"laparoscopy", r.laparoscopy ? laparoscopy_json(*r.laparoscopy, blood_loss(r))
+                                        : nlohmann::json(nullptr)},
           {"distension_flow", cavity_flow_json(r)},
           {"realtime", realtime_json(r)},
           {"end_reason", r.end_reason},

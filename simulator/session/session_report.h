@@ -15,6 +15,7 @@
 #include "simulator/fluid/bleeding_sources.h"
 #include "simulator/fluid/distension_balance.h"
 #include "simulator/session/instrument_state.h"
+#include "simulator/session/laparoscopy_summary.h"
 #include "simulator/session/session_metrics.h"
 #include "simulator/session/task_monitor.h"
 
@@ -185,7 +186,8 @@ struct SessionReport {
   std::optional<CuttingSummary> cutting;  ///< with a cutting instrument
   /// Every bleeding source the cuts opened, as the session left it (with a cutting instrument).
   std::optional<std::vector<fluid::BleedingSource>> bleeding;
-  std::optional<CavityFlowSummary> cavity_flow;  ///< when the cavity's flow is simulated
+  std::optional<CavityFlowSummary> cavity_flow;   ///< when the cavity's flow is simulated
+  std::optional<LaparoscopySummary> laparoscopy;  ///< with laparoscopic tools
   std::string end_reason = "duration";  ///< "duration", "time-limit", "completed", "perforation",
                                         ///< "fluid-overload", "tissue-tear", "abort"
 };

@@ -37,6 +37,7 @@ std::map<std::string, TaskTarget> landmarks_of(const core::Scenario& scenario) {
     TaskTarget target;
     target.position = mark.at("position").get<core::Vec3>();
     if (mark.contains("normal")) target.normal = mark["normal"].get<core::Vec3>();
+    target.object = mark.value("object", std::string());
     out[mark.at("id").get<std::string>()] = target;
   }
   return out;
@@ -65,6 +66,13 @@ std::unique_ptr<InstrumentTissue> make_tissue(const core::Scenario& scenario, Wo
 
 bool needs_target(const std::string& kind) {
   return kind == "reach" || kind == "centre-target" || kind == "withdraw";
+}
+
+/// Tasks of the laparoscopic tools judge a site: a landmark, or a named object.
+bool needs_site(const core::TaskSpec& task) {
+  const bool tool =
+      task.kind == "grasp" || task.kind == "clip" || task.kind == "coagulate" || task.kind == "cut";
+  return tool && !(task.parameters.is_object() && task.parameters.contains("object"));
 }
 
 }  // namespace
@@ -103,6 +111,7 @@ SessionRunner::SessionRunner(const core::Scenario& scenario, const HeadlessRunOp
     if (scenario.fluid.enabled) fluid_.emplace(scenario.fluid);
     if (tissue_->body() != nullptr) surface_object = tissue_->name();
     if (scenario.session.instrument.kind == "resectoscope") start_resection(scenario);
+    if (scenario.session.instrument.kind == "laparoscope") start_tools(scenario);
     if (fluid_) start_cavity_flow(scenario);
   }
 
@@ -152,10 +161,10 @@ SessionRunner::SessionRunner(const core::Scenario& scenario, const HeadlessRunOp
       const std::string id = task.parameters["landmark"].get<std::string>();
       if (const auto it = landmarks.find(id); it != landmarks.end()) {
         target = it->second;
-      } else if (needs_target(task.kind)) {
+      } else if (needs_target(task.kind) || needs_site(task)) {
         missing = "the scenario has no landmark \"" + id + "\"";
       }
-    } else if (needs_target(task.kind)) {
+    } else if (needs_target(task.kind) || needs_site(task)) {
       missing = "the task names neither a landmark nor a position";
     }
     if (task.kind == "inspect-surface") {
@@ -188,8 +197,9 @@ SessionRunner::SessionRunner(const core::Scenario& scenario, const HeadlessRunOp
       else if (report_.cutting->find(object) == nullptr)
         missing = "names \"" + object + "\", which is not a pathology body the loop can cut";
     }
-    monitors_.push_back(
-        {TaskMonitor(task, step_id, substep_id, target, missing, instrument_.kind), step});
+    monitors_.push_back({TaskMonitor(task, step_id, substep_id, target, missing, instrument_.kind,
+                                     tools_ != nullptr),
+                         step});
   };
   for (const auto& task : scenario.session.tasks)
     make_monitor(task, -1, "", "");
@@ -290,7 +300,7 @@ void SessionRunner::step(const InstrumentState& input) {
       report_.inputs.emplace_back(world_.steps() + 1, input);
     if (!(input == state_)) instrument_moved_ = true;
     state_ = input;
-    tissue_->move(state_, world_.time_step());
+    move_tissue();
   }
   step_world();
   const double now = world_.time();
@@ -298,8 +308,9 @@ void SessionRunner::step(const InstrumentState& input) {
     resection_->follow(state_, world_, now, *report_.cutting, report_.events);
     if (state_.coagulation) coagulate(now);
   }
+  if (tools_) follow_tools(now);
   if (has_instrument) {
-    const core::Vec3 force = tissue_->force();
+    const core::Vec3 force = instrument_force();
     const bool contact = tissue_->in_contact();
     const double dt = world_.time_step();
     report_.metrics.record(state_.tip, force, contact, dt, state_.inflow);
@@ -429,7 +440,7 @@ void SessionRunner::sample() {
     PathSample p;
     p.time = world_.time();
     p.tip = state_.tip;
-    p.force = tissue_->force().norm();
+    p.force = instrument_force().norm();
     p.in_contact = tissue_->in_contact();
     p.step = current_ < static_cast<int>(report_.procedure_steps.size()) ? current_ : -1;
     if (coverage_ != nullptr) p.wall_distance = coverage_->bvh().nearest(state_.tip).distance;
@@ -441,12 +452,19 @@ void SessionRunner::sample() {
   context.view = view_direction(state_, instrument_.optics_angle);
   context.in_contact = tissue_ != nullptr && tissue_->in_contact();
   if (context.in_contact) context.contact_object = tissue_->name();
-  context.force = tissue_ != nullptr ? tissue_->force().norm() : 0.0;
+  context.force = instrument_force().norm();
   context.kinetic_energy = e.kinetic;
   context.camera = coverage_.get();
   context.fraction_seen = coverage_ ? coverage_->fraction_seen() : 0.0;
   context.instrument_moved = instrument_moved_;
   context.cutting = report_.cutting ? &*report_.cutting : nullptr;
+  if (tools_) {
+    context.laparoscopy = &*report_.laparoscopy;
+    for (const NodeReference& r : tools_->grasp().held()) {
+      context.grasped_object = world_.models()[static_cast<std::size_t>(r.body)]->name;
+      context.grasped_rest.push_back(r.rest);
+    }
+  }
   for (auto& m : monitors_) {
     const bool watched = m.step < 0 || m.step == current_ || m.step == current_ + 1;
     if (!watched || m.task.done()) continue;

@@ -16,6 +16,7 @@
 #include "simulator/fluid/distension_balance.h"
 #include "simulator/session/instrument_input.h"
 #include "simulator/session/instrument_tissue.h"
+#include "simulator/session/laparoscopic_tools.h"
 #include "simulator/session/loop_resection.h"
 #include "simulator/session/series_thinning.h"
 #include "simulator/session/session_report.h"
@@ -71,8 +72,11 @@ class SessionRunner {
   const World& world() const { return world_; }
   const SessionReport& report() const { return report_; }
   const InstrumentState& instrument_state() const { return state_; }
-  /// Force of the tissue on the instrument, N (zero without instrument).
-  core::Vec3 instrument_force() const { return tissue_ ? tissue_->force() : core::Vec3::Zero(); }
+  /// Force of the tissue on the instrument, N (zero without instrument): on its tip, plus what
+  /// a grasper holds.
+  core::Vec3 instrument_force() const;
+  /// The laparoscopic tools, or null when the instrument carries none.
+  const LaparoscopicTools* tools() const { return tools_.get(); }
   /// The tissue the instrument acts on, or null without instrument.
   const InstrumentTissue* tissue() const { return tissue_.get(); }
   const core::InstrumentSpec& instrument() const { return instrument_; }
@@ -137,12 +141,30 @@ class SessionRunner {
   /// Feeds the valves and the bleeding sources of one step of `dt` s to the fluid balance and
   /// ends the session on fluid overload.
   void balance_fluid(double dt);
+  /// No bleeding yet, and the vessel trees each body hosts (for the cuts to open).
+  void start_bleeding_sources(const core::Scenario& scenario);
   /// Starts the bleeding of a cut of world body `body` at `time` s.
   void start_bleeding(int body, const cutting::TopologyChange& change, double time);
   /// With the coagulation pedal down: seals the bleeding sources within reach of the loop.
   void coagulate(double time);
   /// Stops the pulse waves of the vessels coagulated at `time` s at their sites.
   void stop_pulse_at_sealed_vessels(double time);
+
+  /// The laparoscopic tools in the working port (issue 19 §3), with a "laparoscope" instrument.
+  std::unique_ptr<LaparoscopicTools> tools_;
+  /// Sets up the tools, their report block and what clips, coagulation and cuts do to the
+  /// bleeding and the pulse waves.
+  void start_tools(const core::Scenario& scenario);
+  /// Moves the instrument's contact point to state_ (a tool's jaws touch with their hinge).
+  void move_tissue();
+  /// After a physics step: the tools follow the instrument.
+  void follow_tools(double time);
+  /// Seals the bleeding sources within `reach` m of `point` (m, current) at `time` s.
+  void seal_bleeding_near(const core::Vec3& point, double reach, double time);
+  /// Stops every pulse wave on `body` at `rest_point` (m) when a vessel of its tree runs within
+  /// `reach` m; `what` names the cause in the event.
+  void stop_pulse_near(int body, const core::Vec3& rest_point, double reach, double time,
+                       const std::string& what);
 
   /// The flow in the cavity of the first body whose surface marks a "cavity" (issue 18 §2),
   /// with the distension fluid.

@@ -26,6 +26,14 @@ void SessionRunner::start_resection(const core::Scenario& scenario) {
   report_.cutting.emplace();
   resection_->begin(world_, *report_.cutting);
 
+  start_bleeding_sources(scenario);
+  resection_->on_cut([this](int body, const cutting::TopologyChange& change, double time) {
+    start_bleeding(body, change, time);
+    cut_since_flow_ = true;
+  });
+}
+
+void SessionRunner::start_bleeding_sources(const core::Scenario& scenario) {
   bleeding_.emplace();
   report_.bleeding.emplace();
   hosted_trees_.assign(world_.models().size(), {});
@@ -35,10 +43,6 @@ void SessionRunner::start_resection(const core::Scenario& scenario) {
         hosted_trees_[static_cast<std::size_t>(model->body)].push_back(tree);
     }
   }
-  resection_->on_cut([this](int body, const cutting::TopologyChange& change, double time) {
-    start_bleeding(body, change, time);
-    cut_since_flow_ = true;
-  });
 }
 
 void SessionRunner::start_bleeding(int body, const cutting::TopologyChange& change, double time) {

@@ -25,8 +25,18 @@ std::string package_manifest_sha256(const std::filesystem::path& package) {
 namespace {
 
 nlohmann::json state_to_json(long long step, const InstrumentState& s) {
-  return {step,    s.tip,       s.axis,           s.up,         s.inflow, s.outflow,
-          s.abort, s.electrode, s.loop_extension, s.coagulation};
+  return {step,
+          s.tip,
+          s.axis,
+          s.up,
+          s.inflow,
+          s.outflow,
+          s.abort,
+          s.electrode,
+          s.loop_extension,
+          s.coagulation,
+          std::string(tool_name(s.tool)),
+          s.jaws_closed};
 }
 
 std::pair<long long, InstrumentState> state_from_json(const nlohmann::json& j) {
@@ -41,6 +51,12 @@ std::pair<long long, InstrumentState> state_from_json(const nlohmann::json& j) {
   if (j.size() > 7) j.at(7).get_to(s.electrode);
   if (j.size() > 8) j.at(8).get_to(s.loop_extension);
   if (j.size() > 9) j.at(9).get_to(s.coagulation);  // since the coagulation pedal
+  if (j.size() > 11) {                              // since the laparoscopic tools
+    const auto tool = tool_from_name(j.at(10).get<std::string>());
+    if (!tool) throw core::ValidationError("an input names an unknown laparoscopic tool", {});
+    s.tool = *tool;
+    j.at(11).get_to(s.jaws_closed);
+  }
   return {core::whole_number<long long>(j.at(0), "", ""), s};
 }
 

@@ -14,6 +14,9 @@ namespace {
 /// one shaft whose tip carries the haptic proxy and the camera).
 const std::set<std::string> kDetectedKinds = {
     "reach", "centre-target", "inspect-surface", "withdraw", "touch", "settle", "resect"};
+/// Kinds detected when the working port carries the laparoscopic tools (LaparoscopicTools).
+const std::set<std::string> kToolKinds = {"grasp", "clip", "coagulate", "cut"};
+const std::set<std::string> kLaparoscopicTools = {"grasper", "clip-applier", "scissors", "bipolar"};
 const std::set<std::string> kSimulatedTools = {"hysteroscope",        "cystoscope",   "laparoscope",
                                                "resectoscope-optics", "resectoscope", "probe"};
 
@@ -23,6 +26,7 @@ std::string tool_needed(const std::string& kind) {
   if (kind == "clip") return "clip-applier";
   if (kind == "cut") return "scissors";
   if (kind == "resect") return "resectoscope";
+  if (kind == "coagulate") return "bipolar";
   return "";
 }
 
@@ -35,7 +39,7 @@ double parameter(const core::TaskSpec& task, const char* key, double fallback) {
 
 TaskMonitor::TaskMonitor(const core::TaskSpec& task, std::string step, std::string substep,
                          std::optional<TaskTarget> target, const std::string& missing,
-                         const std::string& simulated_tool)
+                         const std::string& simulated_tool, bool laparoscopic_tools)
     : spec_(task), target_(std::move(target)) {
   if (!spec_.parameters.is_object())
     spec_.parameters = nlohmann::json::object();  // `{}` in C++ is null
@@ -46,13 +50,16 @@ TaskMonitor::TaskMonitor(const core::TaskSpec& task, std::string step, std::stri
   result_.substep = std::move(substep);
   hold_time_ = parameter(task, "hold_time", 0.0);
   const std::string tool = spec_.parameters.value("tool", tool_needed(task.kind));
-  if (!tool.empty() && !kSimulatedTools.contains(tool)) {
+  const bool simulated =
+      kSimulatedTools.contains(tool) || (laparoscopic_tools && kLaparoscopicTools.contains(tool));
+  if (!tool.empty() && !simulated) {
     result_.status = "unavailable";
     // "a grasper", "a clip-applier", but "scissors".
     result_.note = "needs " + std::string(tool.ends_with('s') ? "" : "a ") + tool +
                    ", which this runtime cannot simulate yet (it simulates a rigid " +
                    simulated_tool + " with a camera and a haptic tip)";
-  } else if (!kDetectedKinds.contains(task.kind)) {
+  } else if (!kDetectedKinds.contains(task.kind) &&
+             !(laparoscopic_tools && kToolKinds.contains(task.kind))) {
     result_.status = "unavailable";
     result_.note = "tasks of kind \"" + task.kind + "\" cannot be detected by this runtime";
   } else if (!missing.empty()) {
@@ -68,12 +75,13 @@ void TaskMonitor::complete(const TaskContext& c, const std::string& note) {
   result_.note = note;
 }
 
+void TaskMonitor::track_best(double value, bool lower_is_better) {
+  if (result_.best < 0.0 || (lower_is_better ? value < result_.best : value > result_.best))
+    result_.best = value;
+}
+
 bool TaskMonitor::holds(const TaskContext& c) {
   const core::Vec3& tip = c.state.tip;
-  const auto track_best = [this](double value, bool lower_is_better) {
-    if (result_.best < 0.0 || (lower_is_better ? value < result_.best : value > result_.best))
-      result_.best = value;
-  };
   if (spec_.kind == "reach") {
     const double d = (tip - target_->position).norm();
     track_best(d, true);
@@ -126,6 +134,48 @@ bool TaskMonitor::holds(const TaskContext& c) {
     track_best(b->resected_fraction(), false);
     return b->resected_fraction() >= parameter(spec_, "fraction", 0.9);
   }
+  if (kToolKinds.contains(spec_.kind)) return tool_task_holds(c);
+  return false;
+}
+
+bool TaskMonitor::tool_task_holds(const TaskContext& c) {
+  if (c.laparoscopy == nullptr) return false;
+  const LaparoscopySummary& tools = *c.laparoscopy;
+  // The object and site: the task's "object", else its landmark's; within "radius" m of the
+  // landmark (at rest: sites are judged where the tissue belongs, not where it was pulled).
+  const std::string object =
+      spec_.parameters.value("object", target_ ? target_->object : std::string());
+  const double radius = parameter(spec_, "radius", 0.015);
+  const auto near = [&](const core::Vec3& rest) {
+    return !target_ || (rest - target_->position).norm() <= radius;
+  };
+  if (spec_.kind == "grasp") {
+    if (c.grasped_object != object || c.grasped_rest.empty()) return false;
+    for (const auto& p : c.grasped_rest)
+      if (near(p)) return true;
+    return false;
+  }
+  if (spec_.kind == "clip") {
+    // The "count"-th secure clip on the object near the site (1 for the first clip task).
+    int secure = 0;
+    for (const ClipPlacement& clip : tools.clips)
+      if (clip.body == object && clip.secure() && near(clip.rest_position)) ++secure;
+    track_best(secure, false);
+    return secure >= parameter(spec_, "count", 1.0);
+  }
+  if (spec_.kind == "coagulate") {
+    const CoagulatedTissue* coagulated = tools.coagulated_of(object);
+    if (coagulated == nullptr) return false;
+    bool at_site = false;
+    for (const auto& p : coagulated->rest_positions)
+      at_site = at_site || near(p);
+    track_best(coagulated->length, false);
+    return at_site && coagulated->length >= parameter(spec_, "length", 0.004);
+  }
+  // cut: divided the object near the site, between two secure clips when the task says so.
+  const bool between = spec_.parameters.value("between_clips", false);
+  for (const ScissorCut& cut : tools.cuts)
+    if (cut.body == object && cut.separated() && (!between || cut.between_clips)) return true;
   return false;
 }
 

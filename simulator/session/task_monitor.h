@@ -8,6 +8,7 @@
 
 #include "core/scenario/scenario_parts.h"
 #include "simulator/session/instrument_state.h"
+#include "simulator/session/laparoscopy_summary.h"
 
 namespace viscera::sim {
 
@@ -17,6 +18,7 @@ class SurfaceCoverage;
 struct TaskTarget {
   core::Vec3 position = core::Vec3::Zero();
   core::Vec3 normal = core::Vec3::Zero();
+  std::string object;  ///< the object a landmark lies on, or ""
 };
 
 /// The session as a task sees it at one moment.
@@ -39,6 +41,12 @@ struct TaskContext {
   bool instrument_moved = true;
   /// The resection loop's cuts so far, or null when the instrument cannot cut ("resect" tasks).
   const CuttingSummary* cutting = nullptr;
+  /// What the laparoscopic tools did so far, or null without them (grasp, clip, coagulate and
+  /// cut tasks).
+  const LaparoscopySummary* laparoscopy = nullptr;
+  /// The object the grasper holds now and the rest positions (m) of the knots it holds.
+  std::string grasped_object;
+  std::vector<core::Vec3> grasped_rest;
 };
 
 /// What became of a task. Status "completed", "not-completed" or "unavailable".
@@ -60,10 +68,11 @@ class TaskMonitor {
  public:
   /// `target` is the resolved landmark or position (nullopt when the task has none or it
   /// could not be resolved: `missing` says why, and the task is unavailable). `simulated_tool`
-  /// is the kind of instrument the session simulates.
+  /// is the kind of instrument the session simulates; with `laparoscopic_tools` its working
+  /// port also carries the grasper, clip applier, scissors and bipolar forceps.
   TaskMonitor(const core::TaskSpec& task, std::string step, std::string substep,
               std::optional<TaskTarget> target, const std::string& missing,
-              const std::string& simulated_tool);
+              const std::string& simulated_tool, bool laparoscopic_tools = false);
 
   /// Looks at the session; completes the task when its condition has held long enough.
   void update(const TaskContext& context);
@@ -74,6 +83,10 @@ class TaskMonitor {
 
  private:
   bool holds(const TaskContext& context);
+  /// Grasp, clip, coagulate and cut tasks, from what the laparoscopic tools did.
+  bool tool_task_holds(const TaskContext& context);
+  /// Keeps the closest approach in result_.best.
+  void track_best(double value, bool lower_is_better);
   void complete(const TaskContext& context, const std::string& note);
 
   core::TaskSpec spec_;

@@ -108,6 +108,10 @@ void World::add_term(std::unique_ptr<ForceTerm> term) {
   integrator_->topology_changed(state_, term_pointers());
 }
 
+void World::stiffness_changed() {
+  integrator_->topology_changed(state_, term_pointers());
+}
+
 void World::step() {
   const StepContext context{time(), time_step_, steps_ + 1};
   if (asleep_) {

@@ -87,6 +87,9 @@ class World {
   /// integrator's structure is rebuilt.
   void add_term(std::unique_ptr<ForceTerm> term);
   const std::vector<std::shared_ptr<BodyModel>>& models() const { return models_; }
+  /// Call after changing a term's coefficients in place (coagulated tissue stiffening): the
+  /// integrator plans its step anew (the explicit one its stable sub-step).
+  void stiffness_changed();
 
   /// Puts a haptic instrument into the world: a proxy point over the surfaces of EVERY body with
   /// a proxy–tip spring of `stiffness` N/m (seed 000 §8.2); `body` is the body the session

@@ -197,7 +197,7 @@ core::Scenario LaparoscopyGynTemplate::build(const ParameterValues& p, std::uint
             0.4 * tr, density,
             {cornu, cornu + mirror({0.03, 0.0, 0.01}, side),
              cornu + mirror({0.06, -0.02, -0.035}, side)},
-            3.5 * tr);
+            1.5 * tr);  // the isthmus stays free for 2 cm: room to grasp, clip twice and cut
     // The isthmus, where a tube is occluded: on the front (−y, where the laparoscope looks
     // from) of the middle of its first, narrow segment.
     scenario.landmarks.push_back(

@@ -157,14 +157,17 @@ TEST(SessionRunner, time_limit_and_trainee_abort_end_the_session) {
   EXPECT_EQ(task(aborted, "withdraw").status, "not-completed");
 }
 
-TEST(SessionRunner, tasks_needing_tools_the_runtime_lacks_are_unavailable_with_the_reason) {
+TEST(SessionRunner, tasks_needing_tools_the_instrument_lacks_are_unavailable_with_the_reason) {
   core::Scenario scenario = viscera::testing::cavity_scenario();
   core::apply_procedure(scenario.session,
                         core::procedure_definition("laparoscopic-tubal-sterilisation"));
   const auto expert =
       ScriptedTrajectory::from_json(viscera::testing::expert_cavity_script(), "expert");
+  // A hysteroscope has no working port for laparoscopic tools.
+  scenario.session.instrument.kind = "hysteroscope";
   const SessionReport report = run(scenario, expert, 1.0);
-  for (const char* id : {"grasp-tube", "clip-proximal", "clip-distal", "cut-tube"}) {
+  for (const char* id :
+       {"grasp-tube", "coagulate-isthmus", "clip-proximal", "clip-distal", "cut-tube"}) {
     EXPECT_EQ(task(report, id).status, "unavailable") << id;
     EXPECT_NE(task(report, id).note.find("cannot simulate"), std::string::npos)
         << task(report, id).note;
@@ -173,6 +176,19 @@ TEST(SessionRunner, tasks_needing_tools_the_runtime_lacks_are_unavailable_with_t
   EXPECT_EQ(task(report, "view-left-tube").status, "unavailable");
   EXPECT_NE(task(report, "view-left-tube").note.find("fallopian-tube-left"), std::string::npos);
   EXPECT_EQ(report.metrics.tasks_available(), 0);
+  EXPECT_FALSE(report.laparoscopy.has_value());
+
+  // The laparoscope's working port carries the tools: now only the missing site stops them.
+  scenario.session.instrument.kind = "laparoscope";
+  const SessionReport lap = run(scenario, expert, 1.0);
+  for (const char* id :
+       {"grasp-tube", "coagulate-isthmus", "clip-proximal", "clip-distal", "cut-tube"}) {
+    EXPECT_EQ(task(lap, id).status, "unavailable") << id;
+    EXPECT_NE(task(lap, id).note.find("no landmark \"fallopian-tube-left\""), std::string::npos)
+        << task(lap, id).note;
+  }
+  ASSERT_TRUE(lap.laparoscopy.has_value());
+  EXPECT_TRUE(lap.laparoscopy->clips.empty());
 }
 
 TEST(SessionRunner, a_recorded_session_replays_bit_identically_and_a_nudge_departs) {

@@ -1,0 +1,149 @@
+#pragma once
+/// The laparoscopic tools of the working port in a session (seed 001 §4.1; issue 19 §3): a
+/// grasper, a clip applier, scissors and bipolar forceps, switched during the session
+/// (InstrumentState::tool) and worked by closing their jaws (InstrumentState::jaws_closed).
+///
+/// Every tool has jaws at the instrument's tip: they reach `jaw_length` m back along the shaft
+/// from the tip, open `jaw_opening` m along InstrumentState::up, and are `jaw_width` m wide
+/// across (along axis × up). The tissue between the jaws is the free knots of the body nearest
+/// the tip inside that box; where the body's knots are coarser than the jaws are wide (the
+/// laparoscopy nets space their knot rings a few mm apart), the knot ring nearest the jaws'
+/// mid-plane is taken instead, so the jaws never close on nothing that lies between them.
+///
+/// - Grasper: closing takes the tissue between the jaws (GraspTerm); it follows the jaws while
+///   they stay closed and pulls back on the hand; a knot pulled harder than `grasp_slip_force`
+///   tears out of the jaws. Opening releases.
+/// - Clip applier: each closing on tissue fires one clip (ClipTerm) squeezing its knots flat
+///   along the jaws' closing direction; clips stay to the end of the session.
+/// - Scissors: each closing cuts the tissue between the blades along the triangle the blades
+///   sweep (hinge `jaw_length` behind the tip, blade tips `scissor_spread` either side of it)
+///   (cutting::scissor_cut_surface, then the hybrid cut of seed 000 §5.1 and
+///   World::topology_changed).
+/// - Bipolar forceps: with the jaws closed and the coagulation pedal down, the knots between
+///   the jaws heat; a knot that has had `coagulation_dose` s of current is coagulated: the
+///   springs between coagulated knots stiffen by `coagulated_stiffening` and shorten by
+///   `coagulated_shrinkage` (desiccated tissue is stiffer and contracts), and the session seals
+///   bleeding and stops pulse waves there (observers). The coagulated length of a site is the
+///   extent of its knots along the tube plus one jaw width (the burn under the jaws).
+///
+/// The instrument touches tissue with the jaws' hinge (hinge(): `jaw_length` behind the tip):
+/// open jaws straddle what they are to close on, so the haptic proxy sits where the jaws meet.
+///
+/// Decisions where the seeds are silent are the defaults of LaparoscopicToolOptions, stated
+/// with their reasons there.
+
+#include <functional>
+#include <vector>
+
+#include "simulator/cutting/topology_change.h"
+#include "simulator/dynamics/clip_term.h"
+#include "simulator/dynamics/grasp_term.h"
+#include "simulator/session/instrument_state.h"
+#include "simulator/session/laparoscopy_summary.h"
+#include "simulator/session/session_report.h"
+#include "simulator/world/world.h"
+
+namespace viscera::sim {
+
+struct LaparoscopicToolOptions {
+  double jaw_length = 0.012;   ///< m: 5 mm laparoscopic instruments have 10–20 mm jaws
+  double jaw_opening = 0.008;  ///< m: wide enough for a tube or vessel of up to 8 mm
+  double jaw_width = 0.003;    ///< m, across the jaws
+  double clip_width = 0.0015;  ///< m, a titanium clip's leg
+  /// m from the tip to each open scissor blade's tip, across the shaft: with the jaw length a
+  /// 45° half-angle, so a tube sitting mid-way into the blades is crossed whole.
+  double scissor_spread = 0.012;
+  /// m either side of the jaws' mid-plane searched for the nearest knot ring when none lies
+  /// within the jaws' width.
+  double ring_search = 0.004;
+  double grasp_stiffness = 30.0;  ///< N/m per held knot
+  double grasp_slip_force = 1.0;  ///< N per held knot before it tears out of the jaws
+  double clip_stiffness = 60.0;   ///< N/m per clipped knot
+  /// m between a closed clip's jaws: the two crushed walls of a tube or vessel.
+  double clip_closed_gap = 0.001;
+  double clip_closing_time = 0.3;      ///< s the applier's jaws take to close a clip
+  double coagulation_dose = 1.0;       ///< s of bipolar current that coagulates a knot
+  double coagulated_stiffening = 2.0;  ///< factor on the springs between coagulated knots
+  double coagulated_shrinkage = 0.05;  ///< fraction their rest length shortens
+};
+
+class LaparoscopicTools {
+ public:
+  /// The tools act on every body of `world` with tets (KisMo nets and Teschner bodies); the
+  /// grasper's term is added to the world.
+  LaparoscopicTools(World& world, LaparoscopicToolOptions options = {});
+
+  /// After every physics step of `dt` s with the instrument in `state`: switches tools, opens
+  /// and closes jaws, moves what the grasper holds, heats tissue; records in `summary` and
+  /// `events` at `time` s.
+  void follow(const InstrumentState& state, World& world, double time, double dt,
+              LaparoscopySummary& summary, std::vector<SessionEvent>& events);
+
+  /// Force of the held tissue on the grasper's jaws, N (zero when it holds nothing).
+  core::Vec3 force(const World& world) const;
+  const GraspTerm& grasp() const { return *grasp_; }
+  /// The clips placed so far, in order.
+  const std::vector<ClipTerm*>& clips() const { return clips_; }
+  /// Per world body and node: 1 for a coagulated knot.
+  const std::vector<std::vector<std::uint8_t>>& coagulated() const { return coagulated_; }
+  const LaparoscopicToolOptions& options() const { return options_; }
+
+  /// Told of a clip placed on body `body` (its world index) at `time` s.
+  using ClipObserver = std::function<void(int body, const ClipTerm& clip, double time)>;
+  void on_clip(ClipObserver observer) { clip_observer_ = std::move(observer); }
+  /// Told of knots of `body` coagulated at `time` s (body-local indices).
+  using CoagulationObserver =
+      std::function<void(int body, const std::vector<int>& nodes, double time)>;
+  void on_coagulation(CoagulationObserver observer) { coagulation_observer_ = std::move(observer); }
+  /// Told of a scissor cut of `body` after the world took its new topology.
+  using CutObserver =
+      std::function<void(int body, const cutting::TopologyChange& change, double time)>;
+  void on_cut(CutObserver observer) { cut_observer_ = std::move(observer); }
+
+  /// The knots between the jaws at `state`: body-local nodes of one body (empty when none).
+  std::vector<NodeReference> tissue_between_jaws(const World& world, const InstrumentState& state,
+                                                 double width) const;
+
+ private:
+  void close_jaws(const InstrumentState& state, World& world, double time,
+                  LaparoscopySummary& summary, std::vector<SessionEvent>& events);
+  void place_clip(const InstrumentState& state, World& world, double time,
+                  LaparoscopySummary& summary, std::vector<SessionEvent>& events);
+  void cut(const InstrumentState& state, World& world, double time, LaparoscopySummary& summary,
+           std::vector<SessionEvent>& events);
+  void heat(const InstrumentState& state, World& world, double time, double dt,
+            LaparoscopySummary& summary, std::vector<SessionEvent>& events);
+  /// Stiffens and shortens the springs whose both knots are coagulated (after any change of
+  /// the set or of the body's topology).
+  void stiffen_coagulated(World& world, int body);
+  void refresh_clips(const World& world, LaparoscopySummary& summary) const;
+
+  LaparoscopicToolOptions options_;
+  std::vector<int> bodies_;  ///< world bodies the tools act on
+  GraspTerm* grasp_ = nullptr;
+  std::vector<ClipTerm*> clips_;
+  std::vector<int> clip_bodies_;
+  std::vector<std::vector<double>> dose_;  ///< per body and node, s of current
+  std::vector<std::vector<std::uint8_t>> coagulated_;
+  /// Per body, per spring of its KisMo term: 1 once stiffened (reset when a cut rebuilds it).
+  std::vector<std::vector<std::uint8_t>> stiffened_;
+  InstrumentState previous_;
+  bool first_ = true;
+  ClipObserver clip_observer_;
+  CoagulationObserver coagulation_observer_;
+  CutObserver cut_observer_;
+};
+
+/// Where a tool with jaws touches tissue: the hinge, `jaw_length` m behind the tip along the
+/// shaft (the tip itself for LaparoscopicTool::None).
+core::Vec3 hinge(const InstrumentState& state, const LaparoscopicToolOptions& options);
+
+/// The jaw frame at `state`: columns across the jaws (axis × up), up (the closing direction)
+/// and the shaft axis.
+core::Mat3 jaw_frame(const InstrumentState& state);
+
+/// Unit principal direction of the rest knots of `body` within `radius` m of `point` (the
+/// local axis of a tube), or zero when fewer than two lie there.
+core::Vec3 local_axis(const World& world, int body, const core::Vec3& point, double radius);
+
+}  // namespace viscera::sim

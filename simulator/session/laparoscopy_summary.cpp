@@ -1,0 +1,53 @@
+#include "simulator/session/laparoscopy_summary.h"
+
+#include "core/json_eigen.h"
+
+namespace viscera::sim {
+
+nlohmann::json laparoscopy_json(const LaparoscopySummary& s, double blood_loss) {
+  nlohmann::json clips = nlohmann::json::array();
+  int secure = 0;
+  for (const ClipPlacement& c : s.clips) {
+    secure += c.secure() ? 1 : 0;
+    clips.push_back({{"time", c.time},
+                     {"body", c.body},
+                     {"position", c.position},
+                     {"knots", c.nodes},
+                     {"across_degrees", c.across_degrees},
+                     {"closes_lumen", c.closes_lumen},
+                     {"secure", c.secure()},
+                     {"gap_placed", c.gap_placed},
+                     {"gap", c.gap}});
+  }
+  nlohmann::json cuts = nlohmann::json::array();
+  for (const ScissorCut& c : s.cuts) {
+    cuts.push_back({{"time", c.time},
+                    {"body", c.body},
+                    {"position", c.position},
+                    {"tets_traversed", c.tets_traversed},
+                    {"divided", c.separated()},
+                    {"between_clips", c.between_clips},
+                    {"seconds", c.seconds}});
+  }
+  nlohmann::json coagulated = nlohmann::json::array();
+  double length = 0.0;
+  for (const CoagulatedTissue& c : s.coagulated) {
+    length += c.length;
+    coagulated.push_back({{"body", c.body}, {"knots", c.nodes}, {"length", c.length}});
+  }
+  return {{"tool_switches", s.tool_switches},
+          {"grasps", s.grasps},
+          {"knots_torn_out", s.knots_torn_out},
+          {"max_grasp_force", s.max_grasp_force},
+          {"clips_placed", s.clips.size()},
+          {"clips_secure", secure},
+          {"clips", clips},
+          {"cuts", cuts},
+          {"coagulation_time", s.coagulation_time},
+          {"coagulated_length", length},
+          {"coagulated", coagulated},
+          {"blood_loss", blood_loss},
+          {"path_per_tool", s.path_per_tool}};
+}
+
+}  // namespace viscera::sim

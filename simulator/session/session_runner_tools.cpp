@@ -1,0 +1,125 @@
+// The laparoscopic tools of a session (issue 19 §3): a SessionRunner part kept apart from the
+// step loop in session_runner.cpp.
+#include <algorithm>
+
+#include "simulator/dynamics/pulse_waves.h"
+#include "simulator/session/session_runner.h"
+
+namespace viscera::sim {
+
+namespace {
+/// A clip or coagulated spot closes a vessel whose wall lies within this of it, m (half a jaw's
+/// width beyond the wall: the jaws close on what they touch).
+constexpr double kVesselReach = 1.5e-3;
+/// Bipolar forceps seal bleeding within this of the tissue between their jaws, m.
+constexpr double kBipolarReach = 3e-3;
+}  // namespace
+
+core::Vec3 SessionRunner::instrument_force() const {
+  core::Vec3 force = tissue_ ? tissue_->force() : core::Vec3::Zero();
+  if (tools_) force += tools_->force(world_);
+  return force;
+}
+
+void SessionRunner::move_tissue() {
+  if (!tools_) {
+    tissue_->move(state_, world_.time_step());
+    return;
+  }
+  InstrumentState touching = state_;
+  touching.tip = hinge(state_, tools_->options());
+  tissue_->move(touching, world_.time_step());
+}
+
+void SessionRunner::start_tools(const core::Scenario& scenario) {
+  tools_ = std::make_unique<LaparoscopicTools>(world_);
+  report_.laparoscopy.emplace();
+  if (!bleeding_) start_bleeding_sources(scenario);
+  tools_->on_cut([this](int body, const cutting::TopologyChange& change, double time) {
+    const std::size_t before = bleeding_->sources().size();
+    start_bleeding(body, change, time);
+    // Coagulated tissue has no open capillaries: ooze from a cut through it is sealed at once
+    // (bipolar coagulation before the cut is what keeps a sterilisation dry).
+    const auto& coagulated = tools_->coagulated()[static_cast<std::size_t>(body)];
+    const auto positions = world_.state().range(world_.state().positions, body);
+    for (std::size_t i = before; i < bleeding_->sources().size(); ++i) {
+      const fluid::BleedingSource& source = bleeding_->sources()[i];
+      const bool dry = std::all_of(source.nodes.begin(), source.nodes.end(), [&](int n) {
+        return coagulated[static_cast<std::size_t>(n)] != 0;
+      });
+      if (!source.capillary || !dry) continue;
+      const core::Vec3 site = fluid::site_position(source, positions);
+      std::vector<core::Vec3> sites;
+      for (const fluid::BleedingSource& s : bleeding_->sources())
+        sites.push_back(
+            fluid::site_position(s, world_.state().range(world_.state().positions, s.body)));
+      bleeding_->coagulate(site, 1e-9, sites, time);
+    }
+  });
+  tools_->on_clip([this](int body, const ClipTerm& clip, double time) {
+    core::Vec3 rest = core::Vec3::Zero();
+    for (const NodeReference& r : clip.nodes())
+      rest += r.rest / static_cast<double>(clip.nodes().size());
+    stop_pulse_near(body, rest, kVesselReach, time, "a clip");
+    // A clip between the root and a cut stops that cut's arterial bleeding (seed 001 §5.1.2).
+    if (!bleeding_) return;
+    int stopped = 0;
+    for (const core::VesselTree& tree : hosted_trees_[static_cast<std::size_t>(body)]) {
+      for (std::size_t s = 0; s < tree.segments.size(); ++s) {
+        const auto& seg = tree.segments[s];
+        const core::Vec3 axis = seg.distal - seg.proximal;
+        const double t = std::clamp(
+            (rest - seg.proximal).dot(axis) / std::max(axis.squaredNorm(), 1e-18), 0.0, 1.0);
+        if ((seg.proximal + t * axis - rest).norm() - seg.radius <= kVesselReach)
+          stopped += bleeding_->clip(tree.id, static_cast<int>(s), time);
+      }
+    }
+    if (stopped > 0)
+      report_.events.push_back(
+          {time, "bleeding-clipped", std::to_string(stopped) + " bleeding source(s) clipped"});
+  });
+  tools_->on_coagulation([this](int body, const std::vector<int>& nodes, double time) {
+    const auto positions = world_.state().range(world_.state().positions, body);
+    const auto rest = world_.state().range(world_.state().rest_positions, body);
+    core::Vec3 at = core::Vec3::Zero(), at_rest = core::Vec3::Zero();
+    for (const int n : nodes) {
+      at += positions[static_cast<std::size_t>(n)] / static_cast<double>(nodes.size());
+      at_rest += rest[static_cast<std::size_t>(n)] / static_cast<double>(nodes.size());
+    }
+    seal_bleeding_near(at, kBipolarReach, time);
+    stop_pulse_near(body, at_rest, kVesselReach, time, "coagulated tissue");
+  });
+}
+
+void SessionRunner::follow_tools(double time) {
+  tools_->follow(state_, world_, time, world_.time_step(), *report_.laparoscopy, report_.events);
+}
+
+void SessionRunner::seal_bleeding_near(const core::Vec3& point, double reach, double time) {
+  if (!bleeding_ || bleeding_->sources().empty()) return;
+  std::vector<core::Vec3> sites;
+  sites.reserve(bleeding_->sources().size());
+  for (const fluid::BleedingSource& source : bleeding_->sources())
+    sites.push_back(
+        fluid::site_position(source, world_.state().range(world_.state().positions, source.body)));
+  const int sealed = bleeding_->coagulate(point, reach, sites, time);
+  if (sealed > 0) {
+    report_.events.push_back(
+        {time, "bleeding-coagulated", std::to_string(sealed) + " bleeding source(s) sealed"});
+    stop_pulse_at_sealed_vessels(time);
+  }
+}
+
+void SessionRunner::stop_pulse_near(int body, const core::Vec3& rest_point, double reach,
+                                    double time, const std::string& what) {
+  for (const auto& term : world_.terms()) {
+    auto* pulse = dynamic_cast<PulseWaves*>(term.get());
+    if (pulse == nullptr || pulse->model().body != body) continue;
+    if (pulse->occlude_nearest(rest_point, reach))
+      report_.events.push_back(
+          {time, "pulse-stopped",
+           "the pulse of vessel tree \"" + pulse->vessel_tree() + "\" stops at " + what});
+  }
+}
+
+}  // namespace viscera::sim

@@ -33,6 +33,13 @@ void capture_snapshot(const SessionRunner& runner, SessionSnapshot& out) {
   out.blood.clear();
   out.blood_stage.clear();
   out.haze_density = 0.0;
+  out.smoke.clear();
+  out.lens_fog = 0.0;
+  out.tools = runner.tools() != nullptr;
+  if (const LaparoscopicTools* tools = runner.tools()) {
+    out.smoke = tools->smoke().billboards();
+    out.lens_fog = tools->smoke().lens_fog();
+  }
   if (const fluid::CavityFlow* flow = runner.cavity_flow()) {
     const fluid::BloodParticles& particles = flow->particles();
     out.blood.assign(particles.positions().begin(), particles.positions().end());

@@ -9,6 +9,7 @@
 
 #include "core/math_types.h"
 #include "simulator/session/instrument_state.h"
+#include "simulator/session/surgical_smoke.h"
 
 namespace viscera::sim {
 
@@ -39,6 +40,10 @@ struct SessionSnapshot {
   std::vector<core::Vec3> blood;
   std::vector<float> blood_stage;
   double haze_density = 0.0;
+  /// Smoke of coagulation (issue 19 §4): camera-facing puffs, and the steam on the lens (0…1).
+  std::vector<SmokeBillboard> smoke;
+  double lens_fog = 0.0;
+  bool tools = false;  ///< the instrument carries laparoscopic tools
 };
 
 /// Fills `out` from `runner` at its current step, reusing out's storage (no allocation once

@@ -40,7 +40,49 @@ std::vector<T> carry_by_rest_position(const std::vector<T>& values,
   return out;
 }
 
+/// Sites of knots at rest (m): knots within 5 mm of one another, transitively.
+std::vector<int> coagulation_sites(const std::vector<core::Vec3>& rest, int& sites) {
+  std::vector<int> site(rest.size(), -1);
+  sites = 0;
+  for (std::size_t i = 0; i < site.size(); ++i) {
+    if (site[i] >= 0) continue;
+    site[i] = sites;
+    std::vector<std::size_t> stack{i};
+    while (!stack.empty()) {
+      const std::size_t k = stack.back();
+      stack.pop_back();
+      for (std::size_t j = 0; j < site.size(); ++j)
+        if (site[j] < 0 && (rest[j] - rest[k]).norm() <= 0.005) site[j] = sites, stack.push_back(j);
+    }
+    ++sites;
+  }
+  return site;
+}
+
 }  // namespace
+
+double coagulated_length(const World& world, int body, const std::vector<core::Vec3>& rest,
+                         double jaw_width) {
+  int sites = 0;
+  const std::vector<int> site = coagulation_sites(rest, sites);
+  double length = 0.0;
+  for (int s = 0; s < sites; ++s) {
+    core::Vec3 centre = core::Vec3::Zero();
+    int count = 0;
+    for (std::size_t i = 0; i < site.size(); ++i)
+      if (site[i] == s) centre += rest[i], ++count;
+    centre /= count;
+    const core::Vec3 axis = local_axis(world, body, centre, 0.01);
+    double lo = 0.0, hi = 0.0;
+    for (std::size_t i = 0; i < site.size(); ++i) {
+      if (site[i] != s) continue;
+      const double along = (rest[i] - centre).dot(axis);
+      lo = std::min(lo, along), hi = std::max(hi, along);
+    }
+    length += hi - lo + jaw_width;
+  }
+  return length;
+}
 
 core::Vec3 hinge(const InstrumentState& state, const LaparoscopicToolOptions& options) {
   if (state.tool == LaparoscopicTool::None) return state.tip;
@@ -170,8 +212,15 @@ void LaparoscopicTools::follow(const InstrumentState& state, World& world, doubl
           {time, "grasp-torn", std::to_string(torn) + " knot(s) tore out of the grasper's jaws"});
     }
   }
+  coagulating_at_.reset();
   if (state.tool == LaparoscopicTool::Bipolar && state.jaws_closed && state.coagulation)
     heat(state, world, time, dt, summary, events);
+  const core::Vec3 up = world.gravity().norm() > 0.0 ? core::Vec3(-world.gravity().normalized())
+                                                     : core::Vec3(core::Vec3::UnitZ());
+  smoke_.step(time, dt, coagulating_at_, up, state.tip);
+  summary.smoke_time = smoke_.smoke_time();
+  summary.peak_lens_fog = smoke_.peak_lens_fog();
+  summary.smoke_puffs = smoke_.puffs_emitted();
   refresh_clips(world, summary);
   previous_ = state;
 }
@@ -325,6 +374,10 @@ void LaparoscopicTools::heat(const InstrumentState& state, World& world, double 
   if (between.empty()) return;
   summary.coagulation_time += dt;
   const int body = between[0].body;
+  core::Vec3 heated = core::Vec3::Zero();
+  for (const NodeReference& r : between)
+    heated += world.state().positions[static_cast<std::size_t>(r.global(world.state()))];
+  coagulating_at_ = heated / static_cast<double>(between.size());
   const auto b = static_cast<std::size_t>(body);
   std::vector<int> fresh;
   for (const NodeReference& r : between) {
@@ -350,38 +403,7 @@ void LaparoscopicTools::heat(const InstrumentState& state, World& world, double 
   for (const int n : fresh)
     it->rest_positions.push_back(rest[static_cast<std::size_t>(n)]);
   it->nodes = static_cast<int>(it->rest_positions.size());
-  it->length = 0.0;
-  std::vector<int> site(it->rest_positions.size(), -1);
-  int sites = 0;
-  for (std::size_t i = 0; i < site.size(); ++i) {
-    if (site[i] >= 0) continue;
-    site[i] = sites;
-    std::vector<std::size_t> stack{i};
-    while (!stack.empty()) {
-      const std::size_t k = stack.back();
-      stack.pop_back();
-      for (std::size_t j = 0; j < site.size(); ++j) {
-        if (site[j] < 0 && (it->rest_positions[j] - it->rest_positions[k]).norm() <= 0.005)
-          site[j] = sites, stack.push_back(j);
-      }
-    }
-    ++sites;
-  }
-  for (int s = 0; s < sites; ++s) {
-    core::Vec3 centre = core::Vec3::Zero();
-    int count = 0;
-    for (std::size_t i = 0; i < site.size(); ++i)
-      if (site[i] == s) centre += it->rest_positions[i], ++count;
-    centre /= count;
-    const core::Vec3 axis = local_axis(world, body, centre, 0.01);
-    double lo = 0.0, hi = 0.0;
-    for (std::size_t i = 0; i < site.size(); ++i) {
-      if (site[i] != s) continue;
-      const double along = (it->rest_positions[i] - centre).dot(axis);
-      lo = std::min(lo, along), hi = std::max(hi, along);
-    }
-    it->length += hi - lo + options_.jaw_width;
-  }
+  it->length = coagulated_length(world, body, it->rest_positions, options_.jaw_width);
   events.push_back(
       {time, "coagulated", std::to_string(fresh.size()) + " knot(s) of " + name + " coagulated"});
   if (coagulation_observer_) coagulation_observer_(body, fresh, time);

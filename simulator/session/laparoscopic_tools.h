@@ -19,6 +19,8 @@
 ///   sweep (hinge `jaw_length` behind the tip, blade tips `scissor_spread` either side of it)
 ///   (cutting::scissor_cut_surface, then the hybrid cut of seed 000 §5.1 and
 ///   World::topology_changed).
+/// - Every tool: coagulation raises smoke from the tissue between the jaws and steams the lens
+///   at the instrument's tip (SurgicalSmoke).
 /// - Bipolar forceps: with the jaws closed and the coagulation pedal down, the knots between
 ///   the jaws heat; a knot that has had `coagulation_dose` s of current is coagulated: the
 ///   springs between coagulated knots stiffen by `coagulated_stiffening` and shorten by
@@ -41,6 +43,7 @@
 #include "simulator/session/instrument_state.h"
 #include "simulator/session/laparoscopy_summary.h"
 #include "simulator/session/session_report.h"
+#include "simulator/session/surgical_smoke.h"
 #include "simulator/world/world.h"
 
 namespace viscera::sim {
@@ -87,6 +90,8 @@ class LaparoscopicTools {
   /// Per world body and node: 1 for a coagulated knot.
   const std::vector<std::vector<std::uint8_t>>& coagulated() const { return coagulated_; }
   const LaparoscopicToolOptions& options() const { return options_; }
+  /// The smoke of coagulation and the fog on the lens (at the instrument's tip).
+  const SurgicalSmoke& smoke() const { return smoke_; }
 
   /// Told of a clip placed on body `body` (its world index) at `time` s.
   using ClipObserver = std::function<void(int body, const ClipTerm& clip, double time)>;
@@ -129,6 +134,8 @@ class LaparoscopicTools {
   std::vector<std::vector<std::uint8_t>> stiffened_;
   InstrumentState previous_;
   bool first_ = true;
+  SurgicalSmoke smoke_;
+  std::optional<core::Vec3> coagulating_at_;  ///< m, where current flowed this step
   ClipObserver clip_observer_;
   CoagulationObserver coagulation_observer_;
   CutObserver cut_observer_;
@@ -141,6 +148,11 @@ core::Vec3 hinge(const InstrumentState& state, const LaparoscopicToolOptions& op
 /// The jaw frame at `state`: columns across the jaws (axis × up), up (the closing direction)
 /// and the shaft axis.
 core::Mat3 jaw_frame(const InstrumentState& state);
+
+/// Coagulated length of `body` from its coagulated knots at rest (m): per site (knots within
+/// 5 mm of one another) their extent along the body's local axis plus `jaw_width`, summed.
+double coagulated_length(const World& world, int body, const std::vector<core::Vec3>& rest,
+                         double jaw_width);
 
 /// Unit principal direction of the rest knots of `body` within `radius` m of `point` (the
 /// local axis of a tube), or zero when fewer than two lie there.

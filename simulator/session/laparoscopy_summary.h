@@ -59,6 +59,9 @@ struct LaparoscopySummary {
   int knots_torn_out = 0;         ///< held knots that tore out of the jaws
   double max_grasp_force = 0.0;   ///< N, the tissue's largest pull on the jaws
   double coagulation_time = 0.0;  ///< s with current through tissue between bipolar jaws
+  double smoke_time = 0.0;        ///< s with the field visibly smoky (SurgicalSmoke)
+  double peak_lens_fog = 0.0;     ///< 0…1, the most the lens steamed up
+  int smoke_puffs = 0;
   std::vector<ClipPlacement> clips;
   std::vector<ScissorCut> cuts;
   std::vector<CoagulatedTissue> coagulated;

@@ -42,6 +42,14 @@ uniform float texelsPerPixel; // scene texels per output pixel (the render scale
 uniform int fieldStop;
 uniform float hazeDensity;   // 1/m
 uniform vec3 hazeColour;
+uniform float lensFog;       // 0 (clear) ... 1 (steamed up)
+float fogHash(vec2 c) { return fract(sin(dot(c, vec2(127.1, 311.7))) * 43758.5453); }
+float fogNoise(vec2 x) {
+  vec2 i = floor(x), f = fract(x);
+  vec2 s = f * f * (3.0 - 2.0 * f);
+  return mix(mix(fogHash(i), fogHash(i + vec2(1.0, 0.0)), s.x),
+             mix(fogHash(i + vec2(0.0, 1.0)), fogHash(i + vec2(1.0, 1.0)), s.x), s.y);
+}
 float eyeDepth(vec2 uv) {
   float d = texture(depth, uv).r;
   return 2.0 * nearPlane * farPlane /
@@ -62,12 +70,17 @@ const char* kBody = R"(
   }
   float z = eyeDepth(uv);
   float radius = min(maxBlur, blurPerDioptre * abs(1.0 / z - focusDioptres));
+  // Condensation on the lens: blotches (two octaves of value noise), denser towards the rim.
+  float blotch = 0.6 * fogNoise(p * 5.0) + 0.4 * fogNoise(p * 13.0 + 7.0);
+  float steam = clamp(lensFog * (0.55 + 0.45 * blotch + 0.3 * r2), 0.0, 1.0);
+  radius = max(radius, steam * maxBlur);
   // The circle of confusion as one trilinear fetch from the scene's mipmap chain: level L
   // averages 2^L texels, so L = log2(diameter in scene texels) blurs over about the disc.
   float lod = log2(max(1.0, 2.0 * radius * texelsPerPixel));
   vec3 rgb = textureLod(colour, uv, lod).rgb;
   // Blood in the fluid between the lens and the surface (Beer–Lambert over the eye depth).
   rgb = mix(hazeColour, rgb, exp(-hazeDensity * z));
+  rgb = mix(rgb, vec3(0.78, 0.80, 0.80), 0.6 * steam);
   // The rod lens loses light towards the rim of the field (cos^4 law, gently).
   float fall = 1.0 - 0.35 * r2 * r2;
   gl_FragData[0] = vec4(rgb * fall, 1.0);
@@ -197,6 +210,7 @@ void EndoscopeLensPass::Render(const vtkRenderState* state) {
                        static_cast<float>(scene_width) / static_cast<float>(width));
   program->SetUniformi("fieldStop", field_stop ? 1 : 0);
   program->SetUniformf("hazeDensity", static_cast<float>(std::max(0.0, haze_density)));
+  program->SetUniformf("lensFog", static_cast<float>(std::clamp(lens_fog, 0.0, 1.0)));
   const float haze[3] = {static_cast<float>(haze_colour[0]), static_cast<float>(haze_colour[1]),
                          static_cast<float>(haze_colour[2])};
   program->SetUniform3f("hazeColour", haze);

@@ -3,7 +3,8 @@
 /// barrel distortion of the wide-angle rod lens, depth of field around the focus distance
 /// (seed 002 §4: the circle of confusion of an out-of-focus point, done as a post pass instead
 /// of the paper's jittered eye positions), the round field stop of the eyepiece, and the haze of
-/// blood in the distension fluid (seed 000 §6.2: "the view is clouded").
+/// blood in the distension fluid (seed 000 §6.2: "the view is clouded") and the steaming of the
+/// lens (seed 001 §4.2).
 ///
 /// The delegate pass renders colour and depth into textures; one full-screen fragment shader
 /// then, for every output pixel at normalised radius r (1 = the edge of the round field),
@@ -48,6 +49,11 @@ class EndoscopeLensPass : public vtkDepthImageProcessingPass {
   /// with the blood's mean extinction along the line of sight, 1/m (0: clear fluid).
   double haze_density = 0.0;
   double haze_colour[3] = {0.42, 0.04, 0.03};
+  /// Steam condensed on the lens (seed 001 §4.2: a texture in front of the camera made visible
+  /// by decreasing its transparency gradually), 0 (clear) … 1: the image is blurred by up to
+  /// max_blur and veiled towards a pale grey by a blotchy condensation pattern (value noise over
+  /// the field, fixed to the lens), more at the rim where the lens is colder.
+  double lens_fog = 0.0;
 
   void Render(const vtkRenderState* state) override;
   void ReleaseGraphicsResources(vtkWindow* window) override;

@@ -16,6 +16,7 @@
 #include "simulator/view/endoscope_lens_pass.h"
 #include "simulator/view/image_files.h"
 #include "simulator/view/scene_surfaces.h"
+#include "simulator/view/smoke_billboards.h"
 
 namespace viscera::view {
 
@@ -45,6 +46,7 @@ EndoscopicView::EndoscopicView(const core::Scenario& scenario, const std::filesy
   scene_->TwoSidedLightingOn();
   surfaces_->add_to(scene_);
   blood_ = std::make_unique<BloodBillboards>(scene_);
+  smoke_ = std::make_unique<SmokeBillboards>(scene_);
 
   // The head light: a spot at the tip along the optics, dimming with distance.
   light_ = vtkSmartPointer<vtkLight>::New();
@@ -110,8 +112,19 @@ void EndoscopicView::update(const sim::SessionRunner& runner) {
 void EndoscopicView::update(const sim::SessionSnapshot& snapshot) {
   surfaces_->update(snapshot.bodies);
   blood_->update(snapshot.blood, snapshot.blood_stage);
-  if (lens_) lens_->haze_density = snapshot.haze_density;
+  if (lens_) {
+    lens_->haze_density = snapshot.haze_density;
+    lens_->lens_fog = snapshot.lens_fog;
+  }
   set_instrument(snapshot.instrument, snapshot.optics_angle);
+  {
+    // The smoke faces the camera just placed.
+    vtkCamera* camera = scene_->GetActiveCamera();
+    core::Vec3 up, forward;
+    camera->GetViewUp(up.data());
+    camera->GetDirectionOfProjection(forward.data());
+    smoke_->update(snapshot.smoke, forward.cross(up).normalized(), up.normalized());
+  }
   OverlayState state;
   state.elapsed = snapshot.time;
   state.time_limit = snapshot.time_limit;
@@ -124,6 +137,11 @@ void EndoscopicView::update(const sim::SessionSnapshot& snapshot) {
   state.surface_seen = snapshot.surface_seen;
   state.step = snapshot.step;
   state.ended = snapshot.ended;
+  if (snapshot.tools) {
+    state.tool = std::string(sim::tool_name(snapshot.instrument.tool));
+    state.jaws_closed = snapshot.instrument.jaws_closed;
+    state.lens_fog = snapshot.lens_fog;
+  }
   overlay_->update(state);
 }
 
@@ -134,6 +152,10 @@ void EndoscopicView::set_render_scale(double scale) {
 
 double EndoscopicView::haze_density() const {
   return lens_ ? lens_->haze_density : 0.0;
+}
+
+double EndoscopicView::lens_fog() const {
+  return lens_ ? lens_->lens_fog : 0.0;
 }
 
 double EndoscopicView::render_scale() const {

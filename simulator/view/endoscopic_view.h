@@ -25,6 +25,7 @@ class vtkLight;
 namespace viscera::view {
 
 class BloodBillboards;
+class SmokeBillboards;
 class EndoscopeLensPass;
 class SceneSurfaces;
 
@@ -83,6 +84,9 @@ class EndoscopicView {
   SessionOverlay& overlay() { return *overlay_; }
   const SceneSurfaces& surfaces() const { return *surfaces_; }
   const BloodBillboards& blood() const { return *blood_; }
+  const SmokeBillboards& smoke() const { return *smoke_; }
+  /// The steam on the lens in the lens pass, 0…1 (0 without lens effects).
+  double lens_fog() const;
   /// The blood haze's extinction in the lens pass, 1/m (0 without lens effects).
   double haze_density() const;
 
@@ -96,6 +100,7 @@ class EndoscopicView {
   std::unique_ptr<SceneSurfaces> surfaces_;
   std::unique_ptr<SessionOverlay> overlay_;
   std::unique_ptr<BloodBillboards> blood_;
+  std::unique_ptr<SmokeBillboards> smoke_;
   sim::SessionSnapshot captured_;  ///< reused by update(runner)
 };
 

@@ -130,20 +130,26 @@ void SessionOverlay::update(const OverlayState& state) {
   points->Modified();
   bars_->Modified();
 
-  char buffer[512];
+  std::string tool;
+  if (!state.tool.empty()) {
+    tool = "\nTool    " + state.tool + ", jaws " + (state.jaws_closed ? "closed" : "open");
+    if (state.lens_fog > 0.05)
+      tool += "   lens steamed " + std::to_string(std::lround(100.0 * state.lens_fog)) + " %";
+  }
+  char buffer[640];
   std::snprintf(buffer, sizeof buffer,
                 "Elapsed %6.1f s / %.1f s\n"
                 "Force   %5.2f N  (%+.2f %+.2f %+.2f)\n"
                 "Tip     %+6.1f %+6.1f %+6.1f mm\n"
                 "Optics  %.0f deg   inflow %.0f%%  outflow %.0f%%\n"
                 "Seen    %4.1f %% of the cavity\n"
-                "Step    %s%s%s",
+                "Step    %s%s%s%s",
                 state.elapsed, state.time_limit, magnitude, state.force.x(), state.force.y(),
                 state.force.z(), 1000.0 * state.tip.x(), 1000.0 * state.tip.y(),
                 1000.0 * state.tip.z(), state.optics_angle, 100.0 * state.inflow,
                 100.0 * state.outflow, 100.0 * state.surface_seen,
                 state.step.empty() ? "-" : state.step.c_str(),
-                state.ended.empty() ? "" : "\nEnded   ", state.ended.c_str());
+                state.ended.empty() ? "" : "\nEnded   ", state.ended.c_str(), tool.c_str());
   info_->SetInput(buffer);
 
   const std::string alert = force_alert(magnitude, state.force_warning);

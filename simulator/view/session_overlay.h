@@ -29,6 +29,9 @@ struct OverlayState {
   double surface_seen = 0.0;              ///< fraction 0…1
   double inflow = 0.0, outflow = 0.0;     ///< valve openings 0…1
   std::string ended;                      ///< end reason once the session is over, or ""
+  std::string tool;  ///< laparoscopic tool in the working port, "" without tools
+  bool jaws_closed = false;
+  double lens_fog = 0.0;  ///< 0…1, the steam on the lens
 };
 
 /// How close the force is to the warning level: "" below 80 %, "approaching" up to the level,

@@ -15,6 +15,7 @@
 #include "simulator/session/manual_control.h"
 #include "simulator/view/blood_billboards.h"
 #include "simulator/view/scene_surfaces.h"
+#include "simulator/view/smoke_billboards.h"
 #include "tests/support/command_runner.h"
 #include "tests/support/test_paths.h"
 #include "tests/view/view_fixtures.h"
@@ -195,6 +196,46 @@ TEST(EndoscopicView, blood_in_the_flow_shows_as_billboards_and_clouds_the_lens) 
   EXPECT_LT(haze.mean_luminance, before.mean_luminance);
   // Clear fluid again: the picture comes back exactly.
   snapshot.haze_density = 0.0;
+  view.update(snapshot);
+  EXPECT_LT(testing::mean_abs_difference(clear, view.capture(), 0.9), 0.5);
+}
+
+TEST(EndoscopicView, coagulation_smoke_veils_the_picture_and_a_steamed_lens_blurs_it) {
+  // Issue 19 §4: a column of smoke puffs rising in front of the optics greys the picture and
+  // flattens its contrast; a steamed lens blurs and veils it; both go when they are gone.
+  const auto& patient = testing::hysteroscopy_patient();
+  view::EndoscopicView view(patient.scenario, patient.package, offscreen(true));
+  const double angle = patient.scenario.session.instrument.optics_angle;
+  sim::SessionSnapshot snapshot;
+  snapshot.instrument = sim::starting_pose(patient.scenario, angle);
+  snapshot.optics_angle = angle;
+  view.update(snapshot);
+  const auto clear = view.capture();
+  const FrameStatistics before = frame_statistics(clear, 0.9);
+
+  sim::SurgicalSmoke smoke;
+  const core::Vec3 ahead =
+      snapshot.instrument.tip + 0.012 * sim::view_direction(snapshot.instrument, angle);
+  const core::Vec3 up = snapshot.instrument.up;
+  for (int k = 1; k <= 2000; ++k)  // 2 s of coagulation, 1 ms steps
+    smoke.step(0.001 * k, 0.001, ahead - 0.01 * up, up, snapshot.instrument.tip - 0.1 * up);
+  snapshot.smoke = smoke.billboards();
+  ASSERT_GT(snapshot.smoke.size(), 30u);
+  view.update(snapshot);
+  EXPECT_EQ(view.smoke().size(), snapshot.smoke.size());
+  const FrameStatistics smoky = frame_statistics(view.capture(), 0.9);
+  EXPECT_GT(testing::mean_abs_difference(clear, view.capture(), 0.9), 2.0);
+  // Towards grey: the red of the tissue loses its share.
+  EXPECT_LT(smoky.chromaticity[0], before.chromaticity[0] - 0.01);
+
+  snapshot.smoke.clear();
+  snapshot.lens_fog = 0.8;
+  view.update(snapshot);
+  EXPECT_DOUBLE_EQ(view.lens_fog(), 0.8);
+  const FrameStatistics fogged = frame_statistics(view.capture(), 0.9);
+  EXPECT_LT(fogged.luminance_stddev, before.luminance_stddev);
+  EXPECT_LT(fogged.chromaticity[0], before.chromaticity[0] - 0.01);
+  snapshot.lens_fog = 0.0;
   view.update(snapshot);
   EXPECT_LT(testing::mean_abs_difference(clear, view.capture(), 0.9), 0.5);
 }

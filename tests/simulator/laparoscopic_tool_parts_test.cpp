@@ -1,15 +1,14 @@
-// The laparoscopic tools (issue 19 §3): the grasper's and the clip's force terms, and the
-// tools at work on a fallopian tube of the laparoscopy-gyn template.
-#include "simulator/session/laparoscopic_tools.h"
-
+// The laparoscopic tools' parts (issue 19 §3, §4): the grasper's and the clip's force terms,
+// knots found again after a renumbering, and the smoke of coagulation with the lens steaming.
+// The tools at work on a fallopian tube: sterilisation_session_test.cpp.
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 #include "core/error.h"
 #include "simulator/dynamics/clip_term.h"
 #include "simulator/dynamics/grasp_term.h"
-#include "simulator/session/headless_session.h"
-#include "simulator/session/instrument_input.h"
-#include "templates/template_catalog.h"
+#include "simulator/session/surgical_smoke.h"
 #include "tests/simulator/term_derivative_checks.h"
 
 namespace viscera::sim {
@@ -109,6 +108,60 @@ TEST(NodeReference, a_reference_finds_its_node_again_after_the_body_is_renumbere
   ASSERT_EQ(refs.size(), 2u);
   EXPECT_EQ(refs[0].node, 3);
   EXPECT_EQ(refs[1].node, 1);
+}
+
+TEST(SurgicalSmoke, puffs_rise_grow_and_fade_and_the_same_steps_give_the_same_smoke) {
+  const core::Vec3 up = core::Vec3::UnitZ(), site = core::Vec3::Zero();
+  const core::Vec3 far_lens(0.5, 0.0, 0.0);
+  SurgicalSmoke smoke, again;
+  for (int k = 1; k <= 1000; ++k) {  // 1 s of coagulation
+    smoke.step(0.001 * k, 0.001, site, up, far_lens);
+    again.step(0.001 * k, 0.001, site, up, far_lens);
+  }
+  EXPECT_EQ(smoke.puffs_emitted(), 20);  // one every 50 ms
+  const auto puffs = smoke.billboards();
+  ASSERT_EQ(puffs.size(), 20u);
+  // Born at 1 ms and 951 ms: risen 1 cm/s for 0.999 s and for 49 ms (the sway is across the
+  // rise); the older has grown.
+  EXPECT_NEAR(puffs.front().centre.z(), 0.00999, 1e-12);
+  EXPECT_NEAR(puffs.back().centre.z(), 0.00049, 1e-12);
+  EXPECT_GT(puffs.front().radius, puffs.back().radius);
+  EXPECT_LT(std::hypot(puffs.back().centre.x(), puffs.back().centre.y()), 0.0002);
+  for (std::size_t i = 0; i < puffs.size(); ++i) {
+    EXPECT_EQ(puffs[i].centre, again.billboards()[i].centre);
+    EXPECT_EQ(puffs[i].opacity, again.billboards()[i].opacity);
+  }
+  EXPECT_GT(smoke.smoke_time(), 0.5);
+  EXPECT_EQ(smoke.lens_fog(), 0.0);  // the lens is half a metre away
+  // No more current: every puff has faded after its 6 s of life.
+  for (int k = 1001; k <= 8000; ++k)
+    smoke.step(0.001 * k, 0.001, std::nullopt, up, far_lens);
+  EXPECT_TRUE(smoke.billboards().empty());
+}
+
+TEST(SurgicalSmoke,
+     the_lens_steams_up_near_hot_tissue_and_clears_with_time_and_suction_clears_smoke) {
+  const core::Vec3 up = core::Vec3::UnitZ(), site = core::Vec3::Zero();
+  const core::Vec3 lens(0.0, -0.02, 0.0);  // 2 cm from the coagulation
+  SurgicalSmoke smoke;
+  for (int k = 1; k <= 4000; ++k)
+    smoke.step(0.001 * k, 0.001, site, up, lens);
+  const double steamed = smoke.lens_fog();
+  EXPECT_GT(steamed, 0.4);
+  for (int k = 4001; k <= 10000; ++k)  // 6 s without current: e⁻¹ of the fog left, at most
+    smoke.step(0.001 * k, 0.001, std::nullopt, up, lens);
+  EXPECT_LT(smoke.lens_fog(), steamed * std::exp(-1.0) + 1e-9);
+  EXPECT_NEAR(smoke.peak_lens_fog(), steamed, 1e-3);
+  // Suction at the column removes the puffs near its tip and no others.
+  SurgicalSmoke column;
+  for (int k = 1; k <= 2000; ++k)
+    column.step(0.001 * k, 0.001, site, up, lens);
+  const auto before = column.billboards().size();
+  const int removed = column.suck(core::Vec3(0.0, 0.0, 0.005), 0.004, 2.0);
+  EXPECT_GT(removed, 0);
+  EXPECT_EQ(column.billboards().size(), before - static_cast<std::size_t>(removed));
+  for (const auto& b : column.billboards())
+    EXPECT_GT((b.centre - core::Vec3(0.0, 0.0, 0.005)).norm(), 0.004);
 }
 
 }  // namespace

@@ -31,7 +31,8 @@ ParameterGroup parameter_group(const TemplateParameter& parameter) {
   const std::string& n = parameter.name;
   const auto has = [&n](const char* part) { return n.find(part) != std::string::npos; };
   if (n.starts_with("texture_")) return ParameterGroup::Texture;
-  if (n.starts_with("vessel_") || has("artery")) return ParameterGroup::Vessels;
+  if (n.starts_with("vessel_") || has("artery") || n == "heart_rate")
+    return ParameterGroup::Vessels;
   if (has("myoma") || has("polyp") || has("adhesion") || has("inclusion"))
     return ParameterGroup::Pathologies;
   if (has("stiffness") || has("damping") || n.starts_with("fixed_") || has("friction") ||

@@ -155,7 +155,7 @@ ScriptedTrajectory ScriptedTrajectory::from_json(const nlohmann::json& json,
         if (!tool)
           fail(pointer + "/tool",
                "tool must be one of \"none\", \"grasper\", \"clip-applier\", \"scissors\", "
-               "\"bipolar\"");
+               "\"bipolar\", \"suction\"");
         s.tool = *tool;
       }
       if (w.contains("close")) {

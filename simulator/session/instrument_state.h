@@ -13,10 +13,19 @@ namespace viscera::sim {
 
 /// The instrument in the working port of a laparoscopic session (seed 001 §4.1; issue 19 §3),
 /// at the same tip and shaft as the pose. `None` is the bare shaft of the optics: a probe.
-enum class LaparoscopicTool : std::uint8_t { None, Grasper, ClipApplier, Scissors, Bipolar };
+enum class LaparoscopicTool : std::uint8_t {
+  None,
+  Grasper,
+  ClipApplier,
+  Scissors,
+  Bipolar,
+  Suction  ///< a suction cannula: "closing" opens its suction valve
+};
+/// The last tool, for cycling through them.
+inline constexpr LaparoscopicTool kLastLaparoscopicTool = LaparoscopicTool::Suction;
 
-/// "none", "grasper", "clip-applier", "scissors", "bipolar": the names scripts, traces and the
-/// procedures' task parameters use.
+/// "none", "grasper", "clip-applier", "scissors", "bipolar", "suction": the names scripts, traces
+/// and the procedures' task parameters use.
 std::string_view tool_name(LaparoscopicTool tool);
 /// The tool of that name, or nullopt.
 std::optional<LaparoscopicTool> tool_from_name(std::string_view name);

@@ -218,6 +218,8 @@ void LaparoscopicTools::follow(const InstrumentState& state, World& world, doubl
   const core::Vec3 up = world.gravity().norm() > 0.0 ? core::Vec3(-world.gravity().normalized())
                                                      : core::Vec3(core::Vec3::UnitZ());
   smoke_.step(time, dt, coagulating_at_, up, state.tip);
+  if (state.tool == LaparoscopicTool::Suction && state.jaws_closed)
+    summary.smoke_puffs_suctioned += smoke_.suck(state.tip, options_.suction_reach, time);
   summary.smoke_time = smoke_.smoke_time();
   summary.peak_lens_fog = smoke_.peak_lens_fog();
   summary.smoke_puffs = smoke_.puffs_emitted();
@@ -247,6 +249,7 @@ void LaparoscopicTools::close_jaws(const InstrumentState& state, World& world, d
       cut(state, world, time, summary, events);
       return;
     case LaparoscopicTool::Bipolar:
+    case LaparoscopicTool::Suction:
     case LaparoscopicTool::None:
       return;
   }

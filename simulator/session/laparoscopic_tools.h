@@ -19,6 +19,8 @@
 ///   sweep (hinge `jaw_length` behind the tip, blade tips `scissor_spread` either side of it)
 ///   (cutting::scissor_cut_surface, then the hybrid cut of seed 000 §5.1 and
 ///   World::topology_changed).
+/// - Suction cannula: while its valve is open (the jaws "closed") it draws off the smoke within
+///   `suction_reach` m of its tip (seed 001 §4.3: suction "removes" smoke).
 /// - Every tool: coagulation raises smoke from the tissue between the jaws and steams the lens
 ///   at the instrument's tip (SurgicalSmoke).
 /// - Bipolar forceps: with the jaws closed and the coagulation pedal down, the knots between
@@ -65,6 +67,7 @@ struct LaparoscopicToolOptions {
   /// m between a closed clip's jaws: the two crushed walls of a tube or vessel.
   double clip_closed_gap = 0.001;
   double clip_closing_time = 0.3;      ///< s the applier's jaws take to close a clip
+  double suction_reach = 0.015;        ///< m around the suction cannula's tip
   double coagulation_dose = 1.0;       ///< s of bipolar current that coagulates a knot
   double coagulated_stiffening = 2.0;  ///< factor on the springs between coagulated knots
   double coagulated_shrinkage = 0.05;  ///< fraction their rest length shortens

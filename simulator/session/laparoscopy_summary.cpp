@@ -47,6 +47,7 @@ nlohmann::json laparoscopy_json(const LaparoscopySummary& s, double blood_loss) 
           {"smoke_time", s.smoke_time},
           {"peak_lens_fog", s.peak_lens_fog},
           {"smoke_puffs", s.smoke_puffs},
+          {"smoke_puffs_suctioned", s.smoke_puffs_suctioned},
           {"coagulated_length", length},
           {"coagulated", coagulated},
           {"blood_loss", blood_loss},

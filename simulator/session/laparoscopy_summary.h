@@ -62,6 +62,7 @@ struct LaparoscopySummary {
   double smoke_time = 0.0;        ///< s with the field visibly smoky (SurgicalSmoke)
   double peak_lens_fog = 0.0;     ///< 0…1, the most the lens steamed up
   int smoke_puffs = 0;
+  int smoke_puffs_suctioned = 0;  ///< puffs the suction cannula drew off
   std::vector<ClipPlacement> clips;
   std::vector<ScissorCut> cuts;
   std::vector<CoagulatedTissue> coagulated;

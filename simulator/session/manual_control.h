@@ -35,6 +35,7 @@ enum class ManualCommand {
   ToolClipApplier,   ///< a clip applier
   ToolScissors,      ///< scissors
   ToolBipolar,       ///< bipolar forceps
+  ToolSuction,       ///< a suction cannula
   NextTool,          ///< the next tool in the order above (after bipolar: none)
   PreviousTool,      ///< the previous one
   Abort              ///< the trainee ends the session

@@ -122,6 +122,7 @@ std::vector<TemplateParameter> LaparoscopyGynTemplate::parameters() const {
       {"vessel_stiffness", "Pa", "distance stiffness density of vessels", 5000, 200000, 40000,
        false},
       {"density", "kg/m^3", "tissue density", 900, 1200, 1050, false},
+      {"heart_rate", "1/min", "heart rate of the arteries' pulse", 40, 160, 72, false},
       {"texture_seed", "count", "seed of the peritoneum texture", 0, 1e9, 1, true},
       {"texture_size", "count", "width and height of the baked maps in pixels", 64, 2048, 256,
        true},
@@ -189,15 +190,19 @@ core::Scenario LaparoscopyGynTemplate::build(const ParameterValues& p, std::uint
     progress.step();
     const double tr = p.at("tube_radius");
     const core::Vec3 cornu = mirror({0.5 * W + tr + 0.003, 0.0, 0.85 * L}, side);
-    add_net(scenario, "tube-" + s, "Fallopian tube (" + s + ")", "organ",
-            pipe_with_vertices({cornu, cornu + mirror({0.03, 0.0, 0.01}, side),
-                                cornu + mirror({0.055, -0.012, -0.01}, side),
-                                cornu + mirror({0.06, -0.02, -0.035}, side)},
-                               {tr, tr, 1.2 * tr, 1.6 * tr}, 8, knots(204)),
-            0.4 * tr, density,
-            {cornu, cornu + mirror({0.03, 0.0, 0.01}, side),
-             cornu + mirror({0.06, -0.02, -0.035}, side)},
-            1.5 * tr);  // the isthmus stays free for 2 cm: room to grasp, clip twice and cut
+    add_net(
+        scenario, "tube-" + s, "Fallopian tube (" + s + ")", "organ",
+        pipe_with_vertices({cornu, cornu + mirror({0.03, 0.0, 0.01}, side),
+                            cornu + mirror({0.055, -0.012, -0.01}, side),
+                            cornu + mirror({0.06, -0.02, -0.035}, side)},
+                           {tr, tr, 1.2 * tr, 1.6 * tr}, 8, knots(204)),
+        0.4 * tr, density,
+        // Held at every pipe point (the mesosalpinx carries the tube along its length),
+        // but only 1.5 radii around each, so the isthmus stays free for 2 cm: room to
+        // grasp, coagulate, clip twice and cut.
+        {cornu, cornu + mirror({0.03, 0.0, 0.01}, side),
+         cornu + mirror({0.055, -0.012, -0.01}, side), cornu + mirror({0.06, -0.02, -0.035}, side)},
+        1.5 * tr);
     // The isthmus, where a tube is occluded: on the front (−y, where the laparoscope looks
     // from) of the middle of its first, narrow segment.
     scenario.landmarks.push_back(
@@ -223,6 +228,23 @@ core::Scenario LaparoscopyGynTemplate::build(const ParameterValues& p, std::uint
             pipe_with_vertices(points, std::vector<double>(points.size(), radius), 6,
                                knots(table_knots)),
             0.35 * radius, density, points, 2.5 * radius);
+    if (id.starts_with("artery")) {
+      // Seed 001 §5.1.1: the artery pulses, a wave from its first point along its axis.
+      core::VesselTree tree;
+      tree.id = id + "-tree";
+      tree.host_object = id;
+      tree.kind = "arterial";
+      for (std::size_t k = 0; k + 1 < points.size(); ++k)
+        tree.segments.push_back(
+            {static_cast<int>(k), static_cast<int>(k) - 1, points[k], points[k + 1], radius, 0.0});
+      scenario.vessel_trees.push_back(tree);
+      core::PulseSpec pulse;
+      pulse.vessel_tree = tree.id;
+      pulse.heart_rate = p.at("heart_rate");
+      pulse.pulse_velocity = 6.0;  // m/s, the pulse wave velocity of pelvic arteries
+      pulse.wall_force = 0.001;    // N per wall knot as the front passes: a visible throb
+      scenario.active_deformations.push_back({id + "-pulse", id, pulse});
+    }
     progress.step();
   };
   for (const bool artery : {true, false}) {
@@ -263,6 +285,15 @@ core::Scenario LaparoscopyGynTemplate::build(const ParameterValues& p, std::uint
       {core::Vec3(-0.04, 0.07, 0.04), core::Vec3(-0.01, 0.075, 0.08), core::Vec3(0.03, 0.07, 0.1)},
       0.02);
   progress.step();
+
+  // Seed 001 §5.2: the sigmoid's periodic motility, a slow wave along the colon.
+  core::MotilitySpec peristalsis;
+  peristalsis.amplitude_mean = 0.002;
+  peristalsis.wave_speed = 0.01;
+  peristalsis.wave_direction = core::Vec3(0.7, 0.05, 0.7).normalized();
+  peristalsis.frequency = 0.1;
+  peristalsis.frequency_disturbance = 0.02;
+  scenario.active_deformations.push_back({"intestine-motility", "intestine", peristalsis});
 
   scenario.fluid.enabled = false;
   scenario.session.contact_stiffness = 0.0;  // seed 001: organs are kept apart by their holds

@@ -7,7 +7,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <fstream>
 
+#include "core/json_schema/json_schema_validator.h"
 #include "core/json_text.h"
 #include "simulator/session/headless_session.h"
 #include "simulator/session/instrument_input.h"
@@ -156,8 +158,27 @@ TEST(Sterilisation, expert_and_novice_separate_on_every_metric) {
   EXPECT_GT(e.laparoscopy->smoke_time, n.laparoscopy->smoke_time);
   EXPECT_GT(n.laparoscopy->smoke_time, 0.0);
   EXPECT_GT(e.laparoscopy->peak_lens_fog, n.laparoscopy->peak_lens_fog);
+  // The expert draws the smoke column off with the suction cannula; the novice leaves it.
+  EXPECT_GT(e.laparoscopy->smoke_puffs_suctioned, 10);
+  EXPECT_EQ(n.laparoscopy->smoke_puffs_suctioned, 0);
   EXPECT_EQ(task(n, "cut-tube").status, "not-completed");
   EXPECT_EQ(task(n, "clip-distal").status, "not-completed");
+}
+
+TEST(Sterilisation, the_report_with_its_laparoscopy_block_validates_against_the_schema) {
+  std::ifstream in(testing::source_dir() / "docs" / "session-report.schema.json");
+  const core::JsonSchemaValidator schema(nlohmann::json::parse(in));
+  const nlohmann::json report = report_to_json(expert());
+  ASSERT_TRUE(report["laparoscopy"].is_object());
+  EXPECT_EQ(report["laparoscopy"]["clips_secure"], 2);
+  std::string problems;
+  for (const auto& v : schema.validate(report))
+    problems += v.pointer + ": " + v.message + "\n";
+  EXPECT_TRUE(problems.empty()) << problems;
+  // A clip without its angle is caught.
+  nlohmann::json broken = report;
+  broken["laparoscopy"]["clips"][0].erase("across_degrees");
+  EXPECT_FALSE(schema.validate(broken).empty());
 }
 
 TEST(Sterilisation, the_recorded_session_replays_bit_identically) {

@@ -1,6 +1,7 @@
 #include "simulator/fluid/bleeding_sources.h"
 
 #include <cmath>
+#include <numbers>
 #include <utility>
 
 namespace viscera::sim::fluid {
@@ -69,7 +70,12 @@ std::vector<VesselOpening> BleedingSources::openings(double time) {
       conductance *= decay;
     }
     if (source.stop != BleedingStop::Bleeding) conductance = 0.0;
-    openings.push_back({conductance, source.pressure});
+    double pressure = source.pressure;
+    if (source.pulse_period > 0.0)
+      pressure *= 1.0 + source.pulse_amplitude *
+                            std::cos(2.0 * std::numbers::pi * (time - source.pulse_delay) /
+                                     source.pulse_period);
+    openings.push_back({conductance, pressure});
   }
   return openings;
 }
@@ -110,6 +116,20 @@ int BleedingSources::clip(const std::string& vessel_tree, int segment, double ti
     }
   }
   return stopped;
+}
+
+void BleedingSources::set_pulse(std::size_t index, double period, double delay, double amplitude) {
+  BleedingSource& source = sources_.at(index);
+  source.pulse_period = period;
+  source.pulse_delay = delay;
+  source.pulse_amplitude = amplitude;
+}
+
+bool BleedingSources::clip_source(std::size_t index, double time) {
+  BleedingSource& source = sources_.at(index);
+  if (source.stop != BleedingStop::Bleeding) return false;
+  stop(source, BleedingStop::Clipped, time);
+  return true;
 }
 
 void BleedingSources::stop(BleedingSource& source, BleedingStop why, double time) {

@@ -43,6 +43,12 @@ struct BleedingSource {
   double opened_at = 0.0;                                   ///< s, session time of the cut
   double conductance = 0.0;                                 ///< m³ s⁻¹ Pa⁻¹ when opened
   double pressure = 0.0;                                    ///< Pa behind the opening
+  /// A pulsing artery (seed 001 §5.1.2: the cut spurts in time with the pulse): the pressure
+  /// behind the opening swings about its mean as P (1 + a cos(2π (t − delay) / period)), peaking
+  /// as each beat's wave reaches the opening `delay` s after the beat. period 0: steady.
+  double pulse_period = 0.0;     ///< s, 60 / heart rate
+  double pulse_delay = 0.0;      ///< s, the wave's travel from the root to the opening
+  double pulse_amplitude = 0.0;  ///< a, pulse pressure over twice the mean
   BleedingStop stop = BleedingStop::Bleeding;
   double stopped_at = -1.0;   ///< s, when `stop` was set
   double bled = 0.0;          ///< m³ of blood it let into the cavity so far
@@ -77,6 +83,10 @@ class BleedingSources {
   /// Stops every vessel source of `vessel_tree` whose root path runs through `segment` (a clip
   /// between the root and the cut). Returns how many.
   int clip(const std::string& vessel_tree, int segment, double time);
+  /// Stops source `index` (into sources()) as clipped, when it still bleeds. Returns whether.
+  bool clip_source(std::size_t index, double time);
+  /// Makes source `index` pulse (BleedingSource::pulse_period, s; delay, s; amplitude, 0…1).
+  void set_pulse(std::size_t index, double period, double delay, double amplitude);
 
   const std::vector<BleedingSource>& sources() const { return sources_; }
   const BleedingPhysiology& physiology() const { return physiology_; }

@@ -1,6 +1,7 @@
 #include "simulator/fluid/opened_vessels.h"
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <optional>
 
@@ -38,6 +39,45 @@ std::optional<Crossing> segment_crosses_triangle(const core::Vec3& a, const core
   return Crossing{t, core::Vec3(1.0 - u - v, u, v)};
 }
 
+/// A hollow vessel cut across: the cut's faces form a ring in the wall around the lumen and
+/// none crosses the axis. Looks for the cut faces whose centroid lies within 1.5 radii of the
+/// segment's axis and calls the lumen opened when they surround it (their unit directions out
+/// from the axis average to less than half a unit: a one-sided cut beside a vessel averages
+/// near one); the crossing is the face nearest the axis, at its centroid.
+std::optional<Crossing> ring_around_lumen(const core::VesselSegment& segment,
+                                          std::span<const core::Vec3> nodes,
+                                          std::span<const core::Triangle> triangles,
+                                          int& nearest_triangle) {
+  const core::Vec3 axis = segment.distal - segment.proximal;
+  const double length2 = axis.squaredNorm();
+  if (!(length2 > 0.0)) return std::nullopt;
+  core::Vec3 outward_sum = core::Vec3::Zero();
+  int around = 0;
+  double best = std::numeric_limits<double>::infinity();
+  Crossing crossing;
+  for (int t = 0; t < static_cast<int>(triangles.size()); ++t) {
+    const core::Triangle& tri = triangles[static_cast<std::size_t>(t)];
+    const core::Vec3 c =
+        (nodes[static_cast<std::size_t>(tri[0])] + nodes[static_cast<std::size_t>(tri[1])] +
+         nodes[static_cast<std::size_t>(tri[2])]) /
+        3.0;
+    const double along = (c - segment.proximal).dot(axis) / length2;
+    if (along < 0.0 || along > 1.0) continue;
+    const core::Vec3 out = c - (segment.proximal + along * axis);
+    const double distance = out.norm();
+    if (distance > 1.5 * segment.radius || !(distance > 0.0)) continue;
+    outward_sum += out / distance;
+    ++around;
+    if (distance < best) {
+      best = distance;
+      nearest_triangle = t;
+      crossing = Crossing{along, core::Vec3::Constant(1.0 / 3.0)};
+    }
+  }
+  if (around < 3 || outward_sum.norm() > 0.5 * around) return std::nullopt;
+  return crossing;
+}
+
 /// 8 μ L / (π r⁴): the laminar resistance of a vessel of length `length` m and radius `radius` m.
 double poiseuille_resistance(double length, double radius, double viscosity) {
   return 8.0 * viscosity * length / (std::numbers::pi * std::pow(radius, 4));
@@ -71,6 +111,7 @@ std::vector<OpenedVessel> find_opened_vessels(const core::VesselTree& tree,
         nearest_triangle = t;
       }
     }
+    if (!nearest) nearest = ring_around_lumen(segment, nodes, triangles, nearest_triangle);
     if (!nearest) continue;
 
     OpenedVessel vessel;

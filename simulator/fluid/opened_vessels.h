@@ -12,6 +12,9 @@
 /// inside the organ; without it a cut at the root would bleed without bound). The blood pressure
 /// behind the opening is the arterial or venous pressure of the tree's kind. A deeper, thinner
 /// vessel bleeds less: radius and level in the tree set the rate.
+/// A segment is opened where the cut's faces cross its axis (a vessel in solid tissue) or, when
+/// none does, where they ring its lumen within 1.5 radii of the axis (a hollow vessel body cut
+/// across, whose wall is all the tissue there is).
 
 #include <array>
 #include <span>

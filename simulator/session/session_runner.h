@@ -157,6 +157,8 @@ class SessionRunner {
   void start_tools(const core::Scenario& scenario);
   /// Moves the instrument's contact point to state_ (a tool's jaws touch with their hinge).
   void move_tissue();
+  /// Makes the arterial sources from `first` on pulse with their tree's authored pulse.
+  void pulse_opened_arteries(std::size_t first);
   /// After a physics step: the tools follow the instrument.
   void follow_tools(double time);
   /// Seals the bleeding sources within `reach` m of `point` (m, current) at `time` s.

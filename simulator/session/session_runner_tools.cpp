@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "simulator/dynamics/pulse_waves.h"
+#include "simulator/dynamics/vessel_wave_paths.h"
 #include "simulator/session/session_runner.h"
 
 namespace viscera::sim {
@@ -38,6 +39,7 @@ void SessionRunner::start_tools(const core::Scenario& scenario) {
   tools_->on_cut([this](int body, const cutting::TopologyChange& change, double time) {
     const std::size_t before = bleeding_->sources().size();
     start_bleeding(body, change, time);
+    pulse_opened_arteries(before);
     // Coagulated tissue has no open capillaries: ooze from a cut through it is sealed at once
     // (bipolar coagulation before the cut is what keeps a sterilisation dry).
     const auto& coagulated = tools_->coagulated()[static_cast<std::size_t>(body)];
@@ -63,15 +65,29 @@ void SessionRunner::start_tools(const core::Scenario& scenario) {
     stop_pulse_near(body, rest, kVesselReach, time, "a clip");
     // A clip between the root and a cut stops that cut's arterial bleeding (seed 001 §5.1.2).
     if (!bleeding_) return;
+    // Between the root and the opening: on a segment of the opened vessel's root path, and on
+    // the opened segment itself only proximal to the opening.
     int stopped = 0;
-    for (const core::VesselTree& tree : hosted_trees_[static_cast<std::size_t>(body)]) {
-      for (std::size_t s = 0; s < tree.segments.size(); ++s) {
-        const auto& seg = tree.segments[s];
+    const auto rest_positions = world_.state().range(world_.state().rest_positions, body);
+    for (std::size_t i = 0; i < bleeding_->sources().size(); ++i) {
+      const fluid::BleedingSource& source = bleeding_->sources()[i];
+      if (source.capillary || source.body != body) continue;
+      const core::VesselTree* tree = nullptr;
+      for (const core::VesselTree& t : hosted_trees_[static_cast<std::size_t>(body)])
+        if (t.id == source.vessel_tree) tree = &t;
+      if (tree == nullptr) continue;
+      const core::Vec3 site = fluid::site_position(source, rest_positions);
+      for (const int s : source.path) {
+        const auto& seg = tree->segments[static_cast<std::size_t>(s)];
         const core::Vec3 axis = seg.distal - seg.proximal;
-        const double t = std::clamp(
+        const double along = std::clamp(
             (rest - seg.proximal).dot(axis) / std::max(axis.squaredNorm(), 1e-18), 0.0, 1.0);
-        if ((seg.proximal + t * axis - rest).norm() - seg.radius <= kVesselReach)
-          stopped += bleeding_->clip(tree.id, static_cast<int>(s), time);
+        if ((seg.proximal + along * axis - rest).norm() - seg.radius > kVesselReach) continue;
+        const double site_along =
+            (site - seg.proximal).dot(axis) / std::max(axis.squaredNorm(), 1e-18);
+        if (s == source.segment && along >= site_along) continue;  // beyond the opening
+        if (bleeding_->clip_source(i, time)) ++stopped;
+        break;
       }
     }
     if (stopped > 0)
@@ -89,6 +105,31 @@ void SessionRunner::start_tools(const core::Scenario& scenario) {
     seal_bleeding_near(at, kBipolarReach, time);
     stop_pulse_near(body, at_rest, kVesselReach, time, "coagulated tissue");
   });
+}
+
+void SessionRunner::pulse_opened_arteries(std::size_t first) {
+  // The mean arterial pressure of 85 mmHg swings by the pulse pressure of 40 mmHg (120/80):
+  // a = 20 / 85. The wave reaches the opening arc / velocity after each beat.
+  constexpr double kAmplitude = 20.0 / 85.0;
+  for (std::size_t i = first; i < bleeding_->sources().size(); ++i) {
+    const fluid::BleedingSource& source = bleeding_->sources()[i];
+    if (source.capillary) continue;
+    for (const core::ActiveDeformation& deformation : scenario_.active_deformations) {
+      const auto* pulse = std::get_if<core::PulseSpec>(&deformation.spec);
+      if (pulse == nullptr || pulse->vessel_tree != source.vessel_tree) continue;
+      for (const core::VesselTree& tree : hosted_trees_[static_cast<std::size_t>(source.body)]) {
+        if (tree.id != source.vessel_tree) continue;
+        const auto& seg = tree.segments[static_cast<std::size_t>(source.segment)];
+        const core::Vec3 site = fluid::site_position(
+            source, world_.state().range(world_.state().rest_positions, source.body));
+        const double along =
+            std::max(0.0, (site - seg.proximal).dot((seg.distal - seg.proximal).normalized()));
+        const double arc =
+            proximal_arc_lengths(tree)[static_cast<std::size_t>(source.segment)] + along;
+        bleeding_->set_pulse(i, 60.0 / pulse->heart_rate, arc / pulse->pulse_velocity, kAmplitude);
+      }
+    }
+  }
 }
 
 void SessionRunner::follow_tools(double time) {

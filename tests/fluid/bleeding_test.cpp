@@ -201,3 +201,49 @@ TEST(Bleeding, capillary_ooze_decays_with_its_time_constant_and_clots) {
   EXPECT_EQ(sources.openings(10.0 + 4.7 * tau)[0].conductance, 0.0);
   EXPECT_EQ(sources.sources()[0].stop, BleedingStop::Clotted);
 }
+
+TEST(Bleeding, a_pulsing_artery_spurts_in_time_with_its_wave_and_a_steady_one_does_not) {
+  const core::VesselTree tree = forked_artery();
+  const CutPlane cut = cut_plane(0.03);
+  BleedingSources sources;
+  ASSERT_EQ(sources.add_cut(0, std::span(&tree, 1), cut.nodes, cut.triangles, 0.0), 2);
+  // Branch 0 pulses at 75 beats a minute, its wave arriving 5 ms after each beat; branch 1 stays
+  // steady.
+  sources.set_pulse(0, 0.8, 0.005, 0.25);
+  const double mean = sources.sources()[0].pressure;
+  EXPECT_NEAR(sources.openings(0.005)[0].pressure, 1.25 * mean, 1e-9 * mean);  // the spurt
+  EXPECT_NEAR(sources.openings(0.405)[0].pressure, 0.75 * mean, 1e-9 * mean);  // diastole
+  EXPECT_NEAR(sources.openings(0.805)[0].pressure, 1.25 * mean, 1e-9 * mean);  // next beat
+  EXPECT_EQ(sources.openings(0.405)[1].pressure, sources.sources()[1].pressure);
+  // Over whole beats the pulse averages to the mean pressure.
+  double sum = 0.0;
+  for (int k = 0; k < 800; ++k)
+    sum += sources.openings(0.001 * k)[0].pressure;
+  EXPECT_NEAR(sum / 800.0, mean, 1e-9 * mean);
+  EXPECT_THROW(sources.set_pulse(7, 0.8, 0.0, 0.25), std::out_of_range);
+}
+
+TEST(OpenedVessels, a_hollow_vessel_cut_across_its_wall_ring_opens_and_a_cut_beside_it_does_not) {
+  // A vessel body whose wall is all the tissue: the cut's faces ring the lumen (r 2 mm) at
+  // z = 10 mm without crossing the axis.
+  core::VesselTree tree;
+  tree.id = "artery";
+  tree.kind = "arterial";
+  tree.segments.push_back({0, -1, {0, 0, 0}, {0, 0, 0.02}, 2e-3, 0.0});
+  std::vector<core::Vec3> nodes;
+  std::vector<core::Triangle> ring;
+  for (int k = 0; k < 8; ++k) {
+    const double a = 2.0 * std::numbers::pi * k / 8.0, b = 2.0 * std::numbers::pi * (k + 1) / 8.0;
+    const int base = static_cast<int>(nodes.size());
+    nodes.push_back({1.6e-3 * std::cos(a), 1.6e-3 * std::sin(a), 0.01});
+    nodes.push_back({2.4e-3 * std::cos(a), 2.4e-3 * std::sin(a), 0.01});
+    nodes.push_back({2.4e-3 * std::cos(b), 2.4e-3 * std::sin(b), 0.01});
+    ring.push_back({base, base + 1, base + 2});
+  }
+  const auto opened = find_opened_vessels(tree, nodes, ring, BleedingPhysiology{});
+  ASSERT_EQ(opened.size(), 1u);
+  EXPECT_NEAR(opened[0].site.z(), 0.01, 1e-9);
+  // The same faces on one side of the axis only (a cut beside a vessel in solid tissue).
+  std::vector<core::Triangle> beside(ring.begin(), ring.begin() + 3);
+  EXPECT_TRUE(find_opened_vessels(tree, nodes, beside, BleedingPhysiology{}).empty());
+}

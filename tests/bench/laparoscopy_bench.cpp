@@ -1,0 +1,63 @@
+// The laparoscopy-gyn scene of seed 001 (21 KisMo nets) in a session (issue 19 target: ≥ 1 kHz
+// physics headless with pulse, motility and tools): its arteries pulse and its sigmoid moves,
+// and the laparoscope's working port carries the grasper of the shipped expert sterilisation
+// script — the first 8 s: both tubes located, the isthmus grasped and pulled. Counters:
+// physics_rate_hz = physics steps per wall-clock second, real_time_factor = simulated / wall s,
+// substeps per 1 ms step. Also the scene awake without an instrument (pulse and motility only).
+
+#include <benchmark/benchmark.h>
+
+#include "core/json_text.h"
+#include "simulator/session/headless_session.h"
+#include "simulator/session/instrument_input.h"
+#include "templates/template_catalog.h"
+#include "tests/bench/session_scripts.h"
+
+namespace {
+
+const viscera::core::Scenario& patient() {
+  static const viscera::core::Scenario s =
+      viscera::templates::build_from_template("laparoscopy-gyn", {}, 1);
+  return s;
+}
+
+void report_counters(benchmark::State& state, const viscera::sim::SessionReport& report,
+                     double simulated, double wall) {
+  state.counters["substeps"] = report.substeps;
+  state.counters["real_time_factor"] = wall > 0.0 ? simulated / wall : 0.0;
+  state.counters["physics_rate_hz"] = wall > 0.0 ? simulated / report.time_step / wall : 0.0;
+}
+
+void BM_LaparoscopySceneGrasping(benchmark::State& state) {
+  const std::string file =
+      std::string(VISCERA_SOURCE_DIR) + "/data/scripts/laparoscopy-sterilisation-expert.json";
+  const auto json = viscera::sim::resolve_script_landmarks(viscera::core::read_json_file(file),
+                                                           patient().landmarks, file);
+  const auto input = viscera::sim::ScriptedTrajectory::from_json(json, file, 30.0);
+  const auto options = viscera::bench::scripted_run(input, 8.0);
+  double simulated = 0.0, wall = 0.0;
+  viscera::sim::SessionReport report;
+  for (auto _ : state) {
+    report = viscera::sim::run_headless(patient(), options);
+    simulated += report.simulated_time;
+    wall += report.wall_time;
+  }
+  report_counters(state, report, simulated, wall);
+}
+BENCHMARK(BM_LaparoscopySceneGrasping)->Iterations(1)->Unit(benchmark::kSecond);
+
+void BM_LaparoscopySceneAwake(benchmark::State& state) {
+  viscera::sim::HeadlessRunOptions options;
+  options.duration = 4.0;
+  double simulated = 0.0, wall = 0.0;
+  viscera::sim::SessionReport report;
+  for (auto _ : state) {
+    report = viscera::sim::run_headless(patient(), options);
+    simulated += report.simulated_time;
+    wall += report.wall_time;
+  }
+  report_counters(state, report, simulated, wall);
+}
+BENCHMARK(BM_LaparoscopySceneAwake)->Iterations(1)->Unit(benchmark::kSecond);
+
+}  // namespace

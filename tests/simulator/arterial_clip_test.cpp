@@ -1,0 +1,125 @@
+// Arterial bleeding and clips (issue 19 §2): the left uterine artery of the laparoscopy-gyn
+// patient alone, with its pulsing vessel tree; scissors cut it across the middle of its distal
+// segment, then a clip goes on either between the root and the cut (stops the bleeding) or
+// beyond the cut (does not); either clip stops the pulse wave where it sits.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "simulator/session/headless_session.h"
+#include "simulator/session/instrument_input.h"
+#include "templates/template_catalog.h"
+
+namespace viscera::sim {
+namespace {
+
+const core::Scenario& artery_patient() {
+  static const core::Scenario s = [] {
+    core::Scenario p = templates::build_from_template("laparoscopy-gyn", {}, 1);
+    const std::string id = "artery-uterine-left";
+    std::erase_if(p.objects, [&](const auto& o) { return o.id != id; });
+    std::erase_if(p.vessel_trees, [&](const auto& t) { return t.host_object != id; });
+    std::erase_if(p.active_deformations, [&](const auto& d) { return d.target_object != id; });
+    p.connections.clear();
+    p.session.steps.clear();
+    p.session.tasks.clear();
+    return p;
+  }();
+  return s;
+}
+
+/// The jaws across the vessel at `point` (m): the shaft along +y into the body, the vessel
+/// 5 mm behind the tip, the jaws closing across the vessel's direction `along`.
+InstrumentState jaws_at(const core::Vec3& point, const core::Vec3& along, LaparoscopicTool tool,
+                        bool closed) {
+  InstrumentState s;
+  s.axis = core::Vec3::UnitY();
+  s.up = along.cross(s.axis).normalized();
+  s.tip = point + 0.005 * s.axis;
+  s.tool = tool;
+  s.jaws_closed = closed;
+  return s;
+}
+
+/// Cuts the distal segment at its middle at 0.3 s, then clips at `clip` (m) at 0.7 s.
+SessionReport cut_then_clip(const core::Vec3& clip, const core::Vec3& clip_along) {
+  const core::VesselTree& tree = artery_patient().vessel_trees.at(0);
+  const auto& distal = tree.segments.at(1);
+  const core::Vec3 along = (distal.distal - distal.proximal).normalized();
+  const core::Vec3 cut = 0.5 * (distal.proximal + distal.distal);
+  InstrumentState away =
+      jaws_at(cut - 0.03 * core::Vec3::UnitY(), along, LaparoscopicTool::None, false);
+  const RecordedInput input({{0, away},
+                             {100, jaws_at(cut, along, LaparoscopicTool::Scissors, false)},
+                             {300, jaws_at(cut, along, LaparoscopicTool::Scissors, true)},
+                             {400, jaws_at(cut, along, LaparoscopicTool::Scissors, false)},
+                             {500, jaws_at(clip, clip_along, LaparoscopicTool::ClipApplier, false)},
+                             {700, jaws_at(clip, clip_along, LaparoscopicTool::ClipApplier, true)},
+                             {800, jaws_at(clip, clip_along, LaparoscopicTool::ClipApplier, false)},
+                             {900, away}});
+  HeadlessRunOptions options;
+  options.duration = 1.5;
+  options.instrument = &input;
+  options.instrument_body = "artery-uterine-left";
+  options.end_when_complete = false;
+  return run_headless(artery_patient(), options);
+}
+
+/// The opened artery's source, or null (with the session's events in the failure message).
+const fluid::BleedingSource* artery_source(const SessionReport& r) {
+  const auto& sources = *r.bleeding;
+  const auto it =
+      std::find_if(sources.begin(), sources.end(), [](const auto& s) { return !s.capillary; });
+  if (it != sources.end()) return &*it;
+  std::string text;
+  for (const auto& e : r.events)
+    text += std::to_string(e.time) + " " + e.kind + ": " + e.message + "\n";
+  ADD_FAILURE() << "no artery opened; " << sources.size() << " source(s)\n" << text;
+  return nullptr;
+}
+
+int events(const SessionReport& r, const std::string& kind) {
+  return static_cast<int>(std::count_if(r.events.begin(), r.events.end(),
+                                        [&](const auto& e) { return e.kind == kind; }));
+}
+
+TEST(ArterialClip, a_clip_between_the_root_and_the_cut_stops_the_bleeding_one_beyond_it_does_not) {
+  const core::VesselTree& tree = artery_patient().vessel_trees.at(0);
+  ASSERT_EQ(tree.segments.size(), 2u);
+  const auto& root = tree.segments[0];
+  const auto& distal = tree.segments[1];
+  const core::Vec3 root_along = (root.distal - root.proximal).normalized();
+  const core::Vec3 distal_along = (distal.distal - distal.proximal).normalized();
+
+  const SessionReport right = cut_then_clip(0.5 * (root.proximal + root.distal), root_along);
+  ASSERT_TRUE(right.bleeding.has_value());
+  ASSERT_EQ(right.laparoscopy->cuts.size(), 1u);
+  ASSERT_EQ(right.laparoscopy->clips.size(), 1u);
+  const fluid::BleedingSource* opened = artery_source(right);
+  ASSERT_NE(opened, nullptr);
+  const fluid::BleedingSource& stopped = *opened;
+  EXPECT_EQ(stopped.segment, 1);
+  EXPECT_EQ(stopped.stop, fluid::BleedingStop::Clipped);
+  EXPECT_NEAR(stopped.stopped_at, 0.7, 0.002);
+  EXPECT_GT(stopped.bled, 0.0);  // it bled for 0.4 s between the cut and the clip
+  // It spurts in time with the pulse: the pressure behind it swings with the heart rate.
+  EXPECT_NEAR(stopped.pulse_period, 60.0 / 72.0, 1e-12);
+  EXPECT_GT(stopped.pulse_delay, 0.0);
+  EXPECT_GT(stopped.pulse_amplitude, 0.2);
+  EXPECT_EQ(events(right, "bleeding-clipped"), 1);
+  EXPECT_GE(events(right, "pulse-stopped"), 1);
+
+  const SessionReport wrong =
+      cut_then_clip(distal.proximal + 0.8 * (distal.distal - distal.proximal), distal_along);
+  ASSERT_EQ(wrong.laparoscopy->clips.size(), 1u);
+  const fluid::BleedingSource* open = artery_source(wrong);
+  ASSERT_NE(open, nullptr);
+  const fluid::BleedingSource& still = *open;
+  EXPECT_EQ(still.stop, fluid::BleedingStop::Bleeding);
+  EXPECT_GT(still.bled, stopped.bled);
+  EXPECT_EQ(events(wrong, "bleeding-clipped"), 0);
+}
+
+}  // namespace
+}  // namespace viscera::sim

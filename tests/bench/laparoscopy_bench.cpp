@@ -21,8 +21,15 @@ const viscera::core::Scenario& patient() {
   return s;
 }
 
-void report_counters(benchmark::State& state, const viscera::sim::SessionReport& report,
-                     double simulated, double wall) {
+/// Runs the session once per iteration and reports its rates.
+void run(benchmark::State& state, const viscera::sim::HeadlessRunOptions& options) {
+  double simulated = 0.0, wall = 0.0;
+  viscera::sim::SessionReport report;
+  for (auto _ : state) {
+    report = viscera::sim::run_headless(patient(), options);
+    simulated += report.simulated_time;
+    wall += report.wall_time;
+  }
   state.counters["substeps"] = report.substeps;
   state.counters["real_time_factor"] = wall > 0.0 ? simulated / wall : 0.0;
   state.counters["physics_rate_hz"] = wall > 0.0 ? simulated / report.time_step / wall : 0.0;
@@ -34,29 +41,14 @@ void BM_LaparoscopySceneGrasping(benchmark::State& state) {
   const auto json = viscera::sim::resolve_script_landmarks(viscera::core::read_json_file(file),
                                                            patient().landmarks, file);
   const auto input = viscera::sim::ScriptedTrajectory::from_json(json, file, 30.0);
-  const auto options = viscera::bench::scripted_run(input, 8.0);
-  double simulated = 0.0, wall = 0.0;
-  viscera::sim::SessionReport report;
-  for (auto _ : state) {
-    report = viscera::sim::run_headless(patient(), options);
-    simulated += report.simulated_time;
-    wall += report.wall_time;
-  }
-  report_counters(state, report, simulated, wall);
+  run(state, viscera::bench::scripted_run(input, 8.0));
 }
 BENCHMARK(BM_LaparoscopySceneGrasping)->Iterations(1)->Unit(benchmark::kSecond);
 
 void BM_LaparoscopySceneAwake(benchmark::State& state) {
   viscera::sim::HeadlessRunOptions options;
   options.duration = 4.0;
-  double simulated = 0.0, wall = 0.0;
-  viscera::sim::SessionReport report;
-  for (auto _ : state) {
-    report = viscera::sim::run_headless(patient(), options);
-    simulated += report.simulated_time;
-    wall += report.wall_time;
-  }
-  report_counters(state, report, simulated, wall);
+  run(state, options);
 }
 BENCHMARK(BM_LaparoscopySceneAwake)->Iterations(1)->Unit(benchmark::kSecond);
 

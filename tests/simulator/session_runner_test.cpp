@@ -157,6 +157,15 @@ TEST(SessionRunner, time_limit_and_trainee_abort_end_the_session) {
   EXPECT_EQ(task(aborted, "withdraw").status, "not-completed");
 }
 
+/// Every task of the sterilisation's tools is unavailable, its note saying `why`.
+void expect_tool_tasks_unavailable(const SessionReport& report, const std::string& why) {
+  for (const char* id :
+       {"grasp-tube", "coagulate-isthmus", "clip-proximal", "clip-distal", "cut-tube"}) {
+    EXPECT_EQ(task(report, id).status, "unavailable") << id;
+    EXPECT_NE(task(report, id).note.find(why), std::string::npos) << task(report, id).note;
+  }
+}
+
 TEST(SessionRunner, tasks_needing_tools_the_instrument_lacks_are_unavailable_with_the_reason) {
   core::Scenario scenario = viscera::testing::cavity_scenario();
   core::apply_procedure(scenario.session,
@@ -166,12 +175,7 @@ TEST(SessionRunner, tasks_needing_tools_the_instrument_lacks_are_unavailable_wit
   // A hysteroscope has no working port for laparoscopic tools.
   scenario.session.instrument.kind = "hysteroscope";
   const SessionReport report = run(scenario, expert, 1.0);
-  for (const char* id :
-       {"grasp-tube", "coagulate-isthmus", "clip-proximal", "clip-distal", "cut-tube"}) {
-    EXPECT_EQ(task(report, id).status, "unavailable") << id;
-    EXPECT_NE(task(report, id).note.find("cannot simulate"), std::string::npos)
-        << task(report, id).note;
-  }
+  expect_tool_tasks_unavailable(report, "cannot simulate");
   // The fixture has no landmarks: the locating tasks say so instead of passing.
   EXPECT_EQ(task(report, "view-left-tube").status, "unavailable");
   EXPECT_NE(task(report, "view-left-tube").note.find("fallopian-tube-left"), std::string::npos);
@@ -181,12 +185,7 @@ TEST(SessionRunner, tasks_needing_tools_the_instrument_lacks_are_unavailable_wit
   // The laparoscope's working port carries the tools: now only the missing site stops them.
   scenario.session.instrument.kind = "laparoscope";
   const SessionReport lap = run(scenario, expert, 1.0);
-  for (const char* id :
-       {"grasp-tube", "coagulate-isthmus", "clip-proximal", "clip-distal", "cut-tube"}) {
-    EXPECT_EQ(task(lap, id).status, "unavailable") << id;
-    EXPECT_NE(task(lap, id).note.find("no landmark \"fallopian-tube-left\""), std::string::npos)
-        << task(lap, id).note;
-  }
+  expect_tool_tasks_unavailable(lap, "no landmark \"fallopian-tube-left\"");
   ASSERT_TRUE(lap.laparoscopy.has_value());
   EXPECT_TRUE(lap.laparoscopy->clips.empty());
 }

@@ -152,15 +152,21 @@ TEST(EndoscopicView, half_resolution_scene_under_the_lens_keeps_the_picture) {
   EXPECT_EQ(testing::mean_abs_difference(soft, half.capture()), 0.0);
 }
 
+/// The view's input at the patient's starting pose, through its angled optics.
+sim::SessionSnapshot starting_snapshot(const core::Scenario& scenario) {
+  sim::SessionSnapshot snapshot;
+  snapshot.optics_angle = scenario.session.instrument.optics_angle;
+  snapshot.instrument = sim::starting_pose(scenario, snapshot.optics_angle);
+  return snapshot;
+}
+
 TEST(EndoscopicView, blood_in_the_flow_shows_as_billboards_and_clouds_the_lens) {
   // Issue 18 §5: a cloud of fresh blood particles in front of the optics, then the haze of
   // blood mixed into the fluid. Both turn the picture towards red and darken it.
   const auto& patient = testing::hysteroscopy_patient();
   view::EndoscopicView view(patient.scenario, patient.package, offscreen(true));
   const double angle = patient.scenario.session.instrument.optics_angle;
-  sim::SessionSnapshot snapshot;
-  snapshot.instrument = sim::starting_pose(patient.scenario, angle);
-  snapshot.optics_angle = angle;
+  sim::SessionSnapshot snapshot = starting_snapshot(patient.scenario);
   view.update(snapshot);
   const auto clear = view.capture();
   const FrameStatistics before = frame_statistics(clear, 0.9);
@@ -206,9 +212,7 @@ TEST(EndoscopicView, coagulation_smoke_veils_the_picture_and_a_steamed_lens_blur
   const auto& patient = testing::hysteroscopy_patient();
   view::EndoscopicView view(patient.scenario, patient.package, offscreen(true));
   const double angle = patient.scenario.session.instrument.optics_angle;
-  sim::SessionSnapshot snapshot;
-  snapshot.instrument = sim::starting_pose(patient.scenario, angle);
-  snapshot.optics_angle = angle;
+  sim::SessionSnapshot snapshot = starting_snapshot(patient.scenario);
   view.update(snapshot);
   const auto clear = view.capture();
   const FrameStatistics before = frame_statistics(clear, 0.9);

@@ -206,10 +206,11 @@ core::HydrometraStates sweep_hydrometra(const core::SceneObject& object,
               std::to_string(states.pressures[static_cast<std::size_t>(std::max(reached, 1))]) +
               " Pa",
           object.id, -1, step, "the wall is too soft for any distension");
-    const double limit = states.pressures[static_cast<std::size_t>(reached) - 1];
+    const double limit =
+        settings.limit_fraction * states.pressures[static_cast<std::size_t>(reached) - 1];
     core::logger()->warn(
         "hydrometra of {}: the wall has no equilibrium at {:.0f} Pa (a limit point of its "
-        "Teschner energies), so its {} states span 0 to {:.0f} Pa",
+        "Teschner energies), so its {} states span 0 to {:.0f} Pa, short of that limit",
         object.id, states.pressures[static_cast<std::size_t>(reached)], settings.states, limit);
     reached = sweep(limit, states);
   }

@@ -12,9 +12,9 @@
 ///   hysteroscopy; 100 states uniformly spaced (202.02 Pa ≈ 1.5 mmHg apart), state 0 at 0 Pa
 ///   is the rest shape exactly (zero displacement). A wall that has no equilibrium below
 ///   20 kPa — Teschner energies do not stiffen with strain, so a thin or soft wall balloons
-///   past a limit pressure, about E t/(2 r) for a sphere — gets its 100 states evenly up to the
-///   last equilibrium found (the sweep runs again over that range, and logs a warning); at run
-///   time higher pressures clamp to that state.
+///   past a limit pressure, about E t/(2 r) for a sphere — gets its 100 states evenly up to 90 %
+///   of the last equilibrium found (the sweep runs again over that range, and logs a warning);
+///   at run time higher pressures clamp to that state.
 /// - Load: the uniform pressure as a follower traction on the cavity-marked faces, P × area ×
 ///   normal shared by their corners (dynamics/cavity_pressure.h).
 /// - Boundary conditions: the body's fixed nodes stay where they are — the template's
@@ -26,7 +26,7 @@
 ///   iterations to 1e-2, an inexact Newton), the follower load refreshed between steps, until
 ///   the largest nodal force residual |f_internal + f_pressure| of the free nodes is below
 ///   `relative_residual` × the largest nodal pressure load (1e-3), at most `max_iterations`
-///   (30) steps a state; a state that does not get there is the wall's limit point.
+///   (20) steps a state; a state that does not get there is the wall's limit point.
 
 #include <map>
 #include <string>
@@ -40,11 +40,15 @@ struct HydrometraSweepSettings {
   double max_pressure = 20000.0;  ///< Pa (150 mmHg)
   int states = 100;  ///< pressures k · max_pressure / (states − 1), k = 0 … states − 1
   double relative_residual = 1e-3;  ///< of the largest nodal pressure load at that pressure
-  int max_iterations = 30;          ///< backward Euler steps per state at most
-  double pseudo_step = 1.0;         ///< s, h of the quasi-static steps
-  int newton_iterations = 4;        ///< per backward Euler step at most
-  int cg_iterations = 100;          ///< per Newton iteration at most
-  double cg_tolerance = 1e-2;       ///< relative residual of each linear solve (inexact Newton)
+  int max_iterations = 20;          ///< backward Euler steps per state at most
+  /// A wall that gives way below max_pressure gets its states up to this fraction of the last
+  /// equilibrium found (near its limit point the wall has no stiffness left: slow to converge
+  /// and no use to a session).
+  double limit_fraction = 0.9;
+  double pseudo_step = 1.0;    ///< s, h of the quasi-static steps
+  int newton_iterations = 4;   ///< per backward Euler step at most
+  int cg_iterations = 100;     ///< per Newton iteration at most
+  double cg_tolerance = 1e-2;  ///< relative residual of each linear solve (inexact Newton)
 };
 
 /// The hydrometra states of `object` (a tet body whose surface marks a "cavity") with the

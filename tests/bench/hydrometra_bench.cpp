@@ -5,6 +5,7 @@
 //     (core::interpolate_hydrometra, every body node);
 //   BM_HydrometraStep: HydrometraForces::set_pressure + prepare — the interpolation, the
 //     target shape and the cavity's pressure load on it.
+//   BM_HydrometraSweep: the authoring step itself (sim::sweep_hydrometra on that uterus).
 // The pressure walks through the clinical range (a different bracket each iteration).
 
 #include <benchmark/benchmark.h>
@@ -12,6 +13,7 @@
 #include <memory>
 
 #include "core/scenario/hydrometra_states.h"
+#include "simulator/dynamics/cavity_pressure.h"
 #include "simulator/dynamics/hydrometra_forces.h"
 #include "simulator/dynamics/hydrometra_sweep.h"
 #include "simulator/world/world.h"
@@ -21,17 +23,36 @@ namespace {
 
 using viscera::core::Vec3;
 
+const viscera::core::Scenario& bare_patient() {
+  static const viscera::core::Scenario scenario =
+      viscera::templates::build_from_template("hysteroscopy", {}, 1);
+  return scenario;
+}
+
 const viscera::core::Scenario& patient() {
   static const viscera::core::Scenario scenario = [] {
-    viscera::core::Scenario s = viscera::templates::build_from_template("hysteroscopy", {}, 1);
+    viscera::core::Scenario s = bare_patient();
     viscera::sim::add_hydrometra_states(s);
     return s;
   }();
   return scenario;
 }
 
-double pressure_at(std::int64_t i) {
-  return 37.0 + static_cast<double>((i * 7919) % 20000);  // Pa, never on a stored state
+void BM_HydrometraSweep(benchmark::State& state) {
+  const viscera::core::Scenario& s = bare_patient();
+  viscera::core::HydrometraStates states;
+  for (auto _ : state) {
+    states = viscera::sim::sweep_hydrometra(s.objects[0], s.materials);
+    benchmark::DoNotOptimize(states.displacements.data());
+  }
+  state.counters["nodes"] = states.node_count;
+  state.counters["top_pressure_Pa"] = states.pressures.back();
+}
+BENCHMARK(BM_HydrometraSweep)->Unit(benchmark::kMillisecond)->Iterations(3);
+
+/// Pa: pressures spread over the states' range (never on a stored state).
+double pressure_at(const viscera::core::HydrometraStates& states, std::int64_t i) {
+  return states.pressures.back() * (0.5 + static_cast<double>((i * 7919) % 10007)) / 10008.0;
 }
 
 void BM_HydrometraInterpolation(benchmark::State& state) {
@@ -39,7 +60,7 @@ void BM_HydrometraInterpolation(benchmark::State& state) {
   std::vector<Vec3> out(static_cast<std::size_t>(states.node_count));
   std::int64_t i = 0;
   for (auto _ : state) {
-    viscera::core::interpolate_hydrometra(states, pressure_at(i++), out);
+    viscera::core::interpolate_hydrometra(states, pressure_at(states, i++), out);
     benchmark::DoNotOptimize(out.data());
   }
   state.counters["nodes"] = states.node_count;
@@ -55,7 +76,7 @@ void BM_HydrometraStep(benchmark::State& state) {
   const viscera::sim::StepContext context{0.0, world.time_step(), 1};
   std::int64_t i = 0;
   for (auto _ : state) {
-    forces.set_pressure(pressure_at(i++));
+    forces.set_pressure(pressure_at(scenario.objects[0].hydrometra, i++));
     forces.prepare(world.state(), context);
     benchmark::DoNotOptimize(forces.loads().data());
   }

@@ -137,8 +137,9 @@ core::HydrometraStates sweep_hydrometra(const core::SceneObject& object,
 
   long long step = 0;
   // One sweep over `states` pressures up to `top` Pa from the rest shape. Returns the index of
-  // the first state that did not converge (the wall's limit point: past it the Teschner wall,
-  // which does not stiffen with strain, has no equilibrium), or `states` when all did.
+  // the first state that did not converge or at which the wall had lost most of its stiffness
+  // against the pressure (its limit point: past it the Teschner wall, which does not stiffen
+  // with strain, balloons), or `states` when all are equilibria short of that.
   const auto sweep = [&](double top, core::HydrometraStates& out) {
     out = {};
     out.node_count = static_cast<int>(n);
@@ -148,6 +149,7 @@ core::HydrometraStates sweep_hydrometra(const core::SceneObject& object,
     progress.begin_stage("hydrometra pressure states", settings.states);
     progress.step();  // state 0: 0 Pa, the rest shape (zero displacement)
     std::vector<Vec3> previous(state.positions), before_previous(state.positions);
+    double first_compliance = 0.0;
     for (int k = 1; k < settings.states; ++k) {
       progress.check_cancelled();
       const double pressure = top * k / (settings.states - 1);
@@ -178,6 +180,13 @@ core::HydrometraStates sweep_hydrometra(const core::SceneObject& object,
         if (!std::isfinite(left)) break;
       }
       if (!(left <= settings.relative_residual * largest_load)) return k;
+      // Compliance of this step, m/Pa: the largest nodal movement per pascal.
+      double moved = 0.0;
+      for (std::size_t i = 0; i < n; ++i)
+        moved = std::max(moved, (state.positions[i] - previous[i]).norm());
+      const double compliance = moved / (pressure - out.pressures[static_cast<std::size_t>(k) - 1]);
+      if (k == 1) first_compliance = compliance;
+      if (compliance > settings.max_softening * first_compliance) return k;
       out.residual = std::max(out.residual, left);
       before_previous = previous;
       previous = state.positions;
@@ -209,8 +218,8 @@ core::HydrometraStates sweep_hydrometra(const core::SceneObject& object,
     const double limit =
         settings.limit_fraction * states.pressures[static_cast<std::size_t>(reached) - 1];
     core::logger()->warn(
-        "hydrometra of {}: the wall has no equilibrium at {:.0f} Pa (a limit point of its "
-        "Teschner energies), so its {} states span 0 to {:.0f} Pa, short of that limit",
+        "hydrometra of {}: the wall balloons at {:.0f} Pa (a limit point of its Teschner "
+        "energies), so its {} states span 0 to {:.0f} Pa, short of that limit",
         object.id, states.pressures[static_cast<std::size_t>(reached)], settings.states, limit);
     reached = sweep(limit, states);
   }

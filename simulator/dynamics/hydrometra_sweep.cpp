@@ -135,11 +135,29 @@ core::HydrometraStates sweep_hydrometra(const core::SceneObject& object,
     return worst;
   };
 
+  // True when an edge of a tet is stretched beyond its material's plastic yield: the session
+  // would give the wall a permanent set there (PlasticFlow) and tear it at the tearing strain.
+  const auto beyond_yield = [&] {
+    for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+      const auto& tet = mesh.tets[t];
+      const double yield = model->material_of(static_cast<int>(t)).plastic_yield;
+      for (int a = 0; a < 4; ++a)
+        for (int b = a + 1; b < 4; ++b) {
+          const auto i = static_cast<std::size_t>(tet[static_cast<std::size_t>(a)]);
+          const auto j = static_cast<std::size_t>(tet[static_cast<std::size_t>(b)]);
+          const double rest = (mesh.nodes[j] - mesh.nodes[i]).norm();
+          if ((state.positions[j] - state.positions[i]).norm() > (1.0 + yield) * rest) return true;
+        }
+    }
+    return false;
+  };
+
   long long step = 0;
   // One sweep over `states` pressures up to `top` Pa from the rest shape. Returns the index of
-  // the first state that did not converge or at which the wall had lost most of its stiffness
+  // the first state that did not converge, at which the wall had lost most of its stiffness
   // against the pressure (its limit point: past it the Teschner wall, which does not stiffen
-  // with strain, balloons), or `states` when all are equilibria short of that.
+  // with strain, balloons) or that stretches an edge beyond its plastic yield, or `states` when
+  // all are elastic equilibria.
   const auto sweep = [&](double top, core::HydrometraStates& out) {
     out = {};
     out.node_count = static_cast<int>(n);
@@ -187,6 +205,7 @@ core::HydrometraStates sweep_hydrometra(const core::SceneObject& object,
       const double compliance = moved / (pressure - out.pressures[static_cast<std::size_t>(k) - 1]);
       if (k == 1) first_compliance = compliance;
       if (compliance > settings.max_softening * first_compliance) return k;
+      if (beyond_yield()) return k;
       out.residual = std::max(out.residual, left);
       before_previous = previous;
       previous = state.positions;
@@ -218,8 +237,8 @@ core::HydrometraStates sweep_hydrometra(const core::SceneObject& object,
     const double limit =
         settings.limit_fraction * states.pressures[static_cast<std::size_t>(reached) - 1];
     core::logger()->warn(
-        "hydrometra of {}: the wall balloons at {:.0f} Pa (a limit point of its Teschner "
-        "energies), so its {} states span 0 to {:.0f} Pa, short of that limit",
+        "hydrometra of {}: at {:.0f} Pa the wall balloons or yields (Teschner energies do not "
+        "stiffen with strain), so its {} states span 0 to {:.0f} Pa, short of that limit",
         object.id, states.pressures[static_cast<std::size_t>(reached)], settings.states, limit);
     reached = sweep(limit, states);
   }

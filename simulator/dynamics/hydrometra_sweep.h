@@ -12,10 +12,9 @@
 ///   hysteroscopy; 100 states uniformly spaced (202.02 Pa ≈ 1.5 mmHg apart), state 0 at 0 Pa
 ///   is the rest shape exactly (zero displacement). A wall that has no equilibrium below
 ///   20 kPa — Teschner energies do not stiffen with strain, so a soft wall balloons past a
-///   limit pressure that scales with its stiffness (the default hysteroscopy uterus at about
-///   1.4 kPa, 10 × stiffer at about 14.7 kPa) — gets its 100 states evenly up to 90 % of the
-///   last equilibrium before it (the sweep runs again over that range, and logs a warning); at
-///   run time higher pressures clamp to that state.
+///   limit pressure that scales with its stiffness, or yields before — gets its 100 states
+///   evenly up to 90 % of the last elastic equilibrium before it (the sweep runs again over that
+///   range, and logs a warning); at run time higher pressures clamp to that state.
 /// - Load: the uniform pressure as a follower traction on the cavity-marked faces, P × area ×
 ///   normal shared by their corners (dynamics/cavity_pressure.h).
 /// - Boundary conditions: the body's fixed nodes stay where they are — the template's
@@ -29,8 +28,8 @@
 ///   `relative_residual` × the largest nodal pressure load (1e-3), at most `max_iterations`
 ///   (20) steps a state. The wall's limit point is the first state that does not get there or
 ///   whose largest nodal movement per pascal is 10 × the first state's (lost 90 % of its
-///   stiffness: it balloons; the first is a safeguard of the solver's budget, the second a
-///   property of the model).
+///   stiffness: it balloons) or that stretches a tet edge beyond its material's plastic yield
+///   (a session would then give the wall a permanent set and, at the tearing strain, tear it).
 
 #include <map>
 #include <string>

@@ -98,15 +98,37 @@ TEST(HydrometraSweep, the_cavity_volume_grows_monotonically_with_pressure) {
 
 TEST(HydrometraSweep, the_default_hysteroscopy_wall_gets_its_states_up_to_its_limit) {
   // The template's soft wall (20 kPa myometrium, 8 kPa endometrium, only the cervix held)
-  // balloons past about 1.4 kPa in these energies: its 100 states stop short of that.
+  // stretches an edge past its 30 % plastic yield at a few hundred pascals in these energies:
+  // its 100 states stop short of that.
   core::Scenario patient = templates::build_from_template(
       "hysteroscopy", {{"vessel_terminals", "0"}, {"texture_size", "64"}}, 1);
   ASSERT_EQ(add_hydrometra_states(patient), 1);
   const core::SceneObject& uterus = *patient.find_object("uterus");
   const core::HydrometraStates& states = uterus.hydrometra;
   ASSERT_EQ(states.state_count(), 100);
-  EXPECT_GT(states.pressures.back(), 500.0);
+  EXPECT_GT(states.pressures.back(), 100.0);
   EXPECT_LT(states.pressures.back(), 5000.0);
+  // No edge of the wall beyond its plastic yield (30 %) in any state: the session's PlasticFlow
+  // and tearing never see the distension alone.
+  const auto& tets = uterus.body.tets;
+  const std::vector<Vec3> last = [&] {
+    std::vector<Vec3> p(uterus.body.nodes.size());
+    for (std::size_t n = 0; n < p.size(); ++n)
+      p[n] = uterus.body.nodes[n] + states.state(99)[n];
+    return p;
+  }();
+  double strain = 0.0;
+  for (const auto& tet : tets)
+    for (int a = 0; a < 4; ++a)
+      for (int b = a + 1; b < 4; ++b) {
+        const auto i = static_cast<std::size_t>(tet[static_cast<std::size_t>(a)]);
+        const auto j = static_cast<std::size_t>(tet[static_cast<std::size_t>(b)]);
+        strain = std::max(strain, (last[j] - last[i]).norm() /
+                                          (uterus.body.nodes[j] - uterus.body.nodes[i]).norm() -
+                                      1.0);
+      }
+  EXPECT_LE(strain, 0.3);
+  EXPECT_GT(strain, 0.05);
   const CavitySurface cavity = cavity_surface(uterus);
   const Vec3 apex = cavity_centroid(cavity, uterus.body.nodes);
   std::vector<Vec3> x(uterus.body.nodes.size());
@@ -120,13 +142,14 @@ TEST(HydrometraSweep, the_default_hysteroscopy_wall_gets_its_states_up_to_its_li
     }
     previous = volume;
   }
-  // Never in the range when the wall would hold the whole of it: 10 × stiffer, it does.
+  // The limit scales with the wall's stiffness: 10 × stiffer holds several times the pressure.
   for (auto& [id, material] : patient.materials) {
     material.distance_stiffness *= 10.0;
     material.volume_stiffness *= 10.0;
   }
+  const double soft_top = states.pressures.back();
   ASSERT_EQ(add_hydrometra_states(patient), 1);
-  EXPECT_GT(patient.find_object("uterus")->hydrometra.pressures.back(), 5000.0);
+  EXPECT_GT(patient.find_object("uterus")->hydrometra.pressures.back(), 5.0 * soft_top);
 }
 
 TEST(HydrometraSweep, is_byte_deterministic) {

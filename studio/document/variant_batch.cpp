@@ -107,7 +107,7 @@ Variant from_scenario(const core::Scenario& base, const VariantRequest& request,
         (base.metadata.name.empty() ? std::string("scenario") : base.metadata.name) + " variant " +
         std::to_string(k);
     // The variation moved the wall: its pressure states are computed again (seed 000 §2.1).
-    if (variant.valid) sim::add_hydrometra_states(draw.scenario, progress);
+    if (variant.valid) sim::add_hydrometra_states(draw.scenario, core::Progress::none());
     variant.scenario = std::move(draw.scenario);
     if (variant.valid) break;
   }

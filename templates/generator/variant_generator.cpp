@@ -63,8 +63,9 @@ GeneratedPatient VariantGenerator::generate(std::uint64_t k, core::Progress& pro
       reject(failure.substr(0, colon), failure.substr(colon + 2));
       continue;
     }
-    // Pipeline step of every valid patient: the cavity's pressure states (seed 000 §2.1).
-    sim::add_hydrometra_states(scenario, progress);
+    // Pipeline step of every valid patient: the cavity's pressure states (seed 000 §2.1),
+    // without stages of its own (the batch's progress counts patients, as build() above).
+    sim::add_hydrometra_states(scenario, core::Progress::none());
     scenario.provenance.template_name = template_.name();
     scenario.provenance.template_version = template_.version();
     scenario.provenance.seed = build_seed;

@@ -130,6 +130,7 @@ std::vector<PackageIssue> check_manifest_references(const nlohmann::json& manife
         check_file(o.at("body"), pointer + "/body");
       }
     }
+    if (o.contains("hydrometra")) check_file(o.at("hydrometra"), pointer + "/hydrometra");
   }
   for (const auto& [key, texture] : member_or_empty_object(scenario, "textures").items()) {
     for (const auto& [map, path] : member_or_empty_object(texture, "maps").items()) {

@@ -10,6 +10,7 @@
 #include "core/atomic_replace.h"
 #include "core/error.h"
 #include "core/json_numbers.h"
+#include "core/package/hydrometra_file.h"
 #include "core/package/package_manifest.h"
 #include "core/package/vtk_mesh_io.h"
 #include "core/package/zip_archive.h"
@@ -90,6 +91,10 @@ nlohmann::json write_package_files(const Scenario& scenario,
       write_body_vtu(object.body, folder / body_file_of(object.id));
       record(body_file_of(object.id));
     }
+    if (!object.hydrometra.empty()) {
+      write_file(folder / hydrometra_file_of(object.id), hydrometra_bytes(object.hydrometra));
+      record(hydrometra_file_of(object.id));
+    }
     progress.step();
   }
   for (const auto& [relative, bytes] : extra_files) {
@@ -120,6 +125,11 @@ std::vector<PackageIssue> check_meshes(const Scenario& scenario) {
     }
     if (!o.embedding.empty() && o.embedding.tet.size() != o.surface.vertices.size()) {
       issues.push_back({surface_file_of(o.id), "", "embedding does not cover every vertex"});
+    }
+    if (!o.hydrometra.empty() && o.hydrometra.node_count != static_cast<int>(o.body.nodes.size())) {
+      issues.push_back({hydrometra_file_of(o.id), "",
+                        "hydrometra states have " + std::to_string(o.hydrometra.node_count) +
+                            " nodes, the body " + std::to_string(o.body.nodes.size())});
     }
     if (o.body_kind == BodyKind::TetMesh && o.body.tets.empty()) {
       issues.push_back({kManifestFile, "/scenario/objects/" + std::to_string(i),
@@ -210,6 +220,10 @@ Inspection inspect_folder(const fs::path& folder, const std::string& shown_name,
       read_surface_vtp(folder / surface, object.surface, object.embedding);
       if (objects[i].contains("body"))
         object.body = read_body_vtu(folder / objects[i].at("body").get<std::string>());
+      if (objects[i].contains("hydrometra")) {
+        const std::string file = objects[i].at("hydrometra").get<std::string>();
+        object.hydrometra = read_hydrometra_bytes(read_file(folder / file), file);
+      }
     } catch (const InputError& e) {
       result.issues.push_back({surface, "", e.what()});
       if (stop()) return result;

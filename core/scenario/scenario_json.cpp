@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "core/json_eigen.h"
 #include "core/json_numbers.h"
+#include "core/package/hydrometra_file.h"
 
 namespace viscera::core {
 
@@ -399,6 +400,7 @@ nlohmann::json scenario_to_json(const Scenario& s) {
                              {"body_kind", to_string(o.body_kind)},
                              {"surface", surface_file_of(o.id)}};
     if (o.body_kind != BodyKind::None) object["body"] = body_file_of(o.id);
+    if (!o.hydrometra.empty()) object["hydrometra"] = hydrometra_file_of(o.id);
     if (!o.layer_materials.empty()) {
       nlohmann::json layers = nlohmann::json::object();
       for (const auto& [label, material] : o.layer_materials)

@@ -7,6 +7,7 @@
 #include "core/mesh/surface_embedding.h"
 #include "core/mesh/surface_mesh.h"
 #include "core/mesh/tet_mesh.h"
+#include "core/scenario/hydrometra_states.h"
 
 namespace viscera::core {
 
@@ -37,6 +38,10 @@ struct SceneObject {
   /// Material of the tets carrying each tet label (wall layers, e.g. 1 endometrium,
   /// 2 myometrium); tets whose label is not listed use `material`.
   std::map<int, std::string> layer_materials;
+  /// The cavity's pre-computed pressure states (seed 000 §2.1), or empty: objects/<id>/
+  /// hydrometra.bin in a package. Filled by the authoring pipeline for an organ whose surface
+  /// marks a "cavity" (simulator/dynamics/hydrometra_sweep.h).
+  HydrometraStates hydrometra;
 
   bool operator==(const SceneObject&) const = default;
 };

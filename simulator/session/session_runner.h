@@ -11,6 +11,7 @@
 
 #include "core/scenario/scenario.h"
 #include "simulator/camera/surface_coverage.h"
+#include "simulator/dynamics/hydrometra_forces.h"
 #include "simulator/fluid/bleeding_sources.h"
 #include "simulator/fluid/cavity_flow.h"
 #include "simulator/fluid/distension_balance.h"
@@ -182,6 +183,9 @@ class SessionRunner {
   void flow_cavity(double dt);
   /// The cavity wall's current surface positions, m.
   std::vector<core::Vec3> cavity_wall() const;
+  /// The hydrometra of the cavity's organ (seed 000 §2.1), a term the world owns, or null when
+  /// the package holds no pressure states: balance_fluid() hands it the pressure each step.
+  HydrometraForces* hydrometra_ = nullptr;
 };
 
 }  // namespace viscera::sim

@@ -1,6 +1,7 @@
 // The session runner's operative part: the resectoscope's loop on the pathology bodies, the
 // bleeding its cuts start, the coagulation pedal, and the distension-fluid balance that carries
-// both (issue 17 §4, issue 18 §3-4). The rest of SessionRunner is in session_runner.cpp.
+// both (issue 17 §4, issue 18 §3-4), and the hydrometra the balance's pressure distends
+// (issue 18 §1). The rest of SessionRunner is in session_runner.cpp.
 #include <algorithm>
 #include <cstdio>
 #include <numbers>
@@ -123,6 +124,12 @@ void SessionRunner::balance_fluid(double dt) {
   if (bleeding) fluid_->set_openings(bleeding_->openings(world_.time()));
   const double used_before = fluid_->totals().used;
   fluid_->step(state_.inflow, state_.outflow, dt);
+  if (hydrometra_ != nullptr) {
+    // The next step interpolates the wall's distended shape at this pressure; a sleeping
+    // world wakes once that shape has moved as far as it sleeps below.
+    const double moved = hydrometra_->set_pressure(fluid_->pressure());
+    if (world_.asleep() && moved > options_.sleep_threshold) world_.wake();
+  }
   if (bleeding) bleeding_->record_step(fluid_->last_step_volumes());
   const double used = fluid_->totals().used - used_before;
   inflow_rate_ = used / dt;
@@ -151,6 +158,12 @@ void SessionRunner::start_cavity_flow(const core::Scenario& scenario) {
     if (marks == object->surface.vertex_attributes.end()) continue;
     cavity_body_ = model->body;
     cavity_object_ = object;
+    if (!object->hydrometra.empty()) {
+      // The wall distends with the balance's pressure from the next step on.
+      auto term = std::make_unique<HydrometraForces>(model, world_.state(), *object);
+      hydrometra_ = term.get();
+      world_.add_term(std::move(term));
+    }
     fluid::CavityFlowSettings settings;
     settings.sheath_radius = 0.5 * instrument_.shaft_diameter;
     cavity_ = std::make_unique<fluid::CavityFlow>(cavity_wall(), object->surface.triangles,

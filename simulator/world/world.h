@@ -125,6 +125,12 @@ class World {
   /// 0 disables (the default); sessions enable it.
   void set_sleep_threshold(double threshold) { sleep_threshold_ = threshold; }
   bool asleep() const { return asleep_; }
+  /// Wakes a sleeping world: something outside the terms' view moved (e.g. the hydrometra's
+  /// target shape after a pressure change), so the next step integrates again.
+  void wake() {
+    asleep_ = false;
+    calm_steps_ = 0;
+  }
   static constexpr int kCalmStepsToSleep = 200;
 
   /// Replaces the topology of `body` (cutting): its node range, rest model and every cache that

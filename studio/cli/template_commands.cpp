@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "core/package/scenario_package.h"
+#include "simulator/dynamics/hydrometra_sweep.h"
 #include "studio/cli/command_output.h"
 #include "studio/cli/terminal_progress.h"
 #include "templates/template_catalog.h"
@@ -55,8 +56,10 @@ void list_templates(bool json) {
 
 void create_patient(const NewOptions& options) {
   TerminalProgress bar;
-  const core::Scenario scenario = templates::build_from_template(
+  core::Scenario scenario = templates::build_from_template(
       options.template_name, parse_settings(options.settings), options.seed, bar.progress());
+  // Pipeline step: the cavity's pressure states (seed 000 §2.1) for a scenario with a hydrometra.
+  sim::add_hydrometra_states(scenario, bar.progress());
   core::write_package(scenario, options.output, bar.progress());
   if (options.json) {
     print_json({{"package", std::filesystem::absolute(options.output).string()},

@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "core/random.h"
+#include "simulator/dynamics/hydrometra_sweep.h"
 #include "templates/generator/patient_seed.h"
 #include "templates/generator/simulation_check.h"
 #include "templates/generator/variant_generator.h"
@@ -105,6 +106,8 @@ Variant from_scenario(const core::Scenario& base, const VariantRequest& request,
     draw.scenario.metadata.name =
         (base.metadata.name.empty() ? std::string("scenario") : base.metadata.name) + " variant " +
         std::to_string(k);
+    // The variation moved the wall: its pressure states are computed again (seed 000 §2.1).
+    if (variant.valid) sim::add_hydrometra_states(draw.scenario, core::Progress::none());
     variant.scenario = std::move(draw.scenario);
     if (variant.valid) break;
   }

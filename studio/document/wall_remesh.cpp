@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "core/mesh/surface_embedding.h"
 #include "core/meshing/tet_mesher.h"
+#include "simulator/dynamics/hydrometra_sweep.h"
 #include "textures/scenario_baking.h"
 
 namespace viscera::studio {
@@ -122,6 +123,10 @@ RemeshedHost remesh_around_holes(const core::Scenario& scenario, const std::stri
     }
     rebuilt.connections.push_back(std::move(moved));
   }
+  // The old body's pressure states do not fit the new one: the sweep runs again (seed 000 §2.1).
+  if (!host.hydrometra.empty())
+    rebuilt.object.hydrometra =
+        sim::sweep_hydrometra(rebuilt.object, scenario.materials, {}, progress);
   return rebuilt;
 }
 

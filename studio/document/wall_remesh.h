@@ -26,7 +26,9 @@ struct RemeshedHost {
 /// already holds. Carried over from the old body by position:
 /// - each new tet takes the layer label of the old tet holding its centroid;
 /// - a new node is fixed when the corner nearest to it of the old tet holding it is fixed;
-/// - each host knot of a connection moves to the new node nearest to it.
+/// - each host knot of a connection moves to the new node nearest to it;
+/// - a host with hydrometra pressure states gets them computed again for the new body
+///   (simulator/dynamics/hydrometra_sweep.h).
 /// Masses are lumped per tet with the density of the tet's layer material (the object's
 /// material for unlisted labels; the old body's mean density when the scenario lacks it), kg.
 /// The new body's first nodes are the welded surface's vertices, then each hole's.

@@ -14,6 +14,7 @@
 #include "core/image/downsample.h"
 #include "core/materials/shipped_materials.h"
 #include "importers/volume/volume_reader.h"
+#include "simulator/dynamics/hydrometra_sweep.h"
 #include "studio/document/document_commands.h"
 #include "studio/document/view_state.h"
 #include "studio/ui/background_task.h"
@@ -197,6 +198,8 @@ bool MainWindow::new_from_template(const std::string& name,
   core::Scenario scenario;
   if (!run(tr("Building %1").arg(QString::fromStdString(name)), [&](core::Progress& progress) {
         scenario = templates::build_from_template(name, overrides, seed, progress);
+        // The same pipeline step as `viscera new`: the hydrometra's pressure states.
+        sim::add_hydrometra_states(scenario, progress);
       })) {
     return false;
   }

@@ -8,6 +8,7 @@
 #include "core/package/scenario_package.h"
 #include "core/random.h"
 #include "core/version.h"
+#include "simulator/dynamics/hydrometra_sweep.h"
 #include "templates/generator/batch_share.h"
 #include "templates/generator/patient_seed.h"
 #include "templates/variability/parameter_distribution.h"
@@ -62,6 +63,9 @@ GeneratedPatient VariantGenerator::generate(std::uint64_t k, core::Progress& pro
       reject(failure.substr(0, colon), failure.substr(colon + 2));
       continue;
     }
+    // Pipeline step of every valid patient: the cavity's pressure states (seed 000 §2.1),
+    // without stages of its own (the batch's progress counts patients, as build() above).
+    sim::add_hydrometra_states(scenario, core::Progress::none());
     scenario.provenance.template_name = template_.name();
     scenario.provenance.template_version = template_.version();
     scenario.provenance.seed = build_seed;

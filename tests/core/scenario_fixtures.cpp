@@ -62,6 +62,15 @@ core::Scenario full_scenario() {
   organ.surface.uvs = {{0, 0}, {1, 0}, {0, 1}, {0.5, 0.5}};
   organ.surface.vertex_attributes["wall_thickness"] = {0.01, 0.011, 0.012, 0.013};
   organ.embedding = core::embed_points(organ.surface.vertices, organ.body);
+  // Three pressure states of the hydrometra (seed 000 §2.1), values that do not round trip
+  // through text: the binary file must keep every bit.
+  organ.hydrometra.pressures = {0.0, 1000.0 / 3.0, 2000.0};
+  organ.hydrometra.node_count = static_cast<int>(organ.body.nodes.size());
+  organ.hydrometra.residual = 1e-7 / 3.0;
+  for (int k = 0; k < 3; ++k)
+    for (int n = 0; n < organ.hydrometra.node_count; ++n)
+      organ.hydrometra.displacements.push_back(core::Vec3(0.1 / 3.0, -n * 1e-3 / 7.0, k * 0.01) *
+                                               static_cast<double>(k));
   s.objects.push_back(organ);
 
   core::SceneObject polyp;

@@ -81,6 +81,7 @@ TEST_P(PackageRoundTrip, keeps_every_field_of_every_part) {
     EXPECT_EQ(back.objects[i].surface, original.objects[i].surface) << i;
     EXPECT_EQ(back.objects[i].body, original.objects[i].body) << i;
     EXPECT_EQ(back.objects[i].embedding, original.objects[i].embedding) << i;
+    EXPECT_EQ(back.objects[i].hydrometra, original.objects[i].hydrometra) << i;
   }
   EXPECT_EQ(back, original);
   EXPECT_EQ(entries_of(dir), std::vector<std::string>{path.filename().string()});
@@ -94,8 +95,8 @@ TEST_P(PackageRoundTrip, writing_twice_gives_identical_bytes) {
   if (GetParam() == ".vscz") {
     EXPECT_EQ(read_text(dir / "a.vscz"), read_text(dir / "b.vscz"));
   } else {
-    for (const auto& file :
-         {"manifest.json", "objects/uterus/surface.vtp", "objects/uterus/body.vtu"}) {
+    for (const auto& file : {"manifest.json", "objects/uterus/surface.vtp",
+                             "objects/uterus/body.vtu", "objects/uterus/hydrometra.bin"}) {
       EXPECT_EQ(read_text(dir / "a.vscene" / file), read_text(dir / "b.vscene" / file)) << file;
     }
   }

@@ -217,23 +217,29 @@ core::HydrometraStates sweep_hydrometra(const core::SceneObject& object,
     return settings.states;
   };
 
+  // The states 0 … count − 1 of a sweep that stopped at state `count` (each an equilibrium).
+  const auto converged_prefix = [n](core::HydrometraStates partial, int count) {
+    partial.pressures.resize(static_cast<std::size_t>(count));
+    partial.displacements.resize(static_cast<std::size_t>(count) * n);
+    return partial;
+  };
   core::HydrometraStates states;
   int reached = sweep(settings.max_pressure, states);
   if (reached == settings.states) return states;
-  if (reached < 2)
-    throw core::SimulationError("the hydrometra sweep found no equilibrium at " +
-                                    std::to_string(states.pressures[1]) + " Pa",
-                                object.id, -1, step, "the wall is too soft for any distension");
   // The wall gives way between state reached − 1 and reached: the states span the range it
   // holds, so they sweep again, evenly up to the last equilibrium found (again, should the
-  // finer states meet the limit earlier).
+  // finer states meet the limit earlier). A wall that holds no pressure at all, or whose limit
+  // keeps moving, keeps the equilibria it did reach — at the least its rest shape — so a
+  // patient is never refused for its hydrometra.
+  core::HydrometraStates best = converged_prefix(states, std::max(reached, 1));
   for (int pass = 0; reached < settings.states; ++pass) {
-    if (reached < 2 || pass == 3)
-      throw core::SimulationError(
-          "the hydrometra sweep found no equilibrium at " +
-              std::to_string(states.pressures[static_cast<std::size_t>(std::max(reached, 1))]) +
-              " Pa",
-          object.id, -1, step, "the wall is too soft for any distension");
+    if (reached < 2 || pass == 3) {
+      core::logger()->warn(
+          "hydrometra of {}: the wall holds no equilibrium beyond {:.1f} Pa in this model (too "
+          "soft for distension), so it keeps {} state(s) up to there",
+          object.id, best.pressures.back(), best.pressures.size());
+      return best;
+    }
     const double limit =
         settings.limit_fraction * states.pressures[static_cast<std::size_t>(reached) - 1];
     core::logger()->warn(
@@ -241,6 +247,9 @@ core::HydrometraStates sweep_hydrometra(const core::SceneObject& object,
         "stiffen with strain), so its {} states span 0 to {:.0f} Pa, short of that limit",
         object.id, states.pressures[static_cast<std::size_t>(reached)], settings.states, limit);
     reached = sweep(limit, states);
+    if (reached > 1 &&
+        states.pressures[static_cast<std::size_t>(reached) - 1] > best.pressures.back())
+      best = converged_prefix(states, reached);
   }
   return states;
 }

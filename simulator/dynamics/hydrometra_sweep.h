@@ -59,8 +59,10 @@ struct HydrometraSweepSettings {
 
 /// The hydrometra states of `object` (a tet body whose surface marks a "cavity") with the
 /// materials of its scenario. Throws core::UsageError for an object without cavity or tets or
-/// bad settings, core::InputError for unknown materials, core::SimulationError when the wall
-/// holds no pressure of the first states, core::CancelledError when cancelled.
+/// bad settings, core::InputError for unknown materials, core::CancelledError when cancelled.
+/// A wall that holds no pressure beyond its first states keeps the equilibria it reached (at
+/// the least its rest shape, one state at 0 Pa), with a warning: a patient is never refused
+/// for its hydrometra.
 core::HydrometraStates sweep_hydrometra(const core::SceneObject& object,
                                         const std::map<std::string, core::Material>& materials,
                                         const HydrometraSweepSettings& settings = {},

@@ -31,7 +31,7 @@ TEST(Procedure, ships_the_procedures_of_issues_8_and_17) {
             "tubal-orifice-right");
   EXPECT_EQ(hysteroscopy.steps[1].substeps[2].tasks[0].parameters["landmark"],
             "tubal-orifice-left");
-  // Sterilisation: grasp, clip twice, cut.
+  // Sterilisation: grasp, coagulate, clip twice, cut.
   const ProcedureDefinition& sterilisation =
       procedure_definition("laparoscopic-tubal-sterilisation");
   std::vector<std::string> kinds;
@@ -39,8 +39,8 @@ TEST(Procedure, ships_the_procedures_of_issues_8_and_17) {
   apply_procedure(session, sterilisation);
   for (const TaskSpec* task : all_tasks(session))
     kinds.push_back(task->kind);
-  EXPECT_EQ(kinds, (std::vector<std::string>{"centre-target", "centre-target", "grasp", "clip",
-                                             "clip", "cut"}));
+  EXPECT_EQ(kinds, (std::vector<std::string>{"centre-target", "centre-target", "grasp", "coagulate",
+                                             "clip", "clip", "cut"}));
   EXPECT_THROW(procedure_definition("appendectomy"), UsageError);
 }
 

@@ -81,6 +81,10 @@ int ViscousDiffusion::diffuse(FlowGrid& grid, const DiffusionSettings& settings)
     const int m = static_cast<int>(c.faces.size());
     if (m == 0) continue;
     std::vector<double>& u = grid.velocity(axis);
+    if (alpha <= settings.explicit_limit) {
+      step_explicitly(c, u, alpha, threads);
+      continue;
+    }
     for (auto* v : {&x_, &b_, &r_, &z_, &p_, &q_})
       v->assign(static_cast<std::size_t>(m) + 1, 0.0);
     const auto diagonal = [&](int v) {
@@ -172,6 +176,33 @@ int ViscousDiffusion::diffuse(FlowGrid& grid, const DiffusionSettings& settings)
     });
   }
   return iterations;
+}
+
+void ViscousDiffusion::step_explicitly(const Component& c, std::vector<double>& u, double alpha,
+                                       int threads) {
+  const int m = static_cast<int>(c.faces.size());
+  // The unknowns' old values with the zero slot m for missing neighbours, then the sweep.
+  x_.resize(static_cast<std::size_t>(m) + 1);
+  x_[static_cast<std::size_t>(m)] = 0.0;
+  for_each_chunk(m, kChunk, threads, [&](int begin, int end) {
+    for (int v = begin; v < end; ++v)
+      x_[static_cast<std::size_t>(v)] =
+          u[static_cast<std::size_t>(c.faces[static_cast<std::size_t>(v)])];
+  });
+  for_each_chunk(m, kChunk, threads, [&](int begin, int end) {
+    for (int v = begin; v < end; ++v) {
+      const auto vi = static_cast<std::size_t>(v);
+      const auto& n = c.next[vi];
+      double around = x_[static_cast<std::size_t>(n[0])] + x_[static_cast<std::size_t>(n[1])] +
+                      x_[static_cast<std::size_t>(n[2])] + x_[static_cast<std::size_t>(n[3])] +
+                      x_[static_cast<std::size_t>(n[4])] + x_[static_cast<std::size_t>(n[5])];
+      for (int t = c.boundary_start[vi]; t < c.boundary_start[vi + 1]; ++t) {
+        const auto& [g, factor] = c.boundary[static_cast<std::size_t>(t)];
+        around += factor * u[static_cast<std::size_t>(g)];
+      }
+      u[static_cast<std::size_t>(c.faces[vi])] = x_[vi] + alpha * (around - c.weight[vi] * x_[vi]);
+    }
+  });
 }
 
 int diffuse(FlowGrid& grid, const DiffusionSettings& settings) {

@@ -31,12 +31,20 @@ class FaceSampler {
   /// smallest and largest of the eight corners used.
   double operator()(const double* values, const core::Vec3& point, double* low = nullptr,
                     double* high = nullptr) const {
+    return at_index(values, point[0] * inverse_h_ - offset_[0], point[1] * inverse_h_ - offset_[1],
+                    point[2] * inverse_h_ - offset_[2], low, high);
+  }
+
+  /// The same at face-index coordinates (x, y, z): face (i,j,k) of this component sits at
+  /// (i, j, k) — what the advection's back-traces produce without going through metres.
+  double at_index(const double* values, double x, double y, double z, double* low = nullptr,
+                  double* high = nullptr) const {
+    const double u[3] = {x, y, z};
     int base = 0;
     double t[3];
     for (int a = 0; a < 3; ++a) {
       // Written so that a NaN coordinate lands on 0 rather than on an index of no face.
-      const double u = point[a] * inverse_h_ - offset_[a];
-      const double c = u > 0.0 ? (u < upper_[a] ? u : upper_[a]) : 0.0;
+      const double c = u[a] > 0.0 ? (u[a] < upper_[a] ? u[a] : upper_[a]) : 0.0;
       const int lo = std::min(static_cast<int>(c), last_lower_[a]);
       t[a] = stride_[a] != 0 ? c - lo : 0.0;
       base += lo * stride_[a];

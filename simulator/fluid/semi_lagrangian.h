@@ -7,12 +7,30 @@
 /// MacCormack's predictor–corrector as Selle et al. 2008 apply it to semi-Lagrangian steps: a
 /// forward and a backward trace estimate the first-order error, half of it is corrected, and the
 /// result is clamped to the range of the values it was interpolated from.
+///
+/// The traces run line by line in face-index coordinates: each line's displacements (the whole
+/// velocity at its faces times Δt/h, in cells) come first from contiguous loads the compiler
+/// vectorises, then the interpolations.
+
+#include <array>
+#include <vector>
 
 #include "simulator/fluid/flow_grid.h"
 
 namespace viscera::sim::fluid {
 
-/// Advects every component of `grid`'s active face velocities through `time_step` s.
+/// The advection for repeated steps: keeps its scratch arrays between steps.
+class VelocityAdvection {
+ public:
+  /// Advects every component of `grid`'s active face velocities through `time_step` s.
+  void advect(FlowGrid& grid, double time_step, bool second_order, int threads = 0);
+
+ private:
+  std::array<std::vector<double>, 3> advected_;
+  std::vector<double> low_, high_, corrected_;
+};
+
+/// One advection with fresh scratch arrays.
 void advect_velocity(FlowGrid& grid, double time_step, bool second_order, int threads = 0);
 
 }  // namespace viscera::sim::fluid

@@ -15,7 +15,7 @@ FlowStepReport FlowSolver::step(FlowGrid& grid, const FlowSettings& settings) {
   if (!(settings.viscosity >= 0.0) || !std::isfinite(settings.viscosity))
     throw core::UsageError("the flow's viscosity must be zero or positive, in m²/s");
   FlowStepReport report;
-  advect_velocity(grid, settings.time_step, settings.second_order, settings.threads);
+  advection_.advect(grid, settings.time_step, settings.second_order, settings.threads);
   DiffusionSettings diffusion;
   diffusion.viscosity = settings.viscosity;
   diffusion.time_step = settings.time_step;

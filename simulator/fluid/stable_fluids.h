@@ -8,6 +8,7 @@
 
 #include "simulator/fluid/flow_grid.h"
 #include "simulator/fluid/pressure_projection.h"
+#include "simulator/fluid/semi_lagrangian.h"
 #include "simulator/fluid/viscous_diffusion.h"
 
 namespace viscera::sim::fluid {
@@ -31,8 +32,8 @@ struct FlowStepReport {
   double max_divergence = 0.0;  ///< 1/s, after the step
 };
 
-/// The flow solver for repeated steps: keeps the viscous step's face lists and the projection's
-/// multigrid hierarchy while the grid's labels stay.
+/// The flow solver for repeated steps: keeps the advection's scratch arrays, the viscous step's
+/// face lists and the projection's multigrid hierarchy while the grid's labels stay.
 class FlowSolver {
  public:
   /// Advances `grid`'s velocity and pressure by settings.time_step. The faces must be up to date
@@ -41,6 +42,7 @@ class FlowSolver {
   FlowStepReport step(FlowGrid& grid, const FlowSettings& settings);
 
  private:
+  VelocityAdvection advection_;
   ViscousDiffusion diffusion_;
   PressureProjector projector_;
 };

@@ -12,7 +12,7 @@ constexpr std::uint8_t kSolid = static_cast<std::uint8_t>(FlowCell::Solid);
 constexpr std::uint8_t kFluid = static_cast<std::uint8_t>(FlowCell::Fluid);
 constexpr std::uint8_t kOpen = static_cast<std::uint8_t>(FlowCell::Open);
 
-constexpr double kJacobiWeight = 2.0 / 3.0;
+constexpr float kJacobiWeight = 2.0f / 3.0f;
 constexpr int kSweeps = 2;           ///< Jacobi sweeps before and after each coarse correction
 constexpr int kCoarsestSweeps = 30;  ///< on a level of at most 3 cells per axis
 
@@ -20,13 +20,13 @@ constexpr int kCoarsestSweeps = 30;  ///< on a level of at most 3 cells per axis
 /// neighbour, with weights ¾ and ¼; an axis that is not halved maps i to itself with weight 1.
 struct AxisTransfer {
   int parent, neighbour;
-  double parent_weight, neighbour_weight;
+  float parent_weight, neighbour_weight;
 };
 
 AxisTransfer axis_transfer(int i, bool halved) {
-  if (!halved) return {i, i, 1.0, 0.0};
+  if (!halved) return {i, i, 1.0f, 0.0f};
   const int parent = i / 2;
-  return {parent, i % 2 == 0 ? parent - 1 : parent + 1, 0.75, 0.25};
+  return {parent, i % 2 == 0 ? parent - 1 : parent + 1, 0.75f, 0.25f};
 }
 
 /// Index of the largest of `values` (lines' maxima) — the largest residual.
@@ -75,7 +75,7 @@ MultigridPoisson::MultigridPoisson(const FlowGrid& grid) : planar_(grid.planar()
   for (int k = 0, c = 0; k < finest.nz; ++k)
     for (int j = 0; j < finest.ny; ++j)
       for (int i = 0; i < finest.nx; ++i, ++c)
-        unknown_[static_cast<std::size_t>(c)] = finest.inverse_diagonal[finest.at(i, j, k)] != 0.0;
+        unknown_[static_cast<std::size_t>(c)] = finest.inverse_diagonal[finest.at(i, j, k)] != 0.0f;
   // Each fine cell's renormalisation over the parents that are not solid.
   for (std::size_t l = 0; l + 1 < levels_.size(); ++l) {
     Level& fine = levels_[l];
@@ -84,10 +84,10 @@ MultigridPoisson::MultigridPoisson(const FlowGrid& grid) : planar_(grid.planar()
       for (int j = 0; j < fine.ny; ++j)
         for (int i = 0; i < fine.nx; ++i) {
           const std::size_t f = fine.at(i, j, k);
-          if (fine.inverse_diagonal[f] == 0.0) continue;
+          if (fine.inverse_diagonal[f] == 0.0f) continue;
           const AxisTransfer tx = axis_transfer(i, true), ty = axis_transfer(j, true),
                              tz = axis_transfer(k, !planar_);
-          double total = 0.0;
+          float total = 0.0f;
           for (const auto& [ci, wi] : {std::pair{tx.parent, tx.parent_weight},
                                        std::pair{tx.neighbour, tx.neighbour_weight}})
             for (const auto& [cj, wj] : {std::pair{ty.parent, ty.parent_weight},
@@ -95,11 +95,12 @@ MultigridPoisson::MultigridPoisson(const FlowGrid& grid) : planar_(grid.planar()
               for (const auto& [ck, wk] : {std::pair{tz.parent, tz.parent_weight},
                                            std::pair{tz.neighbour, tz.neighbour_weight}})
                 if (coarse.non_solid[coarse.at(ci, cj, ck)] != 0) total += wi * wj * wk;
-          fine.prolongation_scale[f] = total > 0.0 ? 1.0 / total : 0.0;
+          fine.prolongation_scale[f] = total > 0.0f ? 1.0f / total : 0.0f;
         }
   }
   const std::size_t n = levels_.front().size();
-  p_.assign(n, 0.0), r_.assign(n, 0.0), d_.assign(n, 0.0), q_.assign(n, 0.0);
+  for (auto* v : {&rhs_, &p_, &r_, &d_, &q_, &z_})
+    v->assign(n, 0.0);
 }
 
 void MultigridPoisson::build_level(Level& level, int nx, int ny, int nz,
@@ -112,12 +113,12 @@ void MultigridPoisson::build_level(Level& level, int nx, int ny, int nz,
     for (int j = 0; j < ny; ++j)
       for (int i = 0; i < nx; ++i)
         padded[level.at(i, j, k)] = labels[static_cast<std::size_t>(i + nx * (j + ny * k))];
-  level.diagonal.assign(size, 0.0);
-  level.inverse_diagonal.assign(size, 0.0);
+  level.diagonal.assign(size, 0.0f);
+  level.inverse_diagonal.assign(size, 0.0f);
   level.non_solid.assign(size, 0);
-  level.prolongation_scale.assign(size, 0.0);
-  level.x.assign(size, 0.0), level.b.assign(size, 0.0), level.r.assign(size, 0.0);
-  level.scratch.assign(size, 0.0);
+  level.prolongation_scale.assign(size, 0.0f);
+  level.x.assign(size, 0.0f), level.b.assign(size, 0.0f), level.r.assign(size, 0.0f);
+  level.scratch.assign(size, 0.0f);
   const std::size_t sx = static_cast<std::size_t>(level.sx), sxy = sx * level.sy;
   for (int k = 0; k < nz; ++k)
     for (int j = 0; j < ny; ++j)
@@ -129,8 +130,8 @@ void MultigridPoisson::build_level(Level& level, int nx, int ny, int nz,
         for (const std::size_t n : {c - 1, c + 1, c - sx, c + sx, c - sxy, c + sxy})
           sides += padded[n] != kSolid;
         if (sides == 0) continue;  // a fluid pocket sealed by solid cells: no equation
-        level.diagonal[c] = sides;
-        level.inverse_diagonal[c] = 1.0 / sides;
+        level.diagonal[c] = static_cast<Real>(sides);
+        level.inverse_diagonal[c] = 1.0f / static_cast<Real>(sides);
         level.non_solid[c] = 1;
       }
 }
@@ -142,11 +143,11 @@ void MultigridPoisson::smooth(Level& level, int sweeps, bool from_zero, int thre
   const auto nx = static_cast<std::size_t>(level.nx);
   for (int sweep = 0; sweep < sweeps; ++sweep) {
     const bool first = from_zero && sweep == 0;
-    const double* __restrict x = level.x.data();
-    const double* __restrict b = level.b.data();
-    const double* __restrict inverse = level.inverse_diagonal.data();
-    const double* __restrict diagonal = level.diagonal.data();
-    double* __restrict out = level.scratch.data();
+    const Real* __restrict x = level.x.data();
+    const Real* __restrict b = level.b.data();
+    const Real* __restrict inverse = level.inverse_diagonal.data();
+    const Real* __restrict diagonal = level.diagonal.data();
+    Real* __restrict out = level.scratch.data();
     for_each_line(level.ny, level.nz, threads, [&](int j, int k) {
       const std::size_t row = level.at(0, j, k);
       if (first) {
@@ -155,8 +156,8 @@ void MultigridPoisson::smooth(Level& level, int sweeps, bool from_zero, int thre
         return;
       }
       for (std::size_t c = row; c < row + nx; ++c) {
-        const double ax = diagonal[c] * x[c] -
-                          (x[c - 1] + x[c + 1] + x[c - sx] + x[c + sx] + x[c - sxy] + x[c + sxy]);
+        const Real ax = diagonal[c] * x[c] -
+                        (x[c - 1] + x[c + 1] + x[c - sx] + x[c + sx] + x[c - sxy] + x[c + sxy]);
         out[c] = x[c] + kJacobiWeight * inverse[c] * (b[c] - ax);
       }
     });
@@ -167,34 +168,41 @@ void MultigridPoisson::smooth(Level& level, int sweeps, bool from_zero, int thre
 void MultigridPoisson::residual(Level& level, int threads) {
   for_each_line(level.ny, level.nz, threads, [&](int j, int k) {
     const std::size_t row = level.at(0, j, k);
+    const auto sx = static_cast<std::size_t>(level.sx),
+               sxy = sx * static_cast<std::size_t>(level.sy);
+    const Real* __restrict x = level.x.data();
+    const Real* __restrict b = level.b.data();
+    const Real* __restrict diagonal = level.diagonal.data();
+    const Real* __restrict scale = level.prolongation_scale.data();  // 0 off the unknowns
+    Real* __restrict r = level.r.data();
     for (std::size_t c = row; c < row + static_cast<std::size_t>(level.nx); ++c)
-      level.r[c] = level.inverse_diagonal[c] == 0.0
-                       ? 0.0
-                       : (level.b[c] - apply(level, level.x, c)) * level.prolongation_scale[c];
+      r[c] = (b[c] - (diagonal[c] * x[c] -
+                      (x[c - 1] + x[c + 1] + x[c - sx] + x[c + sx] + x[c - sxy] + x[c + sxy]))) *
+             scale[c];
   });
 }
 
 void MultigridPoisson::restrict_residual(const Level& fine, Level& coarse, int threads) {
   // fine.r already carries each fine cell's renormalisation: b_C = s Σ_f w_fC r_f / W_f.
-  constexpr double kWeights[4] = {0.25, 0.75, 0.75, 0.25};
-  const double scale = restriction_scale_;
+  constexpr Real kWeights[4] = {0.25f, 0.75f, 0.75f, 0.25f};
+  const auto scale = static_cast<Real>(restriction_scale_);
   const int z_taps = planar_ ? 1 : 4;
   for_each_line(coarse.ny, coarse.nz, threads, [&](int J, int K) {
     for (int I = 0; I < coarse.nx; ++I) {
       const std::size_t C = coarse.at(I, J, K);
-      if (coarse.inverse_diagonal[C] == 0.0) {
-        coarse.b[C] = 0.0;
+      if (coarse.inverse_diagonal[C] == 0.0f) {
+        coarse.b[C] = 0.0f;
         continue;
       }
-      double sum = 0.0;
+      Real sum = 0.0f;
       for (int c = 0; c < z_taps; ++c) {
         const int k = planar_ ? K : 2 * K - 1 + c;
-        const double wk = planar_ ? 1.0 : kWeights[c];
+        const Real wk = planar_ ? 1.0f : kWeights[c];
         for (int b = 0; b < 4; ++b) {
           const std::size_t row = fine.at(2 * I - 1, 2 * J - 1 + b, k);
-          const double wjk = wk * kWeights[b];
-          sum += wjk * (0.25 * fine.r[row] + 0.75 * fine.r[row + 1] + 0.75 * fine.r[row + 2] +
-                        0.25 * fine.r[row + 3]);
+          const Real wjk = wk * kWeights[b];
+          sum += wjk * (0.25f * fine.r[row] + 0.75f * fine.r[row + 1] + 0.75f * fine.r[row + 2] +
+                        0.25f * fine.r[row + 3]);
         }
       }
       coarse.b[C] = scale * sum;
@@ -208,26 +216,25 @@ void MultigridPoisson::prolong_add(const Level& coarse, Level& fine, int threads
   // instead of eight. Off the unknowns the scale is 0 and x stays 0.
   const auto width = static_cast<std::size_t>(coarse.nx + 2);  // padded indices −1 … nx
   for_each_line(fine.ny, fine.nz, threads, [&](int j, int k) {
-    thread_local std::vector<double> blend;
+    thread_local std::vector<Real> blend;
     blend.resize(width);
     const AxisTransfer ty = axis_transfer(j, true), tz = axis_transfer(k, !planar_);
-    const double* y0z0 = &coarse.x[coarse.at(-1, ty.parent, tz.parent)];
-    const double* y1z0 = &coarse.x[coarse.at(-1, ty.neighbour, tz.parent)];
-    const double* y0z1 = &coarse.x[coarse.at(-1, ty.parent, tz.neighbour)];
-    const double* y1z1 = &coarse.x[coarse.at(-1, ty.neighbour, tz.neighbour)];
-    const double a = ty.parent_weight * tz.parent_weight,
-                 b = ty.neighbour_weight * tz.parent_weight,
-                 c = ty.parent_weight * tz.neighbour_weight,
-                 d = ty.neighbour_weight * tz.neighbour_weight;
+    const Real* y0z0 = &coarse.x[coarse.at(-1, ty.parent, tz.parent)];
+    const Real* y1z0 = &coarse.x[coarse.at(-1, ty.neighbour, tz.parent)];
+    const Real* y0z1 = &coarse.x[coarse.at(-1, ty.parent, tz.neighbour)];
+    const Real* y1z1 = &coarse.x[coarse.at(-1, ty.neighbour, tz.neighbour)];
+    const Real a = ty.parent_weight * tz.parent_weight, b = ty.neighbour_weight * tz.parent_weight,
+               c = ty.parent_weight * tz.neighbour_weight,
+               d = ty.neighbour_weight * tz.neighbour_weight;
     for (std::size_t I = 0; I < width; ++I)
       blend[I] = a * y0z0[I] + b * y1z0[I] + c * y0z1[I] + d * y1z1[I];
     const std::size_t row = fine.at(0, j, k);
-    double* x = &fine.x[row];
-    const double* scale = &fine.prolongation_scale[row];
+    Real* x = &fine.x[row];
+    const Real* scale = &fine.prolongation_scale[row];
     for (int i = 0; i < fine.nx; ++i) {
       const auto parent = static_cast<std::size_t>(i / 2 + 1);
       const std::size_t other = i % 2 == 0 ? parent - 1 : parent + 1;
-      x[i] += scale[i] * (0.75 * blend[parent] + 0.25 * blend[other]);
+      x[i] += scale[i] * (0.75f * blend[parent] + 0.25f * blend[other]);
     }
   });
 }
@@ -246,14 +253,14 @@ void MultigridPoisson::vcycle(std::size_t l, int threads) {
   smooth(level, kSweeps, false, threads);
 }
 
-void MultigridPoisson::remove_mean(std::vector<double>& v, const Level& level) const {
+void MultigridPoisson::remove_mean(std::vector<Real>& v, const Level& level) const {
   double sum = 0.0, count = 0.0;
   for (std::size_t c = 0; c < level.size(); ++c)
-    if (level.inverse_diagonal[c] != 0.0) sum += v[c], count += 1.0;
+    if (level.inverse_diagonal[c] != 0.0f) sum += static_cast<double>(v[c]), count += 1.0;
   if (count == 0.0) return;
-  const double mean = sum / count;
+  const auto mean = static_cast<Real>(sum / count);
   for (std::size_t c = 0; c < level.size(); ++c)
-    if (level.inverse_diagonal[c] != 0.0) v[c] -= mean;
+    if (level.inverse_diagonal[c] != 0.0f) v[c] -= mean;
 }
 
 PoissonSolveResult MultigridPoisson::solve(const std::vector<double>& b, std::vector<double>& p,
@@ -262,52 +269,57 @@ PoissonSolveResult MultigridPoisson::solve(const std::vector<double>& b, std::ve
   const int threads = settings.threads;
   const std::size_t nx = static_cast<std::size_t>(fine.nx);
   line_largest_.resize(static_cast<std::size_t>(fine.ny * fine.nz));
-  // Into the padded layout: p from the guess, the level's b from `b`, both 0 off the unknowns.
+  // Into the padded layout: p from the guess and the right-hand side, both 0 off the unknowns.
   for_each_line(fine.ny, fine.nz, threads, [&](int j, int k) {
     const std::size_t row = fine.at(0, j, k);
     const std::size_t cell = static_cast<std::size_t>(fine.nx * (j + fine.ny * k));
     for (std::size_t i = 0; i < nx; ++i) {
-      const bool unknown = fine.inverse_diagonal[row + i] != 0.0;
+      const bool unknown = fine.inverse_diagonal[row + i] != 0.0f;
       p_[row + i] = unknown ? p[cell + i] : 0.0;
-      fine.b[row + i] = unknown ? b[cell + i] : 0.0;
+      rhs_[row + i] = unknown ? b[cell + i] : 0.0;
     }
   });
-  const std::vector<double> rhs = fine.b;  // the V-cycle reuses fine.b
   const auto line_index = [&](int j, int k) { return static_cast<std::size_t>(j + fine.ny * k); };
   // r = b − A p, and the line's largest |r|.
   for_each_line(fine.ny, fine.nz, threads, [&](int j, int k) {
     const std::size_t row = fine.at(0, j, k);
     double m = 0.0;
     for (std::size_t c = row; c < row + nx; ++c) {
-      r_[c] = fine.inverse_diagonal[c] == 0.0 ? 0.0 : rhs[c] - apply(fine, p_, c);
+      r_[c] = fine.inverse_diagonal[c] == 0.0f ? 0.0 : rhs_[c] - apply(fine, p_, c);
       m = std::max(m, std::abs(r_[c]));
     }
     line_largest_[line_index(j, k)] = m;
   });
   double largest = largest_of(line_largest_);
-  // z = M r (one V-cycle) into fine.x; returns r·z.
+  // z = M r (one single-precision V-cycle); returns r·z.
   const auto precondition = [&] {
-    fine.b = r_;
+    for_each_line(fine.ny, fine.nz, threads, [&](int j, int k) {
+      const std::size_t row = fine.at(0, j, k);
+      for (std::size_t c = row; c < row + nx; ++c)
+        fine.b[c] = static_cast<Real>(r_[c]);
+    });
     vcycle(0, threads);
     if (!has_open_) remove_mean(fine.x, fine);
     return sum_over_lines(fine.ny, fine.nz, threads, partials_, [&](int j, int k) {
       const std::size_t row = fine.at(0, j, k);
       double s = 0.0;
-      for (std::size_t c = row; c < row + nx; ++c)
-        s += r_[c] * fine.x[c];
+      for (std::size_t c = row; c < row + nx; ++c) {
+        z_[c] = static_cast<double>(fine.x[c]);
+        s += r_[c] * z_[c];
+      }
       return s;
     });
   };
   PoissonSolveResult result;
   if (largest > settings.residual_tolerance) {
     double rz = precondition();
-    d_ = fine.x;
+    d_ = z_;
     while (result.iterations < settings.max_iterations) {
       const double dq = sum_over_lines(fine.ny, fine.nz, threads, partials_, [&](int j, int k) {
         const std::size_t row = fine.at(0, j, k);
         double s = 0.0;
         for (std::size_t c = row; c < row + nx; ++c) {
-          q_[c] = fine.inverse_diagonal[c] == 0.0 ? 0.0 : apply(fine, d_, c);
+          q_[c] = fine.inverse_diagonal[c] == 0.0f ? 0.0 : apply(fine, d_, c);
           s += d_[c] * q_[c];
         }
         return s;
@@ -333,7 +345,7 @@ PoissonSolveResult MultigridPoisson::solve(const std::vector<double>& b, std::ve
       for_each_line(fine.ny, fine.nz, threads, [&](int j, int k) {
         const std::size_t row = fine.at(0, j, k);
         for (std::size_t c = row; c < row + nx; ++c)
-          d_[c] = fine.x[c] + beta * d_[c];
+          d_[c] = z_[c] + beta * d_[c];
       });
     }
   }

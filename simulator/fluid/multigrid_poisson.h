@@ -68,6 +68,7 @@ class MultigridPoisson {
     std::vector<std::uint8_t> non_solid;   ///< open, or an unknown: the transfers' support
     std::vector<Real> prolongation_scale;  ///< 1 / Σ trilinear weights over non-solid parents
     std::vector<Real> x, b, r, scratch;
+    std::vector<Real> restricted_x, restricted_xy;  ///< the restriction's partial sums into it
     std::size_t at(int i, int j, int k) const {
       return static_cast<std::size_t>((i + 1) + sx * ((j + 1) + sy * (k + 1)));
     }

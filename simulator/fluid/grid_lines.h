@@ -12,11 +12,16 @@
 
 namespace viscera::sim::fluid {
 
+/// Fewer lines than this run on the calling thread: the coarse multigrid levels (a few hundred
+/// cells) cost less than waking the other threads.
+inline constexpr int kParallelLines = 64;
+
 /// Calls `line(j, k)` for every j < `ny`, k < `nz`, in parallel on `threads` threads (0: all).
 template <typename Line>
 void for_each_line(int ny, int nz, int threads, const Line& line) {
   const int lines = ny * nz;
-#pragma omp parallel for schedule(static) num_threads(threads > 0 ? threads : omp_get_max_threads())
+#pragma omp parallel for schedule(static) \
+    num_threads(threads > 0 ? threads : omp_get_max_threads()) if (lines >= kParallelLines)
   for (int l = 0; l < lines; ++l)
     line(l % ny, l / ny);
 }
@@ -27,7 +32,8 @@ double sum_over_lines(int ny, int nz, int threads, std::vector<double>& partials
                       const Line& line) {
   const int lines = ny * nz;
   partials.resize(static_cast<std::size_t>(lines));
-#pragma omp parallel for schedule(static) num_threads(threads > 0 ? threads : omp_get_max_threads())
+#pragma omp parallel for schedule(static) \
+    num_threads(threads > 0 ? threads : omp_get_max_threads()) if (lines >= kParallelLines)
   for (int l = 0; l < lines; ++l)
     partials[static_cast<std::size_t>(l)] = line(l % ny, l / ny);
   double total = 0.0;

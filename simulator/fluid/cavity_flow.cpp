@@ -53,6 +53,7 @@ CavityFlow::CavityFlow(std::span<const core::Vec3> wall,
                          std::max(settings.margin, 1))),
       blood_(grid_),
       particles_(settings.particles, seed),
+      bubbles_(settings.bubbles, seed ^ 0xb0bb1e5ull),
       vortices_(settings.vortices, seed ^ 0x9e3779b97f4a7c15ull),
       wall_labelled_(wall.begin(), wall.end()) {
   if (settings.resolution < 4 || !(settings.interval > 0.0) || !(settings.relabel_motion > 0.0) ||
@@ -221,6 +222,20 @@ void CavityFlow::advance(double dt, const CavityInputs& inputs) {
     particles_.emit(birth, release.normal, release.speed, release.volume, grid_, blood_);
     released_ += release.volume;
   }
+  // Air comes in with the pump's fluid once the sheath's inflow cells are in the cavity.
+  if (inflow_cells_.empty()) {
+    bubbles_.admit(0.0, dt, core::Vec3::Zero(), grid_);
+  } else {
+    core::Vec3 inlet = core::Vec3::Zero();
+    for (const int c : inflow_cells_) {
+      const int i = c % grid_.nx(), j = (c / grid_.nx()) % grid_.ny(),
+                k = c / (grid_.nx() * grid_.ny());
+      inlet += grid_.origin() + h * core::Vec3(i + 0.5, j + 0.5, k + 0.5);
+    }
+    inlet /= static_cast<double>(inflow_cells_.size());
+    // Born a cell ahead of the shaft's end, in the fluid the jet enters.
+    bubbles_.admit(inputs.inflow_rate, dt, inlet + h * inputs.axis.normalized(), grid_);
+  }
   gathered_ += dt;
   inflow_volume_ += std::max(0.0, inputs.inflow_rate) * dt;
   if (gathered_ < settings_.interval * (1.0 - 1e-9)) return;
@@ -238,6 +253,7 @@ void CavityFlow::advance(double dt, const CavityInputs& inputs) {
                                 flow_steps_, "the pressure projection diverged on this labelling");
   blood_.advect(grid_, step);
   particles_.advance(grid_, &vortices_, blood_, step);
+  bubbles_.advance(grid_, inputs.up, step);
   blood_.spill(grid_);
   ++flow_steps_;
 }

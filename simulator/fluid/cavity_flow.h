@@ -23,6 +23,8 @@
 ///   continuous-flow sheath draws fluid back (beside its last 5 mm while only the tip is in the
 ///   cavity). The grid's volume is fixed (the hydrometra, not
 ///   the flow, distends the cavity), so what the jet brings leaves there.
+/// - Air bubbles (air_bubbles.h) enter at the inflow cells while the pump delivers into the
+///   cavity, are carried with each flow step and rise against gravity (CavityInputs::up).
 /// - Clouding: Beer–Lambert along the line of sight, T = exp(−k ∫ c ds) over the first
 ///   `view_depth` m, c the blood fraction, k = `extinction`: 1 % of blood over 2 cm gives
 ///   T = e⁻¹. The view counts as obscured while T < `obscured_transmission`.
@@ -31,6 +33,7 @@
 #include <span>
 #include <vector>
 
+#include "simulator/fluid/air_bubbles.h"
 #include "simulator/fluid/artificial_vortices.h"
 #include "simulator/fluid/blood_particles.h"
 #include "simulator/fluid/concentration_field.h"
@@ -49,6 +52,7 @@ struct CavityFlowSettings {
   double obscured_transmission = 0.5;  ///< T below which the view is obscured
   FlowSettings flow;                   ///< the solver's (its time step is `interval`)
   BloodParticleSettings particles;
+  AirBubbleSettings bubbles;
   VortexSettings vortices;
 };
 
@@ -76,6 +80,7 @@ struct CavityInputs {
   core::Vec3 tip = core::Vec3::Zero();    ///< m
   core::Vec3 axis = core::Vec3::UnitZ();  ///< unit, handle towards tip
   double inflow_rate = 0.0;               ///< m³/s the pump delivers this step
+  core::Vec3 up = core::Vec3::Zero();     ///< unit, against gravity (zero: bubbles do not rise)
   std::vector<BloodRelease> blood;
 };
 
@@ -105,6 +110,7 @@ class CavityFlow {
   const FlowGrid& grid() const { return grid_; }
   const ConcentrationField& blood() const { return blood_; }
   const BloodParticles& particles() const { return particles_; }
+  const AirBubbles& bubbles() const { return bubbles_; }
   const ArtificialVortices& vortices() const { return vortices_; }
   const CavityFlowSettings& settings() const { return settings_; }
   /// Blood released so far, m³: in particles, in the field, drained or lost; equals the sum of
@@ -132,6 +138,7 @@ class CavityFlow {
   FlowSolver solver_;
   ConcentrationField blood_;
   BloodParticles particles_;
+  AirBubbles bubbles_;
   ArtificialVortices vortices_;
   /// Positions at the last labelling, to measure motion against.
   std::vector<core::Vec3> wall_labelled_;

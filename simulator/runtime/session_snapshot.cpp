@@ -33,6 +33,8 @@ void capture_snapshot(const SessionRunner& runner, SessionSnapshot& out) {
   out.blood.clear();
   out.blood_stage.clear();
   out.haze_density = 0.0;
+  out.bubbles.clear();
+  out.bubble_size.clear();
   out.smoke.clear();
   out.lens_fog = 0.0;
   out.tools = runner.tools() != nullptr;
@@ -46,6 +48,14 @@ void capture_snapshot(const SessionRunner& runner, SessionSnapshot& out) {
     out.blood_stage.resize(particles.size());
     for (std::size_t i = 0; i < particles.size(); ++i)
       out.blood_stage[i] = static_cast<float>(particles.stage(i));
+    const fluid::AirBubbles& bubbles = flow->bubbles();
+    out.bubbles.assign(bubbles.positions().begin(), bubbles.positions().end());
+    const fluid::AirBubbleSettings& range = flow->settings().bubbles;
+    const double span = range.max_radius - range.min_radius;
+    out.bubble_size.resize(bubbles.size());
+    for (std::size_t i = 0; i < bubbles.size(); ++i)
+      out.bubble_size[i] =
+          static_cast<float>(span > 0.0 ? (bubbles.radii()[i] - range.min_radius) / span : 0.0);
     const double depth = flow->settings().view_depth;
     const double transmission = flow->view_transmission(
         out.instrument.tip, view_direction(out.instrument, out.optics_angle));

@@ -40,6 +40,10 @@ struct SessionSnapshot {
   std::vector<core::Vec3> blood;
   std::vector<float> blood_stage;
   double haze_density = 0.0;
+  /// Air bubbles in the cavity's flow: each one's position (m) and its radius within the
+  /// bubbles' range (0 smallest … 1 largest).
+  std::vector<core::Vec3> bubbles;
+  std::vector<float> bubble_size;
   /// Smoke of coagulation (issue 19 §4): camera-facing puffs, and the steam on the lens (0…1).
   std::vector<SmokeBillboard> smoke;
   double lens_fog = 0.0;

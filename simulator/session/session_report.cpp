@@ -211,7 +211,10 @@ nlohmann::json cavity_flow_json(const SessionReport& r) {
           {"blood_in_cavity", f.blood_in_cavity},
           {"blood_drained", f.blood_drained},
           {"blood_lost", f.blood_lost},
-          {"particles", f.particles}};
+          {"particles", f.particles},
+          {"air_bubbles_admitted", f.air_bubbles_admitted},
+          {"air_bubbles_flushed", f.air_bubbles_flushed},
+          {"air_bubbles_at_end", f.air_bubbles_at_end}};
 }
 
 /// How a threaded session kept time, or null for a headless one.

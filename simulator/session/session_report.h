@@ -137,15 +137,18 @@ struct CavityFlowSummary {
   double cell_size = 0.0;      ///< m
   int fluid_cells = 0;         ///< at the start
   double mean_pressure_iterations = 0.0;
-  double view_obscured_time = 0.0;   ///< s with the line of sight's transmission below the
-                                     ///< threshold
-  double lowest_transmission = 1.0;  ///< 0…1, over the flow steps
-  double obscured_threshold = 0.0;   ///< the transmission below which the view is obscured
-  double blood_released = 0.0;       ///< m³ handed to the flow as particles
-  double blood_in_cavity = 0.0;      ///< m³ at the end: in particles and in the field
-  double blood_drained = 0.0;        ///< m³ carried out through the outflow
-  double blood_lost = 0.0;           ///< m³ particles released into solid cells or off the grid
-  int particles = 0;                 ///< alive at the end
+  double view_obscured_time = 0.0;     ///< s with the line of sight's transmission below the
+                                       ///< threshold
+  double lowest_transmission = 1.0;    ///< 0…1, over the flow steps
+  double obscured_threshold = 0.0;     ///< the transmission below which the view is obscured
+  double blood_released = 0.0;         ///< m³ handed to the flow as particles
+  double blood_in_cavity = 0.0;        ///< m³ at the end: in particles and in the field
+  double blood_drained = 0.0;          ///< m³ carried out through the outflow
+  double blood_lost = 0.0;             ///< m³ particles released into solid cells or off the grid
+  int particles = 0;                   ///< alive at the end
+  long long air_bubbles_admitted = 0;  ///< air bubbles the inflow brought in
+  long long air_bubbles_flushed = 0;   ///< carried out through the outflow
+  int air_bubbles_at_end = 0;          ///< in the cavity at the end
 };
 
 /// The result of a session.

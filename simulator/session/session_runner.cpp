@@ -540,6 +540,9 @@ SessionReport SessionRunner::finish() {
     f.blood_drained = cavity_->blood().drained_volume();
     f.blood_lost = cavity_->particles().lost_volume();
     f.particles = static_cast<int>(cavity_->particles().size());
+    f.air_bubbles_admitted = cavity_->bubbles().admitted();
+    f.air_bubbles_flushed = cavity_->bubbles().flushed();
+    f.air_bubbles_at_end = static_cast<int>(cavity_->bubbles().size());
   }
   report_.max_penetration = world_.max_penetration();
   report_.contact_stiffness =

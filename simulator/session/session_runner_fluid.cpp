@@ -186,6 +186,7 @@ void SessionRunner::flow_cavity(double dt) {
   inputs.tip = state_.tip;
   inputs.axis = state_.axis;
   inputs.inflow_rate = inflow_rate_;
+  if (world_.gravity().norm() > 0.0) inputs.up = -world_.gravity().normalized();
   if (bleeding_) {
     const auto& sources = bleeding_->sources();
     bled_seen_.resize(sources.size(), 0.0);

@@ -12,9 +12,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "simulator/view/blood_billboards.h"
 #include "simulator/view/endoscope_lens_pass.h"
 #include "simulator/view/image_files.h"
+#include "simulator/view/particle_billboards.h"
 #include "simulator/view/scene_surfaces.h"
 #include "simulator/view/smoke_billboards.h"
 
@@ -45,7 +45,8 @@ EndoscopicView::EndoscopicView(const core::Scenario& scenario, const std::filesy
   scene_->LightFollowCameraOff();
   scene_->TwoSidedLightingOn();
   surfaces_->add_to(scene_);
-  blood_ = std::make_unique<BloodBillboards>(scene_);
+  blood_ = std::make_unique<ParticleBillboards>(scene_, kBloodLook);
+  bubbles_ = std::make_unique<ParticleBillboards>(scene_, kBubbleLook);
   smoke_ = std::make_unique<SmokeBillboards>(scene_);
 
   // The head light: a spot at the tip along the optics, dimming with distance.
@@ -112,6 +113,7 @@ void EndoscopicView::update(const sim::SessionRunner& runner) {
 void EndoscopicView::update(const sim::SessionSnapshot& snapshot) {
   surfaces_->update(snapshot.bodies);
   blood_->update(snapshot.blood, snapshot.blood_stage);
+  bubbles_->update(snapshot.bubbles, snapshot.bubble_size);
   if (lens_) {
     lens_->haze_density = snapshot.haze_density;
     lens_->lens_fog = snapshot.lens_fog;

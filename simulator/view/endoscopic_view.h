@@ -24,7 +24,7 @@ class vtkLight;
 
 namespace viscera::view {
 
-class BloodBillboards;
+class ParticleBillboards;
 class SmokeBillboards;
 class EndoscopeLensPass;
 class SceneSurfaces;
@@ -83,7 +83,8 @@ class EndoscopicView {
   vtkRenderer* scene_renderer() const { return scene_; }
   SessionOverlay& overlay() { return *overlay_; }
   const SceneSurfaces& surfaces() const { return *surfaces_; }
-  const BloodBillboards& blood() const { return *blood_; }
+  const ParticleBillboards& blood() const { return *blood_; }
+  const ParticleBillboards& bubbles() const { return *bubbles_; }
   const SmokeBillboards& smoke() const { return *smoke_; }
   /// The steam on the lens in the lens pass, 0…1 (0 without lens effects).
   double lens_fog() const;
@@ -99,7 +100,7 @@ class EndoscopicView {
   vtkSmartPointer<EndoscopeLensPass> lens_;
   std::unique_ptr<SceneSurfaces> surfaces_;
   std::unique_ptr<SessionOverlay> overlay_;
-  std::unique_ptr<BloodBillboards> blood_;
+  std::unique_ptr<ParticleBillboards> blood_, bubbles_;
   std::unique_ptr<SmokeBillboards> smoke_;
   sim::SessionSnapshot captured_;  ///< reused by update(runner)
 };

@@ -13,7 +13,7 @@
 
 #include "core/package/scenario_package.h"
 #include "simulator/session/manual_control.h"
-#include "simulator/view/blood_billboards.h"
+#include "simulator/view/particle_billboards.h"
 #include "simulator/view/scene_surfaces.h"
 #include "simulator/view/smoke_billboards.h"
 #include "tests/support/command_runner.h"

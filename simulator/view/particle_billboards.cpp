@@ -1,4 +1,4 @@
-#include "simulator/view/blood_billboards.h"
+#include "simulator/view/particle_billboards.h"
 
 #include <vtkActor.h>
 #include <vtkCellArray.h>
@@ -12,7 +12,7 @@
 
 namespace viscera::view {
 
-BloodBillboards::BloodBillboards(vtkRenderer* scene) {
+ParticleBillboards::ParticleBillboards(vtkRenderer* scene, const ParticleLook& look) {
   for (int s = 0; s < kStages; ++s) {
     Stage& stage = stages_[static_cast<std::size_t>(s)];
     stage.points = vtkSmartPointer<vtkPoints>::New();
@@ -26,24 +26,26 @@ BloodBillboards::BloodBillboards(vtkRenderer* scene) {
     mapper->ScalarVisibilityOff();
     stage.actor = vtkSmartPointer<vtkActor>::New();
     stage.actor->SetMapper(mapper);
-    // Stage 0 → 1: small bright arterial red drops to larger dark venous red ones.
     const double t = s / (kStages - 1.0);
-    vtkProperty* look = stage.actor->GetProperty();
-    look->SetColor(0.72 - 0.40 * t, 0.03 + 0.02 * t, 0.03 + 0.02 * t);
-    look->SetAmbient(0.35);
-    look->SetDiffuse(0.65);
-    look->SetSpecular(0.0);
-    look->SetPointSize(static_cast<float>(kBirthSize + (kDeathSize - kBirthSize) * t));
-    look->SetRenderPointsAsSpheres(false);
+    vtkProperty* property = stage.actor->GetProperty();
+    property->SetColor(look.first_colour[0] + (look.last_colour[0] - look.first_colour[0]) * t,
+                       look.first_colour[1] + (look.last_colour[1] - look.first_colour[1]) * t,
+                       look.first_colour[2] + (look.last_colour[2] - look.first_colour[2]) * t);
+    property->SetAmbient(look.ambient);
+    property->SetDiffuse(1.0 - look.ambient);
+    property->SetSpecular(0.0);
+    property->SetPointSize(
+        static_cast<float>(look.first_size + (look.last_size - look.first_size) * t));
+    property->SetRenderPointsAsSpheres(false);
     stage.actor->SetVisibility(false);
     scene->AddActor(stage.actor);
   }
 }
 
-BloodBillboards::~BloodBillboards() = default;
+ParticleBillboards::~ParticleBillboards() = default;
 
-void BloodBillboards::update(const std::vector<core::Vec3>& positions,
-                             const std::vector<float>& stages) {
+void ParticleBillboards::update(const std::vector<core::Vec3>& positions,
+                                const std::vector<float>& stages) {
   const std::size_t n = std::min(positions.size(), stages.size());
   std::array<vtkIdType, kStages> counts{};
   const auto bin = [](float stage) {

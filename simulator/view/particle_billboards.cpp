@@ -33,10 +33,11 @@ ParticleBillboards::ParticleBillboards(vtkRenderer* scene, const ParticleLook& l
                        look.first_colour[2] + (look.last_colour[2] - look.first_colour[2]) * t);
     property->SetAmbient(look.ambient);
     property->SetDiffuse(1.0 - look.ambient);
-    property->SetSpecular(0.0);
+    property->SetSpecular(look.spheres ? 0.8 : 0.0);
+    property->SetSpecularPower(40.0);
     property->SetPointSize(
         static_cast<float>(look.first_size + (look.last_size - look.first_size) * t));
-    property->SetRenderPointsAsSpheres(false);
+    property->SetRenderPointsAsSpheres(look.spheres);
     stage.actor->SetVisibility(false);
     scene->AddActor(stage.actor);
   }

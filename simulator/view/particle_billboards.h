@@ -33,12 +33,16 @@ struct ParticleLook {
   std::array<double, 3> first_colour, last_colour;  ///< RGB 0…1 at stage 0 and at stage 1
   double first_size, last_size;                     ///< sprite diameter, pixels of the scene pass
   double ambient;                                   ///< 0…1, the rest diffuse
+  /// Shaded as small spheres with a highlight (a few hundred bubbles afford it) instead of flat
+  /// squares (ten thousand blood drops do not).
+  bool spheres = false;
 };
 
 /// Blood: 6 px bright arterial red at birth to 12 px dark venous red at the end of its life.
 inline constexpr ParticleLook kBloodLook{{0.72, 0.03, 0.03}, {0.32, 0.05, 0.05}, 6.0, 12.0, 0.35};
 /// Air bubbles: 4 px to 10 px from the smallest radius to the largest, silvery and bright.
-inline constexpr ParticleLook kBubbleLook{{0.80, 0.86, 0.92}, {0.92, 0.95, 1.0}, 4.0, 10.0, 0.7};
+inline constexpr ParticleLook kBubbleLook{
+    {0.80, 0.86, 0.92}, {0.92, 0.95, 1.0}, 5.0, 12.0, 0.5, true};
 
 class ParticleBillboards {
  public:

@@ -6,18 +6,14 @@
 #include <benchmark/benchmark.h>
 
 #include "simulator/fluid/stable_fluids.h"
+#include "tests/support/walled_flow_box.h"
 
 using namespace viscera::sim::fluid;
 
 namespace {
 
 FlowGrid jet_cavity(int n) {
-  FlowGrid grid(n, n, n, 0.001);
-  for (int k = 0; k < n; ++k)
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i)
-        if (i == 0 || j == 0 || k == 0 || i == n - 1 || j == n - 1 || k == n - 1)
-          grid.set_cell(i, j, k, FlowCell::Solid);
+  FlowGrid grid = viscera::test::walled_flow_box(n, n, n, 0.001);
   const int m = n / 2;
   for (int dj = 0; dj < 2; ++dj)
     for (int dk = 0; dk < 2; ++dk) {

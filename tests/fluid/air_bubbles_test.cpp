@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "core/error.h"
+#include "tests/support/walled_flow_box.h"
 
 using namespace viscera;
 using namespace viscera::sim::fluid;
@@ -16,14 +17,7 @@ namespace {
 
 /// `nx`×6×`nz` cells of 1 mm, walled all round.
 FlowGrid closed_box(int nx, int nz) {
-  FlowGrid grid(nx, 6, nz, 0.001);
-  for (int k = 0; k < nz; ++k)
-    for (int j = 0; j < 6; ++j)
-      for (int i = 0; i < nx; ++i)
-        if (i == 0 || j == 0 || k == 0 || i == nx - 1 || j == 5 || k == nz - 1)
-          grid.set_cell(i, j, k, FlowCell::Solid);
-  grid.update_faces();
-  return grid;
+  return test::walled_flow_box(nx, 6, nz, 0.001);
 }
 
 core::Vec3 centre_of(const FlowGrid& grid, int i, int j, int k) {

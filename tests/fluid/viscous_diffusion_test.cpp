@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "simulator/fluid/flow_grid.h"
+#include "tests/support/walled_flow_box.h"
 
 using namespace viscera;
 using namespace viscera::sim::fluid;
@@ -18,14 +19,7 @@ namespace {
 
 /// A 10³ box of 1 mm cells walled all round, with a smooth swirl on its active faces, m/s.
 FlowGrid swirling_box() {
-  const int n = 10;
-  FlowGrid grid(n, n, n, 0.001);
-  for (int k = 0; k < n; ++k)
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i)
-        if (i == 0 || j == 0 || k == 0 || i == n - 1 || j == n - 1 || k == n - 1)
-          grid.set_cell(i, j, k, FlowCell::Solid);
-  grid.update_faces();
+  FlowGrid grid = test::walled_flow_box(10, 10, 10, 0.001);
   for (int axis = 0; axis < 3; ++axis) {
     const FaceDims d = grid.face_dims(axis);
     for (int k = 0; k < d.z; ++k)

@@ -21,9 +21,18 @@
 ///   - when a rebound leaves it slower than `rest_speed` or it has hit tissue `max_bounces`
 ///     times (it runs down the tissue to the pool: that path is not simulated), or
 ///   - after `max_flight` s in the air (a jet pointed up in zero gravity must land somewhere).
-/// Splashing (new smaller drops after a fast impact) and bubbles are not simulated.
+/// Splashing (seed 001 §4.3: "generating new particles after a particle collision"): a drop
+/// whose impact passes the splashing threshold of Cossali, Coghe & Marengo (1997) for drops on
+/// a wet surface, K = We · Oh^−0.4 > 2100 (We = ρ v_N² d / σ, Oh = µ / √(ρ σ d), d the drop's
+/// diameter, v_N its normal speed), breaks into four drops of a quarter of its volume each: all
+/// leave with its rebound velocity plus a sideways throw of the crown, ε |v_N| along four
+/// directions 90° apart in the surface's plane (so their momentum is the rebound's). Split
+/// drops do not split again. At the cannula's speeds a drop splashes only after a fall of
+/// about 20 cm or more (K ≈ 490 at 1 m/s), so in the pelvis the jet rarely splashes.
+/// Bubbles are not simulated.
 ///
-/// Volume is conserved exactly in counts: emitted = in flight + joined the pool.
+/// Volume is conserved exactly in counts of quarter drops: emitted = in flight + joined the
+/// pool.
 
 #include <array>
 #include <functional>
@@ -47,10 +56,13 @@ struct JetOptions {
   double friction = 0.3;
   /// k of eq. 4 in 1/m: 1/(2 d) for a drop stopped over d = 1 mm of tissue and water film.
   double impact_scale = 500.0;
-  double rest_speed = 0.05;  ///< m/s below which a rebounding drop runs off to the pool
-  int max_bounces = 3;       ///< hits after which a drop runs off to the pool
-  double max_flight = 2.0;   ///< s in the air after which a drop is taken to the pool
-  double offset = 1e-4;      ///< m off the surface a drop is put after a hit
+  double rest_speed = 0.05;          ///< m/s below which a rebounding drop runs off to the pool
+  int max_bounces = 3;               ///< hits after which a drop runs off to the pool
+  double max_flight = 2.0;           ///< s in the air after which a drop is taken to the pool
+  double offset = 1e-4;              ///< m off the surface a drop is put after a hit
+  double surface_tension = 0.072;    ///< σ, N/m, saline at body temperature (≈ water)
+  double viscosity = 0.7e-3;         ///< µ, Pa·s, saline at 37 °C
+  double splash_threshold = 2100.0;  ///< K above which a drop splashes (Cossali et al. 1997)
 };
 
 /// One drop in flight.
@@ -59,6 +71,8 @@ struct JetDrop {
   core::Vec3 velocity = core::Vec3::Zero();  ///< m/s
   double age = 0.0;                          ///< s since it left the tip
   int bounces = 0;                           ///< tissue hits so far
+  /// Quarters of an emitted drop it holds: 4, or 1 for a drop a splash threw off.
+  int quarters = 4;
 };
 
 /// Where a step's segment first meets a tissue surface.
@@ -105,23 +119,34 @@ class IrrigationJet {
 
   const std::vector<JetDrop>& drops() const { return drops_; }
   const JetOptions& options() const { return options_; }
-  double drop_mass() const { return options_.density * options_.drop_volume; }  ///< kg
+  /// kg of an emitted drop (`quarters` 4) or of a splash's drop (1).
+  double drop_mass(int quarters = 4) const {
+    return options_.density * options_.drop_volume * (quarters / 4.0);
+  }
+  /// K = We · Oh^−0.4 of a drop of `quarters` hitting a surface at normal speed `v_normal` m/s.
+  double splash_number(int quarters, double v_normal) const;
   /// m³ emitted so far / in flight now / handed to the pool so far.
   double emitted_volume() const { return static_cast<double>(emitted_) * options_.drop_volume; }
-  double in_flight_volume() const {
-    return static_cast<double>(drops_.size()) * options_.drop_volume;
+  double in_flight_volume() const;
+  double landed_volume() const {
+    return static_cast<double>(landed_) * (0.25 * options_.drop_volume);
   }
-  double landed_volume() const { return static_cast<double>(landed_) * options_.drop_volume; }
+  int splashes() const { return splashes_; }  ///< impacts that broke a drop up
 
  private:
   /// Advances one drop; true when it joined the pool.
+  /// Advances one drop; true when it joined the pool. A splash puts the drops it throws off in
+  /// `thrown` (the drop itself then joins nothing and is replaced by them).
   bool move(JetDrop& drop, double dt, const core::Vec3& gravity, const SurfaceQuery& surfaces,
-            const FluidPool& pool, std::vector<JetImpact>& impacts) const;
+            const FluidPool& pool, std::vector<JetImpact>& impacts,
+            std::vector<JetDrop>& thrown) const;
 
   JetOptions options_;
   std::vector<JetDrop> drops_;
-  double owed_ = 0.0;  ///< m³ delivered but not yet a whole drop
-  long long emitted_ = 0, landed_ = 0;
+  double owed_ = 0.0;      ///< m³ delivered but not yet a whole drop
+  long long emitted_ = 0;  ///< drops
+  long long landed_ = 0;   ///< quarter drops
+  int splashes_ = 0;
 };
 
 }  // namespace viscera::sim::fluid

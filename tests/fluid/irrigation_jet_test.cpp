@@ -91,6 +91,7 @@ TEST(IrrigationJet, a_hit_rebounds_by_eq5_and_pushes_the_hit_knots_by_eq4) {
   ASSERT_EQ(jet.drops().size(), 1u);
   const JetDrop& drop = jet.drops()[0];
   EXPECT_EQ(drop.bounces, 1);
+  EXPECT_EQ(jet.splashes(), 0);  // ≈ 1.2 m/s onto the plane: below the splashing threshold
   EXPECT_NEAR(drop.position.z(), o.offset, 1e-15);  // put just off the surface
   // Eq. 5: the slide (x) keeps 1 − µ of 0.8 m/s; the normal speed reverses to ε of the fall
   // speed at impact, √(2 g h) to the chord's accuracy.
@@ -111,6 +112,48 @@ TEST(IrrigationJet, a_hit_rebounds_by_eq5_and_pushes_the_hit_knots_by_eq4) {
   // It bounces on until it is slow or has hit three times, then runs off to the pool.
   for (int step = 0; step < 2000 && !jet.drops().empty(); ++step)
     jet.step(kStep, kGravity, floor, pool);
+  EXPECT_TRUE(jet.drops().empty());
+  EXPECT_NEAR(pool.contents().water, o.drop_volume, 1e-20);
+}
+
+TEST(IrrigationJet, a_fast_drop_splashes_into_four_quarters_that_keep_its_momentum) {
+  IrrigationJet jet;
+  const JetOptions& o = jet.options();
+  // Cossali's K for a 0.01 ml drop: ≈ 490 at 1 m/s, past 2100 above ≈ 2.1 m/s (K ∝ v²).
+  EXPECT_GT(jet.splash_number(4, 1.0), 400.0);
+  EXPECT_LT(jet.splash_number(4, 1.0), 600.0);
+  EXPECT_NEAR(jet.splash_number(4, 2.0) / jet.splash_number(4, 1.0), 4.0, 1e-12);
+  EXPECT_GT(jet.splash_number(4, 2.2), o.splash_threshold);
+  // Straight down from 50 cm: ≈ 3.2 m/s at the plane z = 0.
+  FluidPool pool = deep_pool();
+  jet.emit(core::Vec3(0, 0, 0.5), core::Vec3(0, 0, -1), kStep);
+  const SurfaceQuery floor = plane(core::Vec3::Zero(), core::Vec3::UnitZ());
+  std::vector<JetImpact> impacts;
+  for (int step = 0; step < 500 && impacts.empty(); ++step)
+    impacts = jet.step(kStep, kGravity, floor, pool);
+  ASSERT_EQ(impacts.size(), 1u);
+  EXPECT_EQ(jet.splashes(), 1);
+  ASSERT_EQ(jet.drops().size(), 4u);
+  core::Vec3 momentum = core::Vec3::Zero();
+  for (const JetDrop& d : jet.drops()) {
+    EXPECT_EQ(d.quarters, 1);
+    EXPECT_GT(d.velocity.z(), 0.0);  // up, off the surface
+    momentum += jet.drop_mass(d.quarters) * d.velocity;
+  }
+  // The four throws cancel: together they carry the whole drop's rebound, ε of its fall.
+  const double fall = std::sqrt(impacts[0].force.norm() / (jet.drop_mass() * o.impact_scale *
+                                                           (1.0 - o.elasticity * o.elasticity)));
+  EXPECT_NEAR(momentum.x(), 0.0, 1e-15);
+  EXPECT_NEAR(momentum.y(), 0.0, 1e-15);
+  EXPECT_NEAR(momentum.z(), jet.drop_mass() * o.elasticity * fall, 1e-12 * jet.drop_mass());
+  EXPECT_NEAR(fall, std::sqrt(0.64 + 2.0 * 9.81 * 0.5), 0.02);
+  EXPECT_NEAR(jet.in_flight_volume(), o.drop_volume, 1e-20);
+  // The quarters do not splash again; all of the drop ends in the pool.
+  for (int step = 0; step < 3000 && !jet.drops().empty(); ++step) {
+    jet.step(kStep, kGravity, floor, pool);
+    EXPECT_NEAR(jet.in_flight_volume() + pool.contents().water, o.drop_volume, 1e-20);
+  }
+  EXPECT_EQ(jet.splashes(), 1);
   EXPECT_TRUE(jet.drops().empty());
   EXPECT_NEAR(pool.contents().water, o.drop_volume, 1e-20);
 }

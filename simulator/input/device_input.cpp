@@ -22,6 +22,7 @@ InstrumentState instrument_from_pose(const DevicePose& pose) {
   state.electrode = (pose.buttons & kDeviceCuttingPedal) != 0U;
   state.coagulation = (pose.buttons & kDeviceCoagulationPedal) != 0U;
   state.jaws_closed = (pose.buttons & kDeviceJawsClosed) != 0U;
+  state.irrigating = (pose.buttons & kDeviceIrrigating) != 0U;
   const std::uint32_t tool = (pose.buttons & kDeviceToolMask) >> kDeviceToolShift;
   if (tool <= static_cast<std::uint32_t>(kLastLaparoscopicTool))
     state.tool = static_cast<LaparoscopicTool>(tool);

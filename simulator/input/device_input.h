@@ -29,11 +29,14 @@ inline constexpr std::uint32_t kDeviceJawsClosed = 8U;
 /// 7 leave the tool as it was).
 inline constexpr int kDeviceToolShift = 4;
 inline constexpr std::uint32_t kDeviceToolMask = 7U << kDeviceToolShift;
+/// Bit 7 of DevicePose::buttons: set while the suction–irrigation cannula's irrigation valve is
+/// open (its suction valve is kDeviceJawsClosed).
+inline constexpr std::uint32_t kDeviceIrrigating = 1U << 7;
 
 /// The instrument state a pose describes: tip = position, axis = q·ẑ, up = q·ŷ (q normalised;
 /// a zero quaternion counts as the identity), valves from the pose, abort, the pedals, the
-/// laparoscopic tool and its jaws from the buttons. The loop stands at the sheath (the device moves
-/// the whole instrument).
+/// laparoscopic tool, its jaws and the irrigation valve from the buttons. The loop stands at the
+/// sheath (the device moves the whole instrument).
 InstrumentState instrument_from_pose(const DevicePose& pose);
 
 /// The instrument driven by a device on the loopback interface. Alone (a headless live run)

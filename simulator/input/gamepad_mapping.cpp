@@ -37,7 +37,7 @@ GamepadCommand map_gamepad(const GamepadState& now, const GamepadState& before, 
   if (went_down(GamepadButton::DpadRight)) command.pressed.push_back(ManualCommand::NextTool);
   if (went_down(GamepadButton::DpadLeft)) command.pressed.push_back(ManualCommand::PreviousTool);
   // Held buttons: X the cutting pedal, Y the coagulation pedal, the right stick's click the
-  // laparoscopic tool's jaws.
+  // laparoscopic tool's jaws (the suction valve), the left stick's click the irrigation valve.
   const auto hold = [&](GamepadButton b, ManualCommand c) {
     if (went_down(b)) command.pressed.push_back(c);
     if (!now.pressed(b) && before.pressed(b)) command.released.push_back(c);
@@ -45,6 +45,7 @@ GamepadCommand map_gamepad(const GamepadState& now, const GamepadState& before, 
   hold(GamepadButton::X, ManualCommand::CuttingPedal);
   hold(GamepadButton::Y, ManualCommand::CoagulationPedal);
   hold(GamepadButton::RightStick, ManualCommand::CloseJaws);
+  hold(GamepadButton::LeftStick, ManualCommand::Irrigate);
   return command;
 }
 
@@ -52,7 +53,8 @@ std::string gamepad_bindings_text() {
   return "Pad: left stick swing/tilt   RT/LT or d-pad: advance/withdraw   right stick or "
          "LB/RB: roll the optics\n"
          "Pad: A/B inflow/outflow valve   X cutting pedal   Y coagulation pedal   right stick "
-         "click: jaws   d-pad left/right: tool   Back: abort";
+         "click: jaws/suction   left stick click: irrigation   d-pad left/right: tool   Back: "
+         "abort";
 }
 
 }  // namespace viscera::sim

@@ -42,6 +42,12 @@ void capture_snapshot(const SessionRunner& runner, SessionSnapshot& out) {
     out.smoke = tools->smoke().billboards();
     out.lens_fog = tools->smoke().lens_fog();
   }
+  out.pool_volume = 0.0;
+  out.pool_blood_fraction = 0.0;
+  if (const SuctionIrrigation* cannula = runner.irrigation()) {
+    out.pool_volume = cannula->pool().contents().total();
+    out.pool_blood_fraction = cannula->pool().blood_fraction();
+  }
   if (const fluid::CavityFlow* flow = runner.cavity_flow()) {
     const fluid::BloodParticles& particles = flow->particles();
     out.blood.assign(particles.positions().begin(), particles.positions().end());

@@ -48,6 +48,10 @@ struct SessionSnapshot {
   std::vector<SmokeBillboard> smoke;
   double lens_fog = 0.0;
   bool tools = false;  ///< the instrument carries laparoscopic tools
+  /// The pool of irrigation fluid and blood (suction_irrigation.h), m³, and its blood over all
+  /// its fluid (0…1).
+  double pool_volume = 0.0;
+  double pool_blood_fraction = 0.0;
 };
 
 /// Fills `out` from `runner` at its current step, reusing out's storage (no allocation once

@@ -164,6 +164,13 @@ ScriptedTrajectory ScriptedTrajectory::from_json(const nlohmann::json& json,
           fail(pointer + "/close", "close must be 0 or 1");
         s.jaws_closed = jaws == 1;
       }
+      // The irrigation valve of the suction–irrigation cannula, 0 or 1, held the same way.
+      if (w.contains("irrigate")) {
+        const auto& valve = w["irrigate"];
+        if (!core::whole_number_fits<int>(valve) || (valve != 0 && valve != 1))
+          fail(pointer + "/irrigate", "irrigate must be 0 or 1");
+        s.irrigating = valve == 1;
+      }
       s.loop_extension = w.value("loop_extension", s.loop_extension);
       if (w.contains("look_at")) {
         const InstrumentState looking =

@@ -70,6 +70,7 @@ InstrumentState blend(const InstrumentState& a, const InstrumentState& b, double
   s.coagulation = f >= 1.0 ? b.coagulation : a.coagulation;
   s.tool = f >= 1.0 ? b.tool : a.tool;
   s.jaws_closed = f >= 1.0 ? b.jaws_closed : a.jaws_closed;
+  s.irrigating = f >= 1.0 ? b.irrigating : a.irrigating;
   s.loop_extension = (1.0 - f) * a.loop_extension + f * b.loop_extension;
   orthonormalise(s);
   return s;

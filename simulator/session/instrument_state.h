@@ -19,7 +19,9 @@ enum class LaparoscopicTool : std::uint8_t {
   ClipApplier,
   Scissors,
   Bipolar,
-  Suction  ///< a suction cannula: "closing" opens its suction valve
+  /// a suction–irrigation cannula: "closing" opens its suction valve, `irrigating` its
+  /// irrigation valve (two trumpet valves, as real ones)
+  Suction
 };
 /// The last tool, for cycling through them.
 inline constexpr LaparoscopicTool kLastLaparoscopicTool = LaparoscopicTool::Suction;
@@ -58,6 +60,9 @@ struct InstrumentState {
   /// The tool's jaws are closed (the handle squeezed): a grasper holds, a clip applier fires
   /// its clip, scissors cut, bipolar forceps press the tissue between their electrodes.
   bool jaws_closed = false;
+  /// The irrigation valve of the suction–irrigation cannula is open (its second trumpet
+  /// valve): the jet leaves the tip while the cannula is in the port (irrigation_jet.h).
+  bool irrigating = false;
 
   bool operator==(const InstrumentState&) const = default;
 };
@@ -78,7 +83,8 @@ InstrumentState look_at(const core::Vec3& tip, const core::Vec3& target,
 
 /// Blends two states: positions linearly, directions by normalised linear blend, valves
 /// linearly; `f` in [0, 1]. Abort is taken from `b` once f reaches 1; the electrode, the
-/// coagulation, the tool and its jaws (switches, not blends) stay as in `a` until then.
+/// coagulation, the tool, its jaws and the irrigation valve (switches, not blends) stay as in `a`
+/// until then.
 InstrumentState blend(const InstrumentState& a, const InstrumentState& b, double f);
 
 }  // namespace viscera::sim

@@ -20,7 +20,9 @@
 ///   (cutting::scissor_cut_surface, then the hybrid cut of seed 000 §5.1 and
 ///   World::topology_changed).
 /// - Suction cannula: while its valve is open (the jaws "closed") it draws off the smoke within
-///   `suction_reach` m of its tip (seed 001 §4.3: suction "removes" smoke).
+///   `suction_reach` m of its tip (seed 001 §4.3: suction "removes" smoke). It is a suction–
+///   irrigation cannula: its irrigation jet and the pool its suction also draws off are
+///   SuctionIrrigation's (suction_irrigation.h), which the session runs beside the tools.
 /// - Every tool: coagulation raises smoke from the tissue between the jaws and steams the lens
 ///   at the instrument's tip (SurgicalSmoke).
 /// - Bipolar forceps: with the jaws closed and the coagulation pedal down, the knots between

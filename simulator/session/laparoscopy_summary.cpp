@@ -4,6 +4,10 @@
 
 namespace viscera::sim {
 
+namespace {
+constexpr double kMlPerM3 = 1e6;
+}  // namespace
+
 nlohmann::json laparoscopy_json(const LaparoscopySummary& s, double blood_loss) {
   nlohmann::json clips = nlohmann::json::array();
   int secure = 0;
@@ -48,6 +52,10 @@ nlohmann::json laparoscopy_json(const LaparoscopySummary& s, double blood_loss) 
           {"peak_lens_fog", s.peak_lens_fog},
           {"smoke_puffs", s.smoke_puffs},
           {"smoke_puffs_suctioned", s.smoke_puffs_suctioned},
+          {"irrigated_ml", s.irrigated_volume * kMlPerM3},
+          {"suctioned_ml", s.suctioned_volume * kMlPerM3},
+          {"pool_ml", s.pool_volume * kMlPerM3},
+          {"pool_blood_fraction", s.pool_blood_fraction},
           {"coagulated_length", length},
           {"coagulated", coagulated},
           {"blood_loss", blood_loss},

@@ -63,6 +63,13 @@ struct LaparoscopySummary {
   double peak_lens_fog = 0.0;     ///< 0…1, the most the lens steamed up
   int smoke_puffs = 0;
   int smoke_puffs_suctioned = 0;  ///< puffs the suction cannula drew off
+  /// The suction–irrigation cannula and the pool (suction_irrigation.h), m³: fluid the jet
+  /// delivered, fluid (water and blood) the suction drew off the pool, what the pool holds now
+  /// and its blood over all its fluid (0…1).
+  double irrigated_volume = 0.0;
+  double suctioned_volume = 0.0;
+  double pool_volume = 0.0;
+  double pool_blood_fraction = 0.0;
   std::vector<ClipPlacement> clips;
   std::vector<ScissorCut> cuts;
   std::vector<CoagulatedTissue> coagulated;
@@ -77,7 +84,9 @@ struct LaparoscopySummary {
 
 /// The summary as JSON, with `blood_loss` m³ (the report's bleeding sources) among the
 /// metrics of issue 19 §6: clips placed and secure, coagulated length (m), coagulation time (s),
-/// tool path per tool (m). Positions in m, times in s, forces in N.
+/// tool path per tool (m), and the irrigation, suction and pool volumes in ml (the unit on the
+/// operating room's fluid chart; their names end in "_ml"). Positions in m, times in s, forces
+/// in N.
 nlohmann::json laparoscopy_json(const LaparoscopySummary& summary, double blood_loss);
 
 }  // namespace viscera::sim

@@ -29,7 +29,8 @@ enum class ManualCommand {
   CoagulationPedal,  ///< held: the loop's coagulating current is on
   ToggleInflow,      ///< inflow valve open ↔ closed
   ToggleOutflow,     ///< outflow valve open ↔ closed
-  CloseJaws,         ///< held: the laparoscopic tool's jaws are closed
+  CloseJaws,         ///< held: the laparoscopic tool's jaws are closed (the suction valve)
+  Irrigate,          ///< held: the suction–irrigation cannula's irrigation valve is open
   ToolNone,          ///< the working port empty (the bare optics shaft)
   ToolGrasper,       ///< a grasper in the working port
   ToolClipApplier,   ///< a clip applier

@@ -111,7 +111,10 @@ SessionRunner::SessionRunner(const core::Scenario& scenario, const HeadlessRunOp
     if (scenario.fluid.enabled) fluid_.emplace(scenario.fluid);
     if (tissue_->body() != nullptr) surface_object = tissue_->name();
     if (scenario.session.instrument.kind == "resectoscope") start_resection(scenario);
-    if (scenario.session.instrument.kind == "laparoscope") start_tools(scenario);
+    if (scenario.session.instrument.kind == "laparoscope") {
+      start_tools(scenario);
+      irrigation_ = std::make_unique<SuctionIrrigation>(world_);
+    }
     if (fluid_) start_cavity_flow(scenario);
   }
 
@@ -332,6 +335,7 @@ void SessionRunner::step(const InstrumentState& input) {
     }
     over_force_ = excessive;
   }
+  if (irrigation_) irrigate(world_.time_step());
   const long long s = world_.steps();
   if (options_.checkpoint_interval > 0 && s % options_.checkpoint_interval == 0) {
     const long long index = s / options_.checkpoint_interval;

@@ -21,6 +21,7 @@
 #include "simulator/session/loop_resection.h"
 #include "simulator/session/series_thinning.h"
 #include "simulator/session/session_report.h"
+#include "simulator/session/suction_irrigation.h"
 #include "simulator/world/world.h"
 
 namespace viscera::sim {
@@ -78,6 +79,9 @@ class SessionRunner {
   core::Vec3 instrument_force() const;
   /// The laparoscopic tools, or null when the instrument carries none.
   const LaparoscopicTools* tools() const { return tools_.get(); }
+  /// The suction–irrigation cannula's jet and the pool, or null when the instrument carries no
+  /// laparoscopic tools.
+  const SuctionIrrigation* irrigation() const { return irrigation_.get(); }
   /// The tissue the instrument acts on, or null without instrument.
   const InstrumentTissue* tissue() const { return tissue_.get(); }
   const core::InstrumentSpec& instrument() const { return instrument_; }
@@ -158,6 +162,11 @@ class SessionRunner {
   void start_tools(const core::Scenario& scenario);
   /// Moves the instrument's contact point to state_ (a tool's jaws touch with their hinge).
   void move_tissue();
+  /// The jet, the pool and the suction of the suction–irrigation cannula (issue 19 §3).
+  std::unique_ptr<SuctionIrrigation> irrigation_;
+  /// After a physics step of `dt` s and its bleeding: the jet flies, the pool fills with its
+  /// water and the sources' blood, the suction draws off (session_runner_irrigation.cpp).
+  void irrigate(double dt);
   /// Makes the arterial sources from `first` on pulse with their tree's authored pulse.
   void pulse_opened_arteries(std::size_t first);
   /// After a physics step: the tools follow the instrument.

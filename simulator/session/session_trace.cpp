@@ -36,7 +36,8 @@ nlohmann::json state_to_json(long long step, const InstrumentState& s) {
           s.loop_extension,
           s.coagulation,
           std::string(tool_name(s.tool)),
-          s.jaws_closed};
+          s.jaws_closed,
+          s.irrigating};
 }
 
 std::pair<long long, InstrumentState> state_from_json(const nlohmann::json& j) {
@@ -57,6 +58,7 @@ std::pair<long long, InstrumentState> state_from_json(const nlohmann::json& j) {
     s.tool = *tool;
     j.at(11).get_to(s.jaws_closed);
   }
+  if (j.size() > 12) j.at(12).get_to(s.irrigating);  // since the suction–irrigation cannula
   return {core::whole_number<long long>(j.at(0), "", ""), s};
 }
 

@@ -142,7 +142,10 @@ void EndoscopicView::update(const sim::SessionSnapshot& snapshot) {
   if (snapshot.tools) {
     state.tool = std::string(sim::tool_name(snapshot.instrument.tool));
     state.jaws_closed = snapshot.instrument.jaws_closed;
+    state.irrigating = snapshot.instrument.irrigating;
     state.lens_fog = snapshot.lens_fog;
+    state.pool_ml = snapshot.pool_volume * 1e6;
+    state.pool_blood_fraction = snapshot.pool_blood_fraction;
   }
   overlay_->update(state);
 }

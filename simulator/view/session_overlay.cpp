@@ -132,7 +132,14 @@ void SessionOverlay::update(const OverlayState& state) {
 
   std::string tool;
   if (!state.tool.empty()) {
-    tool = "\nTool    " + state.tool + ", jaws " + (state.jaws_closed ? "closed" : "open");
+    if (state.tool == "suction")  // a suction–irrigation cannula: two valves, no jaws
+      tool = std::string("\nTool    suction ") + (state.jaws_closed ? "on" : "off") +
+             ", irrigation " + (state.irrigating ? "on" : "off");
+    else
+      tool = "\nTool    " + state.tool + ", jaws " + (state.jaws_closed ? "closed" : "open");
+    if (state.pool_ml >= 0.5)
+      tool += "   pool " + std::to_string(std::lround(state.pool_ml)) + " ml (" +
+              std::to_string(std::lround(100.0 * state.pool_blood_fraction)) + " % blood)";
     if (state.lens_fog > 0.05)
       tool += "   lens steamed " + std::to_string(std::lround(100.0 * state.lens_fog)) + " %";
   }

@@ -31,7 +31,10 @@ struct OverlayState {
   std::string ended;                      ///< end reason once the session is over, or ""
   std::string tool;  ///< laparoscopic tool in the working port, "" without tools
   bool jaws_closed = false;
-  double lens_fog = 0.0;  ///< 0…1, the steam on the lens
+  bool irrigating = false;  ///< the suction–irrigation cannula's irrigation valve is open
+  double lens_fog = 0.0;    ///< 0…1, the steam on the lens
+  double pool_ml = 0.0;     ///< ml of fluid pooled at the lowest point of the scene
+  double pool_blood_fraction = 0.0;  ///< 0…1
 };
 
 /// How close the force is to the warning level: "" below 80 %, "approaching" up to the level,

@@ -50,6 +50,17 @@ TEST(DeviceInput, pose_quaternion_turns_the_rest_frame_into_the_scene) {
   pose.buttons = kDeviceCoagulationPedal;
   EXPECT_TRUE(instrument_from_pose(pose).coagulation);
   EXPECT_FALSE(instrument_from_pose(pose).electrode);
+  // The suction–irrigation cannula (tool 5): jaws bit = suction valve, bit 7 = irrigation valve.
+  pose.buttons = kDeviceIrrigating | (5U << kDeviceToolShift);
+  EXPECT_TRUE(instrument_from_pose(pose).irrigating);
+  EXPECT_FALSE(instrument_from_pose(pose).jaws_closed);
+  EXPECT_EQ(instrument_from_pose(pose).tool, LaparoscopicTool::Suction);
+  pose.buttons = kDeviceJawsClosed | (5U << kDeviceToolShift);
+  EXPECT_FALSE(instrument_from_pose(pose).irrigating);
+  EXPECT_TRUE(instrument_from_pose(pose).jaws_closed);
+  EXPECT_EQ(kDeviceIrrigating & (kDeviceToolMask | kDeviceJawsClosed | kDeviceAbortButton |
+                                 kDeviceCuttingPedal | kDeviceCoagulationPedal),
+            0U);
 }
 
 TEST(DeviceInput, a_device_on_loopback_drives_a_live_session_and_feels_the_tissue) {

@@ -55,6 +55,12 @@ TEST(GamepadMapping, valve_and_abort_buttons_act_once_per_press) {
   GamepadState back = up;
   back.set(GamepadButton::Back, true);
   EXPECT_EQ(map_gamepad(back, up).pressed, std::vector<ManualCommand>{ManualCommand::Abort});
+  // The left stick's click holds the irrigation valve open while it is held.
+  GamepadState click = up;
+  click.set(GamepadButton::LeftStick, true);
+  EXPECT_EQ(map_gamepad(click, up).pressed, std::vector<ManualCommand>{ManualCommand::Irrigate});
+  EXPECT_TRUE(map_gamepad(click, click).pressed.empty());
+  EXPECT_EQ(map_gamepad(up, click).released, std::vector<ManualCommand>{ManualCommand::Irrigate});
 }
 
 TEST(GamepadMapping, drives_the_manual_control_proportionally) {

@@ -41,6 +41,14 @@ TEST(ManualControl, pedals_act_while_held_and_the_loop_travels_within_its_range)
   EXPECT_TRUE(control.state().coagulation);
   control.release(ManualCommand::CoagulationPedal);
   EXPECT_FALSE(control.state().coagulation);
+  // L holds the suction–irrigation cannula's irrigation valve open; switching tools shuts it.
+  control.press(*ManualControl::command_for_key("l"));
+  EXPECT_TRUE(control.state().irrigating);
+  control.release(ManualCommand::Irrigate);
+  EXPECT_FALSE(control.state().irrigating);
+  control.press(ManualCommand::Irrigate);
+  control.press(ManualCommand::ToolGrasper);
+  EXPECT_FALSE(control.state().irrigating);
   control.press(*ManualControl::command_for_key("t"));
   control.advance(0.5);
   EXPECT_NEAR(control.state().loop_extension, 0.005, 1e-15);

@@ -78,6 +78,29 @@ TEST(ScriptedTrajectory, interpolates_between_waypoints_and_names_bad_ones) {
   }
 }
 
+TEST(ScriptedTrajectory, holds_the_irrigation_valve_between_waypoints_and_refuses_other_values) {
+  nlohmann::json json = {
+      {"format", "viscera-script"},
+      {"version", 2},
+      {"waypoints",
+       {{{"t", 0.0}, {"tip", {0, 0, 0.05}}, {"tool", "suction"}, {"irrigate", 1}},
+        {{"t", 1.0}, {"tip", {0, 0, 0.04}}},
+        {{"t", 2.0}, {"tip", {0, 0, 0.03}}, {"irrigate", 0}}}}};
+  const auto trajectory = ScriptedTrajectory::from_json(json, "s.json");
+  EXPECT_TRUE(trajectory.state(0, 0.0).irrigating);
+  EXPECT_TRUE(trajectory.state(0, 1.5).irrigating);  // held until a waypoint changes it
+  EXPECT_FALSE(trajectory.state(0, 2.0).irrigating);
+  EXPECT_EQ(trajectory.state(0, 1.5).tool, LaparoscopicTool::Suction);
+  json["waypoints"][1]["irrigate"] = 2;
+  try {
+    ScriptedTrajectory::from_json(json, "s.json");
+    FAIL() << "irrigate 2 accepted";
+  } catch (const core::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("s.json: /waypoints/1/irrigate"), std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(ScriptedSession, expert_and_novice_separate_on_every_metric) {
   const core::Vec3 above(0.021, 0.019, 0.04), target(0.021, 0.019, 0.016);
   // Expert: straight down to 4 mm depth, hold, straight back out.
@@ -148,6 +171,9 @@ TEST(SessionTrace, round_trips_through_json_exactly) {
   b.electrode = true;
   b.loop_extension = 0.004;
   b.coagulation = true;
+  b.tool = LaparoscopicTool::Suction;
+  b.jaws_closed = true;
+  b.irrigating = true;
   trace.inputs = {{0, a}, {17, b}};
   trace.checkpoints = {{100, "x"}, {200, "y"}};
   trace.final_state_hash = "z";
@@ -158,6 +184,12 @@ TEST(SessionTrace, round_trips_through_json_exactly) {
   EXPECT_EQ(back.input()->state(17, 0.0), b);
   EXPECT_EQ(back.checkpoints, trace.checkpoints);
   EXPECT_EQ(back.manifest_sha256, trace.manifest_sha256);
+  // A trace from before the irrigation valve (12 members per input) reads with the valve shut.
+  nlohmann::json older = trace_to_json(trace);
+  older["inputs"][1].erase(12);
+  const SessionTrace old_back = trace_from_json(older, "t.json");
+  EXPECT_FALSE(old_back.inputs[1].second.irrigating);
+  EXPECT_TRUE(old_back.inputs[1].second.jaws_closed);
   nlohmann::json broken = trace_to_json(trace);
   broken.erase("inputs");
   EXPECT_THROW(trace_from_json(broken, "t.json"), core::ValidationError);

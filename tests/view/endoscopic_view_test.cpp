@@ -268,5 +268,25 @@ TEST(SessionOverlay, force_bars_fill_and_warn_as_the_force_nears_the_limit) {
   EXPECT_NE(overlay.warning_text().find("EXCESSIVE"), std::string::npos);
 }
 
+TEST(SessionOverlay, shows_the_suction_irrigation_cannulas_valves_and_the_pool) {
+  view::SessionOverlay overlay("");
+  view::OverlayState state;
+  state.tool = "suction";
+  state.irrigating = true;
+  state.pool_ml = 12.4;
+  state.pool_blood_fraction = 0.05;
+  overlay.update(state);
+  EXPECT_NE(overlay.info_text().find("suction off, irrigation on"), std::string::npos)
+      << overlay.info_text();
+  EXPECT_NE(overlay.info_text().find("pool 12 ml (5 % blood)"), std::string::npos)
+      << overlay.info_text();
+  state.tool = "grasper";
+  state.jaws_closed = true;
+  state.pool_ml = 0.0;
+  overlay.update(state);
+  EXPECT_NE(overlay.info_text().find("grasper, jaws closed"), std::string::npos);
+  EXPECT_EQ(overlay.info_text().find("pool"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace viscera

@@ -2,6 +2,7 @@
 // step loop in session_runner.cpp.
 #include <algorithm>
 
+#include "core/scenario/vessel_paths.h"
 #include "simulator/dynamics/pulse_waves.h"
 #include "simulator/dynamics/vessel_wave_paths.h"
 #include "simulator/session/session_runner.h"
@@ -78,14 +79,10 @@ void SessionRunner::start_tools(const core::Scenario& scenario) {
       if (tree == nullptr) continue;
       const core::Vec3 site = fluid::site_position(source, rest_positions);
       for (const int s : source.path) {
-        const auto& seg = tree->segments[static_cast<std::size_t>(s)];
-        const core::Vec3 axis = seg.distal - seg.proximal;
-        const double along = std::clamp(
-            (rest - seg.proximal).dot(axis) / std::max(axis.squaredNorm(), 1e-18), 0.0, 1.0);
-        if ((seg.proximal + along * axis - rest).norm() - seg.radius > kVesselReach) continue;
-        const double site_along =
-            (site - seg.proximal).dot(axis) / std::max(axis.squaredNorm(), 1e-18);
-        if (s == source.segment && along >= site_along) continue;  // beyond the opening
+        const core::VesselSegmentPoint clip_at = core::nearest_point_on_segment(*tree, s, rest);
+        if (clip_at.wall_distance > kVesselReach) continue;
+        const double site_along = core::nearest_point_on_segment(*tree, s, site).projection;
+        if (s == source.segment && clip_at.along >= site_along) continue;  // beyond the opening
         if (bleeding_->clip_source(i, time)) ++stopped;
         break;
       }

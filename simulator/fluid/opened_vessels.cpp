@@ -117,6 +117,7 @@ std::vector<OpenedVessel> find_opened_vessels(const core::VesselTree& tree,
     vessel.triangle = nearest_triangle;
     vessel.barycentric = nearest->barycentric;
     vessel.site = segment.proximal + nearest->along * (segment.distal - segment.proximal);
+    vessel.along = nearest->along;
     vessel.radius = segment.radius;
     vessel.path = paths[static_cast<std::size_t>(s)];
     const core::VesselSegment& root = tree.segments[static_cast<std::size_t>(vessel.path.front())];

@@ -2,7 +2,6 @@
 // step loop in session_runner.cpp.
 #include <algorithm>
 
-#include "core/scenario/vessel_paths.h"
 #include "simulator/dynamics/pulse_waves.h"
 #include "simulator/dynamics/vessel_wave_paths.h"
 #include "simulator/session/session_runner.h"
@@ -66,27 +65,9 @@ void SessionRunner::start_tools(const core::Scenario& scenario) {
     stop_pulse_near(body, rest, kVesselReach, time, "a clip");
     // A clip between the root and a cut stops that cut's arterial bleeding (seed 001 §5.1.2).
     if (!bleeding_) return;
-    // Between the root and the opening: on a segment of the opened vessel's root path, and on
-    // the opened segment itself only proximal to the opening.
     int stopped = 0;
-    const auto rest_positions = world_.state().range(world_.state().rest_positions, body);
-    for (std::size_t i = 0; i < bleeding_->sources().size(); ++i) {
-      const fluid::BleedingSource& source = bleeding_->sources()[i];
-      if (source.capillary || source.body != body) continue;
-      const core::VesselTree* tree = nullptr;
-      for (const core::VesselTree& t : hosted_trees_[static_cast<std::size_t>(body)])
-        if (t.id == source.vessel_tree) tree = &t;
-      if (tree == nullptr) continue;
-      const core::Vec3 site = fluid::site_position(source, rest_positions);
-      for (const int s : source.path) {
-        const core::VesselSegmentPoint clip_at = core::nearest_point_on_segment(*tree, s, rest);
-        if (clip_at.wall_distance > kVesselReach) continue;
-        const double site_along = core::nearest_point_on_segment(*tree, s, site).projection;
-        if (s == source.segment && clip_at.along >= site_along) continue;  // beyond the opening
-        if (bleeding_->clip_source(i, time)) ++stopped;
-        break;
-      }
-    }
+    for (const core::VesselTree& tree : hosted_trees_[static_cast<std::size_t>(body)])
+      stopped += bleeding_->clip_at(body, tree, rest, kVesselReach, time);
     if (stopped > 0)
       report_.events.push_back(
           {time, "bleeding-clipped", std::to_string(stopped) + " bleeding source(s) clipped"});

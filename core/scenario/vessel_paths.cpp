@@ -1,6 +1,7 @@
 #include "core/scenario/vessel_paths.h"
 
 #include <algorithm>
+#include <limits>
 #include <string>
 
 #include "core/error.h"
@@ -51,6 +52,33 @@ std::vector<int> vessel_child_counts(const VesselTree& tree) {
       ++children[static_cast<std::size_t>(segment.parent)];
   }
   return children;
+}
+
+VesselSegmentPoint nearest_point_on_segment(const VesselTree& tree, int segment,
+                                            const Vec3& point) {
+  if (segment < 0 || segment >= static_cast<int>(tree.segments.size()))
+    throw UsageError("vessel tree \"" + tree.id + "\" has no segment " + std::to_string(segment));
+  const VesselSegment& seg = tree.segments[static_cast<std::size_t>(segment)];
+  const Vec3 axis = seg.distal - seg.proximal;
+  const double length2 = axis.squaredNorm();
+  VesselSegmentPoint at;
+  at.segment = segment;
+  at.projection = length2 > 0.0 ? (point - seg.proximal).dot(axis) / length2 : 0.0;
+  at.along = std::clamp(at.projection, 0.0, 1.0);
+  at.point = seg.proximal + at.along * axis;
+  at.distance = (at.point - point).norm();
+  at.wall_distance = at.distance - seg.radius;
+  return at;
+}
+
+VesselSegmentPoint nearest_point_on_vessel(const VesselTree& tree, const Vec3& point) {
+  VesselSegmentPoint best;
+  best.distance = best.wall_distance = std::numeric_limits<double>::infinity();
+  for (int s = 0; s < static_cast<int>(tree.segments.size()); ++s) {
+    const VesselSegmentPoint at = nearest_point_on_segment(tree, s, point);
+    if (at.wall_distance < best.wall_distance) best = at;
+  }
+  return best;
 }
 
 }  // namespace viscera::core

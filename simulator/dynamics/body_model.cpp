@@ -27,4 +27,23 @@ void assign_layer_materials(BodyModel& model, const core::SceneObject& object,
   }
 }
 
+std::vector<double> node_distance_stiffness(const BodyModel& model,
+                                            std::span<const core::Vec3> rest) {
+  std::vector<double> stiffness(rest.size(), 0.0);
+  for (std::size_t t = 0; t < model.mesh.tets.size(); ++t) {
+    const auto& tet = model.mesh.tets[t];
+    const double share =
+        core::signed_volume(rest[tet[0]], rest[tet[1]], rest[tet[2]], rest[tet[3]]) / 6.0;
+    const double k = model.material_of(static_cast<int>(t)).distance_stiffness * share;
+    for (int a = 0; a < 4; ++a)
+      for (int b = a + 1; b < 4; ++b) {
+        const double length2 = (rest[tet[b]] - rest[tet[a]]).squaredNorm();
+        if (!(length2 > 0.0)) continue;
+        stiffness[tet[a]] += k / length2 / 3.0;
+        stiffness[tet[b]] += k / length2 / 3.0;
+      }
+  }
+  return stiffness;
+}
+
 }  // namespace viscera::sim

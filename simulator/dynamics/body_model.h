@@ -4,6 +4,7 @@
 /// each have their own, core::SceneObject::layer_materials). The world owns one per body and
 /// updates it before calling topology_changed().
 
+#include <span>
 #include <string>
 #include <vector>
 
@@ -40,5 +41,16 @@ struct BodyModel {
 void assign_layer_materials(BodyModel& model, const core::SceneObject& object,
                             const core::Material& base,
                             const std::map<std::string, core::Material>& materials);
+
+/// The stiffness of the tissue around each node of `model` at rest, N/m per body node: how stiff
+/// a spring tying the node to a target must be to match its neighbourhood (MotilityForces,
+/// HydrometraForces),
+///   k_i = ⅓ Σ_{tet edges e at i} k_D,e / D0,e²,
+/// with k_D,e = Σ over the edge's tets of distance_stiffness (Pa) × V0/6 (m³), the Teschner
+/// distance stiffness of each tet's material (seed 000 §3), and D0,e the edge's rest length (m).
+/// `rest` holds the body's rest positions (m), indexed like model.mesh.nodes. Edges of zero
+/// length add nothing; a node on no tet gets 0. Held nodes are not special here.
+std::vector<double> node_distance_stiffness(const BodyModel& model,
+                                            std::span<const core::Vec3> rest);
 
 }  // namespace viscera::sim

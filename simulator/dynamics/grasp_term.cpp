@@ -6,19 +6,8 @@
 
 namespace viscera::sim {
 
-GraspTerm::GraspTerm(double stiffness, std::vector<int> graspable, const SimulationState& state)
-    : stiffness_(stiffness), graspable_(std::move(graspable)) {
+GraspTerm::GraspTerm(double stiffness) : stiffness_(stiffness) {
   if (!(stiffness > 0.0)) throw core::UsageError("grasper stiffness must be positive (N/m)");
-  collect_graspable_nodes(state);
-}
-
-void GraspTerm::collect_graspable_nodes(const SimulationState& state) {
-  graspable_nodes_.clear();
-  for (const int b : graspable_) {
-    const BodyNodes& range = state.body(b);
-    for (int n = range.first; n < range.first + range.count; ++n)
-      if (state.inverse_masses[static_cast<std::size_t>(n)] > 0.0) graspable_nodes_.push_back(n);
-  }
 }
 
 void GraspTerm::refresh_globals(const SimulationState& state) {
@@ -57,7 +46,6 @@ void GraspTerm::topology_changed(const SimulationState& state, int body) {
     offsets_.push_back(it->second);
   }
   refresh_globals(state);
-  collect_graspable_nodes(state);
 }
 
 double GraspTerm::energy(std::span<const Vec3> x) const {

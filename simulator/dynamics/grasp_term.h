@@ -23,9 +23,8 @@ namespace viscera::sim {
 
 class GraspTerm : public ForceTerm {
  public:
-  /// `stiffness` N/m per held node. `graspable` lists the bodies the jaws may take nodes
-  /// from; their free nodes are the nodes whose stable step the explicit integrator plans for.
-  GraspTerm(double stiffness, std::vector<int> graspable, const SimulationState& state);
+  /// `stiffness` N/m per held node. Throws core::UsageError unless it is positive.
+  explicit GraspTerm(double stiffness);
 
   std::string name() const override { return "grasper"; }
   double energy(std::span<const Vec3> x) const override;
@@ -53,18 +52,12 @@ class GraspTerm : public ForceTerm {
   double largest_node_force(std::span<const Vec3> x) const;
   /// Drops the held nodes whose spring force exceeds `limit` N; returns how many.
   int tear_out(std::span<const Vec3> x, double limit);
-  const std::vector<int>& graspable() const { return graspable_; }
-  /// Free nodes of the graspable bodies, global indices.
-  const std::vector<int>& graspable_nodes() const { return graspable_nodes_; }
 
  private:
   Vec3 target(std::size_t k) const { return tip_ + rotation_ * offsets_[k]; }
-  void collect_graspable_nodes(const SimulationState& state);
   void refresh_globals(const SimulationState& state);
 
   double stiffness_;
-  std::vector<int> graspable_;
-  std::vector<int> graspable_nodes_;
   std::vector<NodeReference> held_;
   std::vector<Vec3> offsets_;  ///< m, in the jaw frame
   std::vector<int> globals_;   ///< global index of each held node

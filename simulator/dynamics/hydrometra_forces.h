@@ -12,12 +12,12 @@
 /// shape itself (at P clamped to the states' range, like the shape). The blend, decided: at a
 /// stored state the organ's own Teschner forces at X + u_k are exactly −b (that is what the sweep
 /// solved), so without an instrument the wall's equilibrium IS the interpolated shape; the spring,
-/// as stiff as `kStiffnessFactor` × the tissue around the node (⅓ Σ k_D/D0² over its edges, as
-/// MotilityForces), carries a pressure change out within a few steps — the "almost instantaneous
-/// response" the seed pre-computes — while the instrument, contacts and the wall's elasticity still
-/// deform it about that shape. At 0 Pa the target is the rest shape and b = 0, so the term only
-/// adds that spring toward rest. The Hessian is k_i I (PSD: the implicit solver stays stable). Held
-/// nodes get nothing.
+/// as stiff as `kStiffnessFactor` × the tissue around the node (⅓ Σ k_D/D0² over its edges,
+/// node_distance_stiffness in body_model.h, as MotilityForces), carries a pressure change out
+/// within a few steps — the "almost instantaneous response" the seed pre-computes — while the
+/// instrument, contacts and the wall's elasticity still deform it about that shape. At 0 Pa the
+/// target is the rest shape and b = 0, so the term only adds that spring toward rest. The Hessian
+/// is k_i I (PSD: the implicit solver stays stable). Held nodes get nothing.
 
 #include <memory>
 

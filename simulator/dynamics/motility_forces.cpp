@@ -26,22 +26,11 @@ void MotilityForces::build(const SimulationState& state, int first) {
         {"", "", id_});
   }
   const auto n = rest.size();
-  stiffness_.assign(n, 0.0);
-  for (std::size_t t = 0; t < body.mesh.tets.size(); ++t) {
-    const auto& tet = body.mesh.tets[t];
-    const double share =
-        core::signed_volume(rest[tet[0]], rest[tet[1]], rest[tet[2]], rest[tet[3]]) / 6.0;
-    const double k = body.material_of(static_cast<int>(t)).distance_stiffness * share;
-    for (int a = 0; a < 4; ++a)
-      for (int b = a + 1; b < 4; ++b) {
-        const double length2 = (rest[tet[b]] - rest[tet[a]]).squaredNorm();
-        if (!(length2 > 0.0)) continue;
-        stiffness_[tet[a]] += kStiffnessFactor * k / length2 / 3.0;
-        stiffness_[tet[b]] += kStiffnessFactor * k / length2 / 3.0;
-      }
+  stiffness_ = node_distance_stiffness(body, rest);
+  for (std::size_t i = 0; i < n; ++i) {
+    const bool held = state.inverse_masses[static_cast<std::size_t>(first) + i] == 0.0;
+    stiffness_[i] = held ? 0.0 : kStiffnessFactor * stiffness_[i];
   }
-  for (std::size_t i = 0; i < n; ++i)
-    if (state.inverse_masses[static_cast<std::size_t>(first) + i] == 0.0) stiffness_[i] = 0.0;
   anchors_ = motility_->positions(state.time);
 }
 

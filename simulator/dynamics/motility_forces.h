@@ -7,10 +7,11 @@
 /// with k_i the node's own stiffness against its neighbours in the tissue at rest,
 ///   k_i = kStiffnessFactor · ⅓ Σ_{tet edges e at i} k_D,e / D0,e²   (N/m),
 /// k_D,e = Σ over the edge's tets of distance_stiffness × V0/6 (the Teschner distance
-/// stiffness, seed 000 §3, of each tet's material): as stiff as the tissue around the knot, so a
-/// smooth motility field (wavelength ≫ the mesh) is carried out nearly in full, while the
-/// instrument, connections and the tissue's elasticity still deform the body. The Hessian is
-/// k_i I (positive semi-definite: the implicit integrator stays stable); held nodes get none.
+/// stiffness, seed 000 §3, of each tet's material; node_distance_stiffness in body_model.h):
+/// as stiff as the tissue around the knot, so a smooth motility field (wavelength ≫ the mesh) is
+/// carried out nearly in full, while the instrument, connections and the tissue's elasticity
+/// still deform the body. The Hessian is k_i I (positive semi-definite: the implicit integrator
+/// stays stable); held nodes get none.
 
 #include <optional>
 

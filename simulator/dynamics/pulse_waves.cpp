@@ -1,11 +1,10 @@
 #include "simulator/dynamics/pulse_waves.h"
 
-#include <algorithm>
 #include <cmath>
-#include <limits>
 #include <string>
 
 #include "core/error.h"
+#include "core/scenario/vessel_paths.h"
 
 namespace viscera::sim {
 
@@ -73,27 +72,14 @@ void PulseWaves::occlude(int segment, double along) {
 
 void PulseWaves::occlude_at(int segment, const Vec3& rest_point) {
   const auto& seg = this->segment(segment);
-  const Vec3 axis = seg.distal - seg.proximal;
-  const double length = axis.norm();
-  const double along =
-      length > 0.0 ? std::clamp((rest_point - seg.proximal).dot(axis) / length, 0.0, length) : 0.0;
-  occlude(segment, along);
+  const double along = core::nearest_point_on_segment(tree_, segment, rest_point).along;
+  occlude(segment, along * (seg.distal - seg.proximal).norm());
 }
 
 bool PulseWaves::occlude_nearest(const Vec3& rest_point, double reach) {
-  int best = -1;
-  double best_distance = std::numeric_limits<double>::infinity();
-  for (std::size_t k = 0; k < tree_.segments.size(); ++k) {
-    const auto& seg = tree_.segments[k];
-    const Vec3 axis = seg.distal - seg.proximal;
-    const double length2 = axis.squaredNorm();
-    const double t =
-        length2 > 0.0 ? std::clamp((rest_point - seg.proximal).dot(axis) / length2, 0.0, 1.0) : 0.0;
-    const double d = (seg.proximal + t * axis - rest_point).norm() - seg.radius;
-    if (d < best_distance) best_distance = d, best = static_cast<int>(k);
-  }
-  if (best < 0 || best_distance > reach) return false;
-  occlude_at(best, rest_point);
+  const core::VesselSegmentPoint nearest = core::nearest_point_on_vessel(tree_, rest_point);
+  if (nearest.segment < 0 || nearest.wall_distance > reach) return false;
+  occlude_at(nearest.segment, rest_point);
   return true;
 }
 

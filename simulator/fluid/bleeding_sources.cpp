@@ -1,8 +1,11 @@
 #include "simulator/fluid/bleeding_sources.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <utility>
+
+#include "core/scenario/vessel_paths.h"
 
 namespace viscera::sim::fluid {
 namespace {
@@ -24,6 +27,7 @@ int BleedingSources::add_cut(int body, std::span<const core::VesselTree> trees,
       BleedingSource source;
       source.vessel_tree = tree.id;
       source.segment = vessel.segment;
+      source.along = vessel.along;
       source.path = std::move(vessel.path);
       source.radius = vessel.radius;
       source.level = vessel.level;
@@ -101,21 +105,23 @@ int BleedingSources::coagulate(const core::Vec3& tip, double radius,
   return stopped;
 }
 
-int BleedingSources::clip(const std::string& vessel_tree, int segment, double time) {
+int BleedingSources::clip_where(const std::string& vessel_tree, double time,
+                                const std::function<bool(const BleedingSource&)>& clipped) {
   int stopped = 0;
   for (BleedingSource& source : sources_) {
     if (source.capillary || source.stop != BleedingStop::Bleeding ||
-        source.vessel_tree != vessel_tree)
+        source.vessel_tree != vessel_tree || !clipped(source))
       continue;
-    for (const int on_path : source.path) {
-      if (on_path == segment) {
-        stop(source, BleedingStop::Clipped, time);
-        ++stopped;
-        break;
-      }
-    }
+    stop(source, BleedingStop::Clipped, time);
+    ++stopped;
   }
   return stopped;
+}
+
+int BleedingSources::clip(const std::string& vessel_tree, int segment, double time) {
+  return clip_where(vessel_tree, time, [&](const BleedingSource& source) {
+    return std::find(source.path.begin(), source.path.end(), segment) != source.path.end();
+  });
 }
 
 void BleedingSources::set_pulse(std::size_t index, double period, double delay, double amplitude) {
@@ -125,11 +131,18 @@ void BleedingSources::set_pulse(std::size_t index, double period, double delay, 
   source.pulse_amplitude = amplitude;
 }
 
-bool BleedingSources::clip_source(std::size_t index, double time) {
-  BleedingSource& source = sources_.at(index);
-  if (source.stop != BleedingStop::Bleeding) return false;
-  stop(source, BleedingStop::Clipped, time);
-  return true;
+int BleedingSources::clip_at(int body, const core::VesselTree& tree, const core::Vec3& rest_point,
+                             double reach, double time) {
+  return clip_where(tree.id, time, [&](const BleedingSource& source) {
+    if (source.body != body) return false;
+    return std::any_of(source.path.begin(), source.path.end(), [&](int segment) {
+      const core::VesselSegmentPoint clip =
+          core::nearest_point_on_segment(tree, segment, rest_point);
+      // On the opened segment, only a clip proximal to the opening lies upstream of it.
+      return clip.wall_distance <= reach &&
+             (segment != source.segment || clip.along < source.along);
+    });
+  });
 }
 
 void BleedingSources::stop(BleedingSource& source, BleedingStop why, double time) {

@@ -9,12 +9,13 @@
 /// A source stops for good (seed 000 §6.2 "it stops after a given time; however, it can also be
 /// affected by coagulation procedures or pressure increase"):
 /// - coagulated: the electrode's tip within its radius of the site;
-/// - clipped: a clip on a segment of its root path (seed 001 §5.1.2), a vessel source only;
+/// - clipped: a clip between the tree's root and the opening (seed 001 §5.1.2; vessels only);
 /// - clotted: capillary ooze decays as exp(−t/τ) and counts as stopped once below 1 % of its
 ///   opening rate. Named vessels do not clot by themselves.
 /// Pressure stops a source only while the cavity stays above the vessel's pressure.
 
 #include <array>
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -33,6 +34,7 @@ struct BleedingSource {
   bool capillary = false;      ///< ooze over a cut surface, not a named vessel
   std::string vessel_tree;     ///< the tree's id (vessel sources)
   int segment = -1;            ///< in that tree (vessel sources)
+  double along = 0.0;          ///< of the opening on it, 0 proximal … 1 distal (vessel sources)
   std::vector<int> path;       ///< the segment's root path (vessel sources)
   double radius = 0.0;         ///< m, vessel radius (vessel sources)
   int level = 0;               ///< bifurcations from the tree's root (vessel sources)
@@ -83,8 +85,14 @@ class BleedingSources {
   /// Stops every vessel source of `vessel_tree` whose root path runs through `segment` (a clip
   /// between the root and the cut). Returns how many.
   int clip(const std::string& vessel_tree, int segment, double time);
-  /// Stops source `index` (into sources()) as clipped, when it still bleeds. Returns whether.
-  bool clip_source(std::size_t index, double time);
+  /// A clip closed at `rest_point` (m, in the frame `tree` was authored in: its host's rest
+  /// frame) on body `body`, at session time `time` s. It stops every bleeding vessel source of
+  /// `tree` on that body whose blood passes it on the way from the tree's root to the opening
+  /// (seed 001 §5.1.2): the clip lies within `reach` m of the wall of a segment on the source's
+  /// root path and, on the opened segment itself, proximal to the opening. A clip beyond the
+  /// opening, or on another branch, stops nothing. Returns how many sources it stopped.
+  int clip_at(int body, const core::VesselTree& tree, const core::Vec3& rest_point, double reach,
+              double time);
   /// Makes source `index` pulse (BleedingSource::pulse_period, s; delay, s; amplitude, 0…1).
   void set_pulse(std::size_t index, double period, double delay, double amplitude);
 
@@ -93,6 +101,10 @@ class BleedingSources {
 
  private:
   void stop(BleedingSource& source, BleedingStop why, double time);
+  /// Stops, as clipped at `time` s, every bleeding vessel source of `vessel_tree` that
+  /// `clipped` picks. Returns how many.
+  int clip_where(const std::string& vessel_tree, double time,
+                 const std::function<bool(const BleedingSource&)>& clipped);
 
   BleedingPhysiology physiology_;
   std::vector<BleedingSource> sources_;

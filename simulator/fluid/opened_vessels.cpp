@@ -44,13 +44,12 @@ std::optional<Crossing> segment_crosses_triangle(const core::Vec3& a, const core
 /// segment's axis and calls the lumen opened when they surround it (their unit directions out
 /// from the axis average to less than half a unit: a one-sided cut beside a vessel averages
 /// near one); the crossing is the face nearest the axis, at its centroid.
-std::optional<Crossing> ring_around_lumen(const core::VesselSegment& segment,
+std::optional<Crossing> ring_around_lumen(const core::VesselTree& tree, int s,
                                           std::span<const core::Vec3> nodes,
                                           std::span<const core::Triangle> triangles,
                                           int& nearest_triangle) {
-  const core::Vec3 axis = segment.distal - segment.proximal;
-  const double length2 = axis.squaredNorm();
-  if (!(length2 > 0.0)) return std::nullopt;
+  const core::VesselSegment& segment = tree.segments[static_cast<std::size_t>(s)];
+  if (!((segment.distal - segment.proximal).squaredNorm() > 0.0)) return std::nullopt;
   core::Vec3 outward_sum = core::Vec3::Zero();
   int around = 0;
   double best = std::numeric_limits<double>::infinity();
@@ -61,17 +60,16 @@ std::optional<Crossing> ring_around_lumen(const core::VesselSegment& segment,
         (nodes[static_cast<std::size_t>(tri[0])] + nodes[static_cast<std::size_t>(tri[1])] +
          nodes[static_cast<std::size_t>(tri[2])]) /
         3.0;
-    const double along = (c - segment.proximal).dot(axis) / length2;
-    if (along < 0.0 || along > 1.0) continue;
-    const core::Vec3 out = c - (segment.proximal + along * axis);
-    const double distance = out.norm();
+    const core::VesselSegmentPoint at = core::nearest_point_on_segment(tree, s, c);
+    if (at.projection < 0.0 || at.projection > 1.0) continue;  // beside the segment only
+    const double distance = at.distance;
     if (distance > 1.5 * segment.radius || !(distance > 0.0)) continue;
-    outward_sum += out / distance;
+    outward_sum += (c - at.point) / distance;
     ++around;
     if (distance < best) {
       best = distance;
       nearest_triangle = t;
-      crossing = Crossing{along, core::Vec3::Constant(1.0 / 3.0)};
+      crossing = Crossing{at.along, core::Vec3::Constant(1.0 / 3.0)};
     }
   }
   if (around < 3 || outward_sum.norm() > 0.5 * around) return std::nullopt;
@@ -111,7 +109,7 @@ std::vector<OpenedVessel> find_opened_vessels(const core::VesselTree& tree,
         nearest_triangle = t;
       }
     }
-    if (!nearest) nearest = ring_around_lumen(segment, nodes, triangles, nearest_triangle);
+    if (!nearest) nearest = ring_around_lumen(tree, s, nodes, triangles, nearest_triangle);
     if (!nearest) continue;
 
     OpenedVessel vessel;
@@ -119,6 +117,7 @@ std::vector<OpenedVessel> find_opened_vessels(const core::VesselTree& tree,
     vessel.triangle = nearest_triangle;
     vessel.barycentric = nearest->barycentric;
     vessel.site = segment.proximal + nearest->along * (segment.distal - segment.proximal);
+    vessel.along = nearest->along;
     vessel.radius = segment.radius;
     vessel.path = paths[static_cast<std::size_t>(s)];
     const core::VesselSegment& root = tree.segments[static_cast<std::size_t>(vessel.path.front())];

@@ -44,6 +44,7 @@ struct OpenedVessel {
   int triangle = 0;          ///< the cut triangle its axis crosses (index into the given list)
   core::Vec3 barycentric;    ///< of the crossing in that triangle
   core::Vec3 site;           ///< m, the crossing in the body's rest frame
+  double along = 0.0;        ///< where the crossing lies on the segment: 0 proximal … 1 distal
   double radius = 0.0;       ///< m
   int level = 0;             ///< bifurcations between the tree's root and the segment
   std::vector<int> path;     ///< segments from the root to this one, both included

@@ -126,7 +126,7 @@ LaparoscopicTools::LaparoscopicTools(World& world, LaparoscopicToolOptions optio
     dose_[b].assign(static_cast<std::size_t>(world.state().body(static_cast<int>(b)).count), 0.0);
     coagulated_[b].assign(dose_[b].size(), 0);
   }
-  auto grasp = std::make_unique<GraspTerm>(options_.grasp_stiffness, bodies_, world.state());
+  auto grasp = std::make_unique<GraspTerm>(options_.grasp_stiffness);
   grasp_ = grasp.get();
   world.add_term(std::move(grasp));
 }

@@ -65,31 +65,9 @@ void SessionRunner::start_tools(const core::Scenario& scenario) {
     stop_pulse_near(body, rest, kVesselReach, time, "a clip");
     // A clip between the root and a cut stops that cut's arterial bleeding (seed 001 §5.1.2).
     if (!bleeding_) return;
-    // Between the root and the opening: on a segment of the opened vessel's root path, and on
-    // the opened segment itself only proximal to the opening.
     int stopped = 0;
-    const auto rest_positions = world_.state().range(world_.state().rest_positions, body);
-    for (std::size_t i = 0; i < bleeding_->sources().size(); ++i) {
-      const fluid::BleedingSource& source = bleeding_->sources()[i];
-      if (source.capillary || source.body != body) continue;
-      const core::VesselTree* tree = nullptr;
-      for (const core::VesselTree& t : hosted_trees_[static_cast<std::size_t>(body)])
-        if (t.id == source.vessel_tree) tree = &t;
-      if (tree == nullptr) continue;
-      const core::Vec3 site = fluid::site_position(source, rest_positions);
-      for (const int s : source.path) {
-        const auto& seg = tree->segments[static_cast<std::size_t>(s)];
-        const core::Vec3 axis = seg.distal - seg.proximal;
-        const double along = std::clamp(
-            (rest - seg.proximal).dot(axis) / std::max(axis.squaredNorm(), 1e-18), 0.0, 1.0);
-        if ((seg.proximal + along * axis - rest).norm() - seg.radius > kVesselReach) continue;
-        const double site_along =
-            (site - seg.proximal).dot(axis) / std::max(axis.squaredNorm(), 1e-18);
-        if (s == source.segment && along >= site_along) continue;  // beyond the opening
-        if (bleeding_->clip_source(i, time)) ++stopped;
-        break;
-      }
-    }
+    for (const core::VesselTree& tree : hosted_trees_[static_cast<std::size_t>(body)])
+      stopped += bleeding_->clip_at(body, tree, rest, kVesselReach, time);
     if (stopped > 0)
       report_.events.push_back(
           {time, "bleeding-clipped", std::to_string(stopped) + " bleeding source(s) clipped"});

@@ -36,10 +36,12 @@ SmokeBillboard SurgicalSmoke::billboard(const Puff& p) const {
 void SurgicalSmoke::step(double time, double dt, const std::optional<core::Vec3>& coagulating_at,
                          const core::Vec3& up, const core::Vec3& lens) {
   time_ = time;
-  std::erase_if(puffs_, [&](const Puff& p) { return time - p.born >= options_.life; });
+  if (std::erase_if(puffs_, [&](const Puff& p) { return time - p.born >= options_.life; }) > 0)
+    puffs_changed_ = true;
   if (coagulating_at && time >= next_puff_ - 1e-12) {
     puffs_.push_back({*coagulating_at, up, time, emitted_++});
     next_puff_ = time + options_.puff_interval;
+    puffs_changed_ = true;
   }
   // The lens fogs near hot tissue and in smoke, and clears by itself.
   const bool near_heat = coagulating_at && (*coagulating_at - lens).norm() <= options_.lens_reach;
@@ -49,10 +51,17 @@ void SurgicalSmoke::step(double time, double dt, const std::optional<core::Vec3>
   fog_ += dt * steam * (1.0 - fog_);
   fog_ *= std::exp(-dt / options_.lens_clear_time);
   peak_fog_ = std::max(peak_fog_, fog_);
-  double densest = 0.0;
-  for (const SmokeBillboard& b : now)
-    densest = std::max(densest, stacked_opacity(now, b.centre));
-  if (densest > options_.visible_opacity) smoke_time_ += dt;
+  // The densest point is O(n²) in the puffs: looked for again only when they change or a puff
+  // interval has passed.
+  if (puffs_changed_ || time >= smoky_checked_at_ + options_.puff_interval - 1e-12) {
+    double densest = 0.0;
+    for (const SmokeBillboard& b : now)
+      densest = std::max(densest, stacked_opacity(now, b.centre));
+    smoky_ = densest > options_.visible_opacity;
+    smoky_checked_at_ = time;
+    puffs_changed_ = false;
+  }
+  if (smoky_) smoke_time_ += dt;
 }
 
 int SurgicalSmoke::suck(const core::Vec3& tip, double radius, double time) {
@@ -60,6 +69,7 @@ int SurgicalSmoke::suck(const core::Vec3& tip, double radius, double time) {
   const auto before = puffs_.size();
   std::erase_if(puffs_,
                 [&](const Puff& p) { return (billboard(p).centre - tip).norm() <= radius; });
+  if (puffs_.size() != before) puffs_changed_ = true;
   return static_cast<int>(before - puffs_.size());
 }
 

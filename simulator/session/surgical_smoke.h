@@ -21,6 +21,7 @@
 ///
 /// Deterministic: no random numbers; the same inputs give the same puffs.
 
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -71,7 +72,10 @@ class SurgicalSmoke {
   double lens_fog() const { return fog_; }  ///< 0 (clear) … 1
   double peak_lens_fog() const { return peak_fog_; }
   /// s with the field visibly smoky: some puff's centre under a stacked opacity above
-  /// `visible_opacity`.
+  /// `visible_opacity`. That check is O(n²) in the puffs, so step() makes it only when puffs
+  /// were added or removed (by step() or suck()) or `puff_interval` s after the last one, and
+  /// counts the steps in between as it found; each change between smoky and clear may be
+  /// counted up to one puff interval late (a step-by-step check would differ by that much).
   double smoke_time() const { return smoke_time_; }
   int puffs_emitted() const { return emitted_; }
 
@@ -91,6 +95,9 @@ class SurgicalSmoke {
   double next_puff_ = 0.0;  ///< s, the earliest time of the next puff
   double fog_ = 0.0, peak_fog_ = 0.0, smoke_time_ = 0.0;
   int emitted_ = 0;
+  bool smoky_ = false;          ///< the last densest-point check found the field smoky
+  bool puffs_changed_ = false;  ///< puffs added or removed since that check
+  double smoky_checked_at_ = -std::numeric_limits<double>::infinity();  ///< s, its time
 };
 
 }  // namespace viscera::sim

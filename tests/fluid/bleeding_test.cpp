@@ -1,8 +1,8 @@
 // Bleeding from opened vessels (simulator/fluid/opened_vessels.h, bleeding_sources.h): a cut
 // through a vessel of known radius bleeds at the Poiseuille rate the model states and stops when
 // the cavity pressure passes the vessel pressure (issue 18 tests); the tree's geometry decides
-// which vessels open, and coagulation, a clip between the root and the cut, and clotting of
-// capillary ooze stop the sources they should and no others.
+// which vessels open, and coagulation, a clip between the root and the cut (not one beyond it)
+// and clotting of capillary ooze stop the sources they should and no others.
 
 #include <gtest/gtest.h>
 
@@ -246,4 +246,39 @@ TEST(OpenedVessels, a_hollow_vessel_cut_across_its_wall_ring_opens_and_a_cut_bes
   // The same faces on one side of the axis only (a cut beside a vessel in solid tissue).
   std::vector<core::Triangle> beside(ring.begin(), ring.begin() + 3);
   EXPECT_TRUE(find_opened_vessels(tree, nodes, beside, BleedingPhysiology{}).empty());
+}
+
+TEST(Bleeding, a_clip_between_the_root_and_the_opening_stops_it_and_one_beyond_does_not) {
+  const core::VesselTree tree = forked_artery();
+  const CutPlane cut = cut_plane(0.03);  // opens both branches 10/17.3 of the way along
+  BleedingSources sources;
+  ASSERT_EQ(sources.add_cut(3, std::span(&tree, 1), cut.nodes, cut.triangles, 2.0), 2);
+  const double opening = 0.01 / 0.0173;
+  EXPECT_NEAR(sources.sources()[0].along, opening, 1e-9);
+  const auto on = [&](int segment, double along) {
+    const core::VesselSegment& s = tree.segments[static_cast<std::size_t>(segment)];
+    return core::Vec3(s.proximal + along * (s.distal - s.proximal));
+  };
+  constexpr double kReach = 1.5e-3;
+
+  // Beyond the opening on the +x branch, beside the vessels, on another body or another tree:
+  // nothing stops.
+  EXPECT_EQ(sources.clip_at(3, tree, on(1, 0.9), kReach, 4.0), 0);
+  EXPECT_EQ(sources.clip_at(3, tree, on(1, 0.3) + core::Vec3(0, 0.005, 0), kReach, 4.0), 0);
+  EXPECT_EQ(sources.clip_at(0, tree, on(1, 0.3), kReach, 4.0), 0);
+  core::VesselTree other = tree;
+  other.id = "other-tree";
+  EXPECT_EQ(sources.clip_at(3, other, on(1, 0.3), kReach, 4.0), 0);
+  EXPECT_EQ(sources.sources()[0].stop, BleedingStop::Bleeding);
+
+  // Upstream of the opening on the same branch: that branch stops, its sister bleeds on.
+  EXPECT_EQ(sources.clip_at(3, tree, on(1, 0.3), kReach, 5.0), 1);
+  EXPECT_EQ(sources.sources()[0].stop, BleedingStop::Clipped);
+  EXPECT_EQ(sources.sources()[0].stopped_at, 5.0);
+  EXPECT_EQ(sources.sources()[1].stop, BleedingStop::Bleeding);
+  // On the root, which feeds the sister: it stops too (and the clipped one is not counted again).
+  EXPECT_EQ(sources.clip_at(3, tree, on(0, 0.5), kReach, 6.0), 1);
+  EXPECT_EQ(sources.sources()[1].stop, BleedingStop::Clipped);
+  EXPECT_EQ(sources.sources()[0].stopped_at, 5.0);
+  EXPECT_EQ(sources.sources()[2].stop, BleedingStop::Bleeding);  // the ooze is not a vessel
 }

@@ -34,7 +34,7 @@ std::vector<NodeReference> all_nodes(const SimulationState& state) {
 
 TEST(GraspTerm, forces_are_the_energy_gradient_and_the_jaws_feel_the_opposite) {
   SimulationState state = four_nodes();
-  GraspTerm grasp(30.0, {0}, state);
+  GraspTerm grasp(30.0);
   const core::Mat3 turn = Eigen::AngleAxisd(0.3, core::Vec3::UnitZ()).toRotationMatrix();
   grasp.hold(state, all_nodes(state), core::Vec3(0.01, 0.01, 0.0), turn);
   // Held where they were: no force until the jaws move.
@@ -57,7 +57,7 @@ TEST(GraspTerm, forces_are_the_energy_gradient_and_the_jaws_feel_the_opposite) {
 
 TEST(GraspTerm, a_knot_pulled_past_the_slip_force_tears_out_of_the_jaws) {
   SimulationState state = four_nodes();
-  GraspTerm grasp(30.0, {0}, state);
+  GraspTerm grasp(30.0);
   grasp.hold(state, all_nodes(state), core::Vec3::Zero(), core::Mat3::Identity());
   std::vector<core::Vec3> x = state.positions;
   x[1] += core::Vec3(0.05, 0.0, 0.0);  // 1.5 N on knot 1, none on the others

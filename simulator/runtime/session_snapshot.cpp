@@ -1,5 +1,6 @@
 #include "simulator/runtime/session_snapshot.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "simulator/session/session_runner.h"
@@ -35,6 +36,16 @@ void capture_snapshot(const SessionRunner& runner, SessionSnapshot& out) {
   out.haze_density = 0.0;
   out.bubbles.clear();
   out.bubble_size.clear();
+  out.irrigation_drops.clear();
+  out.irrigation_drop_age.clear();
+  if (const SuctionIrrigation* cannula = runner.irrigation()) {
+    const fluid::IrrigationJet& jet = cannula->jet();
+    for (const fluid::JetDrop& drop : jet.drops()) {
+      out.irrigation_drops.push_back(drop.position);
+      out.irrigation_drop_age.push_back(
+          static_cast<float>(std::min(1.0, drop.age / jet.options().max_flight)));
+    }
+  }
   out.smoke.clear();
   out.lens_fog = 0.0;
   out.tools = runner.tools() != nullptr;

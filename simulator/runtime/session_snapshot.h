@@ -44,6 +44,10 @@ struct SessionSnapshot {
   /// bubbles' range (0 smallest … 1 largest).
   std::vector<core::Vec3> bubbles;
   std::vector<float> bubble_size;
+  /// The irrigation jet's drops in flight (issue 19 §3): positions (m) and age over the
+  /// longest flight (0…1).
+  std::vector<core::Vec3> irrigation_drops;
+  std::vector<float> irrigation_drop_age;
   /// Smoke of coagulation (issue 19 §4): camera-facing puffs, and the steam on the lens (0…1).
   std::vector<SmokeBillboard> smoke;
   double lens_fog = 0.0;

@@ -47,6 +47,7 @@ EndoscopicView::EndoscopicView(const core::Scenario& scenario, const std::filesy
   surfaces_->add_to(scene_);
   blood_ = std::make_unique<ParticleBillboards>(scene_, kBloodLook);
   bubbles_ = std::make_unique<ParticleBillboards>(scene_, kBubbleLook);
+  drops_ = std::make_unique<ParticleBillboards>(scene_, kDropLook);
   smoke_ = std::make_unique<SmokeBillboards>(scene_);
 
   // The head light: a spot at the tip along the optics, dimming with distance.
@@ -114,6 +115,7 @@ void EndoscopicView::update(const sim::SessionSnapshot& snapshot) {
   surfaces_->update(snapshot.bodies);
   blood_->update(snapshot.blood, snapshot.blood_stage);
   bubbles_->update(snapshot.bubbles, snapshot.bubble_size);
+  drops_->update(snapshot.irrigation_drops, snapshot.irrigation_drop_age);
   if (lens_) {
     lens_->haze_density = snapshot.haze_density;
     lens_->lens_fog = snapshot.lens_fog;

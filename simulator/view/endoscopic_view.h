@@ -85,6 +85,7 @@ class EndoscopicView {
   const SceneSurfaces& surfaces() const { return *surfaces_; }
   const ParticleBillboards& blood() const { return *blood_; }
   const ParticleBillboards& bubbles() const { return *bubbles_; }
+  const ParticleBillboards& irrigation_drops() const { return *drops_; }
   const SmokeBillboards& smoke() const { return *smoke_; }
   /// The steam on the lens in the lens pass, 0…1 (0 without lens effects).
   double lens_fog() const;
@@ -100,7 +101,7 @@ class EndoscopicView {
   vtkSmartPointer<EndoscopeLensPass> lens_;
   std::unique_ptr<SceneSurfaces> surfaces_;
   std::unique_ptr<SessionOverlay> overlay_;
-  std::unique_ptr<ParticleBillboards> blood_, bubbles_;
+  std::unique_ptr<ParticleBillboards> blood_, bubbles_, drops_;
   std::unique_ptr<SmokeBillboards> smoke_;
   sim::SessionSnapshot captured_;  ///< reused by update(runner)
 };

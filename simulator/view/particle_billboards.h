@@ -8,7 +8,8 @@
 /// between the two ends of a ParticleLook: for blood the age over life, from a small bright
 /// arterial-red drop to a larger dark venous-red one (the blood the particles release clouds
 /// the view as the lens pass's haze, from the concentration field); for bubbles the radius
-/// within its range, from a small to a large silvery one. Sprites are sized in pixels, not
+/// within its range, from a small to a large silvery one; for the irrigation jet's drops the
+/// age over their longest flight. Sprites are sized in pixels, not
 /// metres, and square: blended world-size splats cost seconds a frame on a software rasteriser
 /// with 10,000 of them, sphere impostors 40 ms. Sizes and colours are stated choices; the seed
 /// gives none.
@@ -40,7 +41,9 @@ struct ParticleLook {
 
 /// Blood: 6 px bright arterial red at birth to 12 px dark venous red at the end of its life.
 inline constexpr ParticleLook kBloodLook{{0.72, 0.03, 0.03}, {0.32, 0.05, 0.05}, 6.0, 12.0, 0.35};
-/// Air bubbles: 4 px to 10 px from the smallest radius to the largest, silvery and bright.
+/// Irrigation drops: 3 px to 5 px over their flight, pale blue-white saline.
+inline constexpr ParticleLook kDropLook{{0.78, 0.86, 0.95}, {0.70, 0.80, 0.92}, 3.0, 5.0, 0.6};
+/// Air bubbles: 5 px to 12 px from the smallest radius to the largest, silvery and bright.
 inline constexpr ParticleLook kBubbleLook{
     {0.80, 0.86, 0.92}, {0.92, 0.95, 1.0}, 5.0, 12.0, 0.5, true};
 

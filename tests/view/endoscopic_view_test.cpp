@@ -244,6 +244,39 @@ TEST(EndoscopicView, coagulation_smoke_veils_the_picture_and_a_steamed_lens_blur
   EXPECT_LT(testing::mean_abs_difference(clear, view.capture(), 0.9), 0.5);
 }
 
+TEST(EndoscopicView, air_bubbles_and_irrigation_drops_show_as_pale_particles) {
+  // Seed 000 §7 (bubbles) and issue 19 §3 (the jet): pale sprites in front of the optics lift
+  // the blue share of the reddish picture; without them it comes back exactly.
+  const auto& patient = testing::hysteroscopy_patient();
+  view::EndoscopicView view(patient.scenario, patient.package, offscreen(true));
+  const double angle = patient.scenario.session.instrument.optics_angle;
+  sim::SessionSnapshot snapshot = starting_snapshot(patient.scenario);
+  view.update(snapshot);
+  const auto clear = view.capture();
+  const FrameStatistics before = frame_statistics(clear, 0.9);
+  const core::Vec3 ahead =
+      snapshot.instrument.tip + 0.008 * sim::view_direction(snapshot.instrument, angle);
+  const core::Vec3 side = snapshot.instrument.up.cross(snapshot.instrument.axis).normalized();
+  for (int a = -10; a <= 10; ++a)
+    for (int b = -10; b <= 10; ++b) {
+      const core::Vec3 at = ahead + 0.0002 * (a * side + b * snapshot.instrument.up);
+      ((a + b) % 2 == 0 ? snapshot.bubbles : snapshot.irrigation_drops).push_back(at);
+      ((a + b) % 2 == 0 ? snapshot.bubble_size : snapshot.irrigation_drop_age).push_back(0.5f);
+    }
+  view.update(snapshot);
+  EXPECT_EQ(view.bubbles().size(), snapshot.bubbles.size());
+  EXPECT_EQ(view.irrigation_drops().size(), snapshot.irrigation_drops.size());
+  const FrameStatistics pale = frame_statistics(view.capture(), 0.9);
+  EXPECT_GT(testing::mean_abs_difference(clear, view.capture(), 0.9), 1.0);
+  EXPECT_GT(pale.chromaticity[2], before.chromaticity[2] + 0.01);
+  snapshot.bubbles.clear();
+  snapshot.bubble_size.clear();
+  snapshot.irrigation_drops.clear();
+  snapshot.irrigation_drop_age.clear();
+  view.update(snapshot);
+  EXPECT_LT(testing::mean_abs_difference(clear, view.capture(), 0.9), 0.5);
+}
+
 TEST(SessionOverlay, force_bars_fill_and_warn_as_the_force_nears_the_limit) {
   EXPECT_EQ(view::force_alert(0.5, 1.0), "");
   EXPECT_EQ(view::force_alert(0.9, 1.0), "approaching");

@@ -14,29 +14,19 @@
 #include "simulator/session/headless_session.h"
 #include "simulator/session/instrument_input.h"
 #include "templates/template_catalog.h"
+#include "tests/simulator/left_tube_patient.h"
 #include "tests/support/test_paths.h"
 
 namespace viscera::sim {
 namespace {
 
-/// The patient's left tube, its landmarks and the sterilisation procedure.
-const core::Scenario& tube_patient() {
-  static const core::Scenario s = [] {
-    core::Scenario p = templates::build_from_template("laparoscopy-gyn", {}, 1);
-    std::erase_if(p.objects, [](const auto& o) { return o.id != "tube-left"; });
-    p.connections.clear();
-    p.vessel_trees.clear();
-    p.active_deformations.clear();
-    return p;
-  }();
-  return s;
-}
+using testing::left_tube_patient;
 
 nlohmann::json script_json(const std::string& who) {
   const std::string file =
       (testing::source_dir() / ("data/scripts/laparoscopy-sterilisation-" + who + ".json"))
           .string();
-  return resolve_script_landmarks(core::read_json_file(file), tube_patient().landmarks, file);
+  return resolve_script_landmarks(core::read_json_file(file), left_tube_patient().landmarks, file);
 }
 
 SessionReport run_json(const nlohmann::json& json, bool record = false) {
@@ -46,7 +36,7 @@ SessionReport run_json(const nlohmann::json& json, bool record = false) {
   options.instrument = &input;
   options.instrument_body = "tube-left";
   options.record_inputs = record;
-  return run_headless(tube_patient(), options);
+  return run_headless(left_tube_patient(), options);
 }
 
 const TaskResult& task(const SessionReport& r, const std::string& id) {
@@ -188,7 +178,7 @@ TEST(Sterilisation, the_recorded_session_replays_bit_identically) {
   options.duration = recorded.simulated_time;
   options.instrument = &input;
   options.instrument_body = "tube-left";
-  const SessionReport replayed = run_headless(tube_patient(), options);
+  const SessionReport replayed = run_headless(left_tube_patient(), options);
   EXPECT_EQ(replayed.final_state_hash, recorded.final_state_hash);
   EXPECT_EQ(replayed.checkpoints, recorded.checkpoints);
 }

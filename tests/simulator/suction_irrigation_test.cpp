@@ -15,26 +15,17 @@
 #include "simulator/session/instrument_input.h"
 #include "simulator/session/session_runner.h"
 #include "templates/template_catalog.h"
+#include "tests/simulator/left_tube_patient.h"
 #include "tests/support/test_paths.h"
 
 namespace viscera::sim {
 namespace {
 
-const core::Scenario& tube_patient() {
-  static const core::Scenario s = [] {
-    core::Scenario p = templates::build_from_template("laparoscopy-gyn", {}, 1);
-    std::erase_if(p.objects, [](const auto& o) { return o.id != "tube-left"; });
-    p.connections.clear();
-    p.vessel_trees.clear();
-    p.active_deformations.clear();
-    return p;
-  }();
-  return s;
-}
+using testing::left_tube_patient;
 
 /// The centre of the highest surface triangle of the tube's body at rest, m.
 core::Vec3 top_of_tube() {
-  const World world(tube_patient());
+  const World world(left_tube_patient());
   const auto rest = world.state().range(world.state().rest_positions, 0);
   core::Vec3 top = core::Vec3::Constant(-1e9);
   for (const core::Triangle& t : world.models()[0]->surface) {
@@ -51,7 +42,7 @@ core::Vec3 top_of_tube() {
 /// beside the tube 3 mm over its floor and opens the suction valve from 1.35 s to 1.75 s; ends
 /// at 2 s.
 nlohmann::json cannula_script(bool irrigate) {
-  const core::BoundingBox box = core::bounds(tube_patient().objects[0].surface);
+  const core::BoundingBox box = core::bounds(left_tube_patient().objects[0].surface);
   const core::Vec3 centre = 0.5 * (box.min + box.max), extent = box.max - box.min;
   // Beside the tube across its length, 2 cm clear of it, just over the lowest knot.
   const int across = extent.x() < extent.y() ? 0 : 1;
@@ -87,7 +78,7 @@ CannulaRun run(const InstrumentInput& input, double duration, bool record) {
   options.instrument = &input;
   options.instrument_body = "tube-left";
   options.record_inputs = record;
-  SessionRunner runner(tube_patient(), options);
+  SessionRunner runner(left_tube_patient(), options);
   CannulaRun out;
   while (!runner.finished()) {
     const long long next = runner.world().steps() + 1;
@@ -128,7 +119,7 @@ TEST(SuctionIrrigation, irrigation_fills_the_pool_and_suction_draws_it_off_in_th
   EXPECT_NEAR(r.pool_water, l.pool_volume, 1e-18);
   EXPECT_EQ(l.pool_blood_fraction, 0.0);
   // The pool lies under the tube's lowest knot.
-  EXPECT_NEAR(r.pool_floor, core::bounds(tube_patient().objects[0].surface).min.z(), 2e-3);
+  EXPECT_NEAR(r.pool_floor, core::bounds(left_tube_patient().objects[0].surface).min.z(), 2e-3);
   // The report in ml, valid against the schema.
   const nlohmann::json json = report_to_json(r.report);
   EXPECT_NEAR(json["laparoscopy"]["irrigated_ml"].get<double>(), 10.0, 0.02);
@@ -175,7 +166,7 @@ TEST(SuctionIrrigation, the_recorded_session_replays_bit_identically) {
 }
 
 TEST(SuctionIrrigation, the_sources_blood_joins_the_pool_and_suction_takes_it_in_proportion) {
-  World world(tube_patient());
+  World world(left_tube_patient());
   SuctionIrrigation cannula(world);
   LaparoscopySummary summary;
   InstrumentState state;

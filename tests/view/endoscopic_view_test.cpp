@@ -160,20 +160,34 @@ sim::SessionSnapshot starting_snapshot(const core::Scenario& scenario) {
   return snapshot;
 }
 
+/// The hysteroscopy patient through the lens pass from its starting pose: the view, its input,
+/// and the clear picture with its statistics, for tests that put something in front of it.
+struct ClearStartingView {
+  const testing::Patient& patient = testing::hysteroscopy_patient();
+  view::EndoscopicView view{patient.scenario, patient.package, offscreen(true)};
+  sim::SessionSnapshot snapshot = starting_snapshot(patient.scenario);
+  vtkSmartPointer<vtkImageData> clear;
+  FrameStatistics before;
+
+  ClearStartingView() {
+    view.update(snapshot);
+    clear = view.capture();
+    before = frame_statistics(clear, 0.9);
+  }
+  /// The point `distance` m ahead of the lens along the optics' line of sight.
+  core::Vec3 ahead(double distance) const {
+    return snapshot.instrument.tip +
+           distance * sim::view_direction(snapshot.instrument, snapshot.optics_angle);
+  }
+};
+
 TEST(EndoscopicView, blood_in_the_flow_shows_as_billboards_and_clouds_the_lens) {
   // Issue 18 §5: a cloud of fresh blood particles in front of the optics, then the haze of
   // blood mixed into the fluid. Both turn the picture towards red and darken it.
-  const auto& patient = testing::hysteroscopy_patient();
-  view::EndoscopicView view(patient.scenario, patient.package, offscreen(true));
-  const double angle = patient.scenario.session.instrument.optics_angle;
-  sim::SessionSnapshot snapshot = starting_snapshot(patient.scenario);
-  view.update(snapshot);
-  const auto clear = view.capture();
-  const FrameStatistics before = frame_statistics(clear, 0.9);
-
+  ClearStartingView start;
+  auto& [patient, view, snapshot, clear, before] = start;
   // 2,000 fresh drops in a 4 mm ball 8 mm ahead of the lens.
-  const core::Vec3 ahead =
-      snapshot.instrument.tip + 0.008 * sim::view_direction(snapshot.instrument, angle);
+  const core::Vec3 ahead = start.ahead(0.008);
   std::uint64_t state = 12345;
   const auto uniform = [&state] {
     state = state * 6364136223846793005ull + 1442695040888963407ull;
@@ -209,17 +223,10 @@ TEST(EndoscopicView, blood_in_the_flow_shows_as_billboards_and_clouds_the_lens) 
 TEST(EndoscopicView, coagulation_smoke_veils_the_picture_and_a_steamed_lens_blurs_it) {
   // Issue 19 §4: a column of smoke puffs rising in front of the optics greys the picture and
   // flattens its contrast; a steamed lens blurs and veils it; both go when they are gone.
-  const auto& patient = testing::hysteroscopy_patient();
-  view::EndoscopicView view(patient.scenario, patient.package, offscreen(true));
-  const double angle = patient.scenario.session.instrument.optics_angle;
-  sim::SessionSnapshot snapshot = starting_snapshot(patient.scenario);
-  view.update(snapshot);
-  const auto clear = view.capture();
-  const FrameStatistics before = frame_statistics(clear, 0.9);
-
+  ClearStartingView start;
+  auto& [patient, view, snapshot, clear, before] = start;
   sim::SurgicalSmoke smoke;
-  const core::Vec3 ahead =
-      snapshot.instrument.tip + 0.012 * sim::view_direction(snapshot.instrument, angle);
+  const core::Vec3 ahead = start.ahead(0.012);
   const core::Vec3 up = snapshot.instrument.up;
   for (int k = 1; k <= 2000; ++k)  // 2 s of coagulation, 1 ms steps
     smoke.step(0.001 * k, 0.001, ahead - 0.01 * up, up, snapshot.instrument.tip - 0.1 * up);
@@ -247,15 +254,9 @@ TEST(EndoscopicView, coagulation_smoke_veils_the_picture_and_a_steamed_lens_blur
 TEST(EndoscopicView, air_bubbles_and_irrigation_drops_show_as_pale_particles) {
   // Seed 000 §7 (bubbles) and issue 19 §3 (the jet): pale sprites in front of the optics lift
   // the blue share of the reddish picture; without them it comes back exactly.
-  const auto& patient = testing::hysteroscopy_patient();
-  view::EndoscopicView view(patient.scenario, patient.package, offscreen(true));
-  const double angle = patient.scenario.session.instrument.optics_angle;
-  sim::SessionSnapshot snapshot = starting_snapshot(patient.scenario);
-  view.update(snapshot);
-  const auto clear = view.capture();
-  const FrameStatistics before = frame_statistics(clear, 0.9);
-  const core::Vec3 ahead =
-      snapshot.instrument.tip + 0.008 * sim::view_direction(snapshot.instrument, angle);
+  ClearStartingView start;
+  auto& [patient, view, snapshot, clear, before] = start;
+  const core::Vec3 ahead = start.ahead(0.008);
   const core::Vec3 side = snapshot.instrument.up.cross(snapshot.instrument.axis).normalized();
   for (int a = -10; a <= 10; ++a)
     for (int b = -10; b <= 10; ++b) {

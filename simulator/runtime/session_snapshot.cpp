@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "simulator/session/session_runner.h"
 
@@ -16,6 +17,13 @@ void capture_snapshot(const SessionRunner& runner, SessionSnapshot& out) {
     const BodyView& body = world.bodies()[b];
     if (out.bodies[b].name != body.name()) out.bodies[b].name = body.name();
     out.bodies[b].positions.assign(body.positions().begin(), body.positions().end());
+    out.bodies[b].coagulated.clear();
+    if (const LaparoscopicTools* tools = runner.tools();
+        tools != nullptr && b < tools->coagulated().size()) {
+      const std::vector<std::uint8_t>& flags = tools->coagulated()[b];
+      if (std::find(flags.begin(), flags.end(), 1) != flags.end())
+        out.bodies[b].coagulated.assign(flags.begin(), flags.end());
+    }
   }
   out.instrument = runner.instrument_state();
   out.optics_angle = runner.instrument().optics_angle;

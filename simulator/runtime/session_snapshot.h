@@ -19,6 +19,9 @@ class SessionRunner;
 struct BodyPositions {
   std::string name;
   std::vector<core::Vec3> positions;  ///< m
+  /// Per node, 1 where the bipolar forceps coagulated the tissue (issue 19 §3); empty when no
+  /// node of the body is coagulated.
+  std::vector<float> coagulated;
 };
 
 /// A session as the view draws it.

@@ -12,7 +12,10 @@
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
 #include <vtkTexture.h>
+#include <vtkUnsignedCharArray.h>
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -237,8 +240,45 @@ void SceneSurfaces::update(const std::vector<sim::BodyPositions>& bodies) {
       set_geometry(surface.mesh,
                    core::embedded_positions(*surface.embedding, surface.tets, body.positions),
                    surface.triangles, surface.weld);
+      tint_coagulated(surface, body.coagulated);
     }
   }
+}
+
+void SceneSurfaces::tint_coagulated(Surface& surface, const std::vector<float>& coagulated) {
+  vtkMapper* mapper = surface.actor->GetMapper();
+  if (coagulated.empty()) {
+    if (mapper->GetScalarVisibility() != 0) {
+      mapper->ScalarVisibilityOff();
+      surface.mesh->GetPointData()->RemoveArray("Coagulated");
+    }
+    return;
+  }
+  // The nodes' flags interpolated like positions: x carries each vertex's coagulated share.
+  std::vector<core::Vec3> flags(coagulated.size(), core::Vec3::Zero());
+  for (std::size_t n = 0; n < coagulated.size(); ++n)
+    flags[n].x() = static_cast<double>(coagulated[n]);
+  const std::vector<core::Vec3> share =
+      core::embedded_positions(*surface.embedding, surface.tets, flags);
+  // Textured surfaces: the texture is modulated by the vertex colour; plain ones: the colour is
+  // the surface's own, darkened.
+  double base[3] = {1.0, 1.0, 1.0};
+  if (!surface.actor->GetTexture()) surface.actor->GetProperty()->GetColor(base);
+  vtkNew<vtkUnsignedCharArray> colours;
+  colours->SetName("Coagulated");
+  colours->SetNumberOfComponents(3);
+  colours->SetNumberOfTuples(static_cast<vtkIdType>(share.size()));
+  for (std::size_t v = 0; v < share.size(); ++v) {
+    const double s = std::clamp(share[v].x(), 0.0, 1.0);
+    for (int c = 0; c < 3; ++c) {
+      const double tint = 1.0 + s * (kCoagulatedTint[static_cast<std::size_t>(c)] - 1.0);
+      colours->SetComponent(static_cast<vtkIdType>(v), c, std::round(255.0 * base[c] * tint));
+    }
+  }
+  surface.mesh->GetPointData()->SetScalars(colours);
+  mapper->SetColorModeToDirectScalars();
+  mapper->SetScalarModeToUsePointData();
+  mapper->ScalarVisibilityOn();
 }
 
 vtkImageData* SceneSurfaces::texture_of(const std::string& id) const {

@@ -6,6 +6,7 @@
 
 #include <vtkSmartPointer.h>
 
+#include <array>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -42,14 +43,22 @@ class SceneSurfaces {
   void add_to(vtkRenderer* renderer) const;
   /// Moves the surfaces to the bodies' current positions (objects without a body stay put).
   void update(const sim::World& world);
-  /// The same from a session snapshot's bodies (the render thread of a threaded session).
+  /// The same from a session snapshot's bodies (the render thread of a threaded session), and
+  /// coagulated tissue darkens towards a dry brown (BodyPositions::coagulated, blended over each
+  /// surface vertex's embedding tet): the texture times kCoagulatedTint where every node is
+  /// coagulated. Desiccated tissue is pale tan to brown; modulating the texture can only darken
+  /// it, so the tint is the brown end.
   void update(const std::vector<sim::BodyPositions>& bodies);
+  /// RGB factor on the tissue's colour where it is fully coagulated.
+  static constexpr std::array<double, 3> kCoagulatedTint{0.62, 0.50, 0.40};
 
   /// The albedo texture of object `id`, or null.
   vtkImageData* texture_of(const std::string& id) const;
 
  private:
   struct Surface;
+  /// Colours `surface`'s vertices by the coagulated share of their tet (none: no colours).
+  static void tint_coagulated(Surface& surface, const std::vector<float>& coagulated);
   std::vector<Surface> surfaces_;
 };
 

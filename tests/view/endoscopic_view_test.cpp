@@ -278,6 +278,31 @@ TEST(EndoscopicView, air_bubbles_and_irrigation_drops_show_as_pale_particles) {
   EXPECT_LT(testing::mean_abs_difference(clear, view.capture(), 0.9), 0.5);
 }
 
+TEST(EndoscopicView, coagulated_tissue_darkens_towards_brown_where_its_nodes_are) {
+  // Issue 19 §3: the bipolar forceps' coagulated knots change the tissue's colour. Every body
+  // at rest with its nodes coagulated: the picture darkens and loses red to the brown tint;
+  // with no node coagulated it comes back exactly.
+  ClearStartingView start;
+  auto& [patient, view, snapshot, clear, before] = start;
+  for (const core::SceneObject& object : patient.scenario.objects) {
+    if (object.body.nodes.empty()) continue;
+    sim::BodyPositions body;
+    body.name = object.id;
+    body.positions = object.body.nodes;
+    body.coagulated.assign(object.body.nodes.size(), 1.0f);
+    snapshot.bodies.push_back(std::move(body));
+  }
+  ASSERT_FALSE(snapshot.bodies.empty());
+  view.update(snapshot);
+  const FrameStatistics burnt = frame_statistics(view.capture(), 0.9);
+  EXPECT_LT(burnt.mean_luminance, 0.8 * before.mean_luminance);
+  EXPECT_GT(testing::mean_abs_difference(clear, view.capture(), 0.9), 5.0);
+  for (sim::BodyPositions& body : snapshot.bodies)
+    body.coagulated.clear();
+  view.update(snapshot);
+  EXPECT_LT(testing::mean_abs_difference(clear, view.capture(), 0.9), 0.5);
+}
+
 TEST(SessionOverlay, force_bars_fill_and_warn_as_the_force_nears_the_limit) {
   EXPECT_EQ(view::force_alert(0.5, 1.0), "");
   EXPECT_EQ(view::force_alert(0.9, 1.0), "approaching");

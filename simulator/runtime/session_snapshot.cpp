@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <numbers>
 
 #include "simulator/session/session_runner.h"
 
@@ -63,9 +64,16 @@ void capture_snapshot(const SessionRunner& runner, SessionSnapshot& out) {
   }
   out.pool_volume = 0.0;
   out.pool_blood_fraction = 0.0;
+  out.pool_radius = 0.0;
   if (const SuctionIrrigation* cannula = runner.irrigation()) {
-    out.pool_volume = cannula->pool().contents().total();
-    out.pool_blood_fraction = cannula->pool().blood_fraction();
+    const fluid::FluidPool& pool = cannula->pool();
+    out.pool_volume = pool.contents().total();
+    out.pool_blood_fraction = pool.blood_fraction();
+    if (out.pool_volume > 0.0) {
+      out.pool_up = -pool.down();
+      out.pool_centre = pool.floor() + pool.height() * out.pool_up;
+      out.pool_radius = std::sqrt(pool.area() / std::numbers::pi);
+    }
   }
   if (const fluid::CavityFlow* flow = runner.cavity_flow()) {
     const fluid::BloodParticles& particles = flow->particles();

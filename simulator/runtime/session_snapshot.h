@@ -51,6 +51,11 @@ struct SessionSnapshot {
   /// longest flight (0…1).
   std::vector<core::Vec3> irrigation_drops;
   std::vector<float> irrigation_drop_age;
+  /// The pool's surface (issue 19 §3): its centre (m), up (unit) and radius (m; 0: no pool);
+  /// its blood is pool_blood_fraction.
+  core::Vec3 pool_centre = core::Vec3::Zero();
+  core::Vec3 pool_up = core::Vec3::UnitZ();
+  double pool_radius = 0.0;
   /// Smoke of coagulation (issue 19 §4): camera-facing puffs, and the steam on the lens (0…1).
   std::vector<SmokeBillboard> smoke;
   double lens_fog = 0.0;

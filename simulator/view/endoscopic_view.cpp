@@ -15,6 +15,7 @@
 #include "simulator/view/endoscope_lens_pass.h"
 #include "simulator/view/image_files.h"
 #include "simulator/view/particle_billboards.h"
+#include "simulator/view/pool_surface.h"
 #include "simulator/view/scene_surfaces.h"
 #include "simulator/view/smoke_billboards.h"
 
@@ -48,6 +49,7 @@ EndoscopicView::EndoscopicView(const core::Scenario& scenario, const std::filesy
   blood_ = std::make_unique<ParticleBillboards>(scene_, kBloodLook);
   bubbles_ = std::make_unique<ParticleBillboards>(scene_, kBubbleLook);
   drops_ = std::make_unique<ParticleBillboards>(scene_, kDropLook);
+  pool_ = std::make_unique<PoolSurface>(scene_);
   smoke_ = std::make_unique<SmokeBillboards>(scene_);
 
   // The head light: a spot at the tip along the optics, dimming with distance.
@@ -116,6 +118,8 @@ void EndoscopicView::update(const sim::SessionSnapshot& snapshot) {
   blood_->update(snapshot.blood, snapshot.blood_stage);
   bubbles_->update(snapshot.bubbles, snapshot.bubble_size);
   drops_->update(snapshot.irrigation_drops, snapshot.irrigation_drop_age);
+  pool_->update(snapshot.pool_centre, snapshot.pool_up, snapshot.pool_radius,
+                snapshot.pool_blood_fraction);
   if (lens_) {
     lens_->haze_density = snapshot.haze_density;
     lens_->lens_fog = snapshot.lens_fog;

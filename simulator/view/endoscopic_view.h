@@ -25,6 +25,7 @@ class vtkLight;
 namespace viscera::view {
 
 class ParticleBillboards;
+class PoolSurface;
 class SmokeBillboards;
 class EndoscopeLensPass;
 class SceneSurfaces;
@@ -86,6 +87,7 @@ class EndoscopicView {
   const ParticleBillboards& blood() const { return *blood_; }
   const ParticleBillboards& bubbles() const { return *bubbles_; }
   const ParticleBillboards& irrigation_drops() const { return *drops_; }
+  const PoolSurface& pool() const { return *pool_; }
   const SmokeBillboards& smoke() const { return *smoke_; }
   /// The steam on the lens in the lens pass, 0…1 (0 without lens effects).
   double lens_fog() const;
@@ -102,6 +104,7 @@ class EndoscopicView {
   std::unique_ptr<SceneSurfaces> surfaces_;
   std::unique_ptr<SessionOverlay> overlay_;
   std::unique_ptr<ParticleBillboards> blood_, bubbles_, drops_;
+  std::unique_ptr<PoolSurface> pool_;
   std::unique_ptr<SmokeBillboards> smoke_;
   sim::SessionSnapshot captured_;  ///< reused by update(runner)
 };

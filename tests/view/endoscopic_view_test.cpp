@@ -14,6 +14,7 @@
 #include "core/package/scenario_package.h"
 #include "simulator/session/manual_control.h"
 #include "simulator/view/particle_billboards.h"
+#include "simulator/view/pool_surface.h"
 #include "simulator/view/scene_surfaces.h"
 #include "simulator/view/smoke_billboards.h"
 #include "tests/support/command_runner.h"
@@ -300,6 +301,29 @@ TEST(EndoscopicView, coagulated_tissue_darkens_towards_brown_where_its_nodes_are
   for (sim::BodyPositions& body : snapshot.bodies)
     body.coagulated.clear();
   view.update(snapshot);
+  EXPECT_LT(testing::mean_abs_difference(clear, view.capture(), 0.9), 0.5);
+}
+
+TEST(EndoscopicView, the_pool_shows_as_a_translucent_surface_tinted_by_its_blood) {
+  // Issue 19 §3: a pool across the line of sight veils the tissue; a bloody pool reddens the
+  // picture more than a clear one; without a pool the picture comes back exactly.
+  ClearStartingView start;
+  auto& [patient, view, snapshot, clear, before] = start;
+  snapshot.pool_centre = start.ahead(0.006);
+  snapshot.pool_up = (snapshot.instrument.tip - snapshot.pool_centre).normalized();
+  snapshot.pool_radius = 0.03;
+  snapshot.pool_blood_fraction = 0.0;
+  view.update(snapshot);
+  EXPECT_TRUE(view.pool().visible());
+  const FrameStatistics water = frame_statistics(view.capture(), 0.9);
+  EXPECT_GT(testing::mean_abs_difference(clear, view.capture(), 0.9), 5.0);
+  snapshot.pool_blood_fraction = 1.0;
+  view.update(snapshot);
+  const FrameStatistics blood = frame_statistics(view.capture(), 0.9);
+  EXPECT_GT(blood.chromaticity[0], water.chromaticity[0] + 0.05);
+  snapshot.pool_radius = 0.0;
+  view.update(snapshot);
+  EXPECT_FALSE(view.pool().visible());
   EXPECT_LT(testing::mean_abs_difference(clear, view.capture(), 0.9), 0.5);
 }
 

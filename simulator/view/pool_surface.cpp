@@ -1,22 +1,32 @@
 #include "simulator/view/pool_surface.h"
 
 #include <vtkActor.h>
+#include <vtkCellArray.h>
+#include <vtkNew.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
-#include <vtkRegularPolygonSource.h>
 #include <vtkRenderer.h>
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
 
 namespace viscera::view {
 
 PoolSurface::PoolSurface(vtkRenderer* scene) {
-  disc_ = vtkSmartPointer<vtkRegularPolygonSource>::New();
-  disc_->SetNumberOfSides(64);
-  disc_->GeneratePolygonOn();
-  disc_->GeneratePolylineOff();
+  rim_ = vtkSmartPointer<vtkPoints>::New();
+  rim_->SetNumberOfPoints(kSides);
+  vtkNew<vtkCellArray> polygon;
+  polygon->InsertNextCell(kSides);
+  for (vtkIdType i = 0; i < kSides; ++i)
+    polygon->InsertCellPoint(i);
+  vtkNew<vtkPolyData> disc;
+  disc->SetPoints(rim_);
+  disc->SetPolys(polygon);
   auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
-  mapper->SetInputConnection(disc_->GetOutputPort());
+  mapper->SetInputData(disc);
   actor_ = vtkSmartPointer<vtkActor>::New();
   actor_->SetMapper(mapper);
   vtkProperty* look = actor_->GetProperty();
@@ -37,9 +47,15 @@ void PoolSurface::update(const core::Vec3& centre, const core::Vec3& up, double 
     actor_->SetVisibility(false);
     return;
   }
-  disc_->SetCenter(centre.x(), centre.y(), centre.z());
-  disc_->SetNormal(up.x(), up.y(), up.z());
-  disc_->SetRadius(radius);
+  // Two directions across `up` span the disc.
+  const core::Vec3 n = up.normalized();
+  const core::Vec3 u = n.unitOrthogonal(), v = n.cross(u);
+  for (int i = 0; i < kSides; ++i) {
+    const double angle = 2.0 * std::numbers::pi * i / kSides;
+    const core::Vec3 p = centre + radius * (std::cos(angle) * u + std::sin(angle) * v);
+    rim_->SetPoint(i, p.data());
+  }
+  rim_->Modified();
   const double b = std::clamp(blood_fraction, 0.0, 1.0);
   vtkProperty* look = actor_->GetProperty();
   look->SetColor(0.72 - 0.30 * b, 0.80 - 0.77 * b, 0.86 - 0.82 * b);

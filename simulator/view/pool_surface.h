@@ -10,7 +10,7 @@
 #include "core/math_types.h"
 
 class vtkActor;
-class vtkRegularPolygonSource;
+class vtkPoints;
 class vtkRenderer;
 
 namespace viscera::view {
@@ -29,7 +29,8 @@ class PoolSurface {
   bool visible() const;
 
  private:
-  vtkSmartPointer<vtkRegularPolygonSource> disc_;
+  static constexpr int kSides = 64;  ///< of the polygon drawn for the disc
+  vtkSmartPointer<vtkPoints> rim_;
   vtkSmartPointer<vtkActor> actor_;
 };
 

@@ -175,6 +175,11 @@ struct ClearStartingView {
     clear = view.capture();
     before = frame_statistics(clear, 0.9);
   }
+  /// Shows the snapshot again (with what a test put in front taken out): the clear picture.
+  void expect_the_clear_picture_again() {
+    view.update(snapshot);
+    EXPECT_LT(testing::mean_abs_difference(clear, view.capture(), 0.9), 0.5);
+  }
   /// The point `distance` m ahead of the lens along the optics' line of sight.
   core::Vec3 ahead(double distance) const {
     return snapshot.instrument.tip +
@@ -217,8 +222,7 @@ TEST(EndoscopicView, blood_in_the_flow_shows_as_billboards_and_clouds_the_lens) 
   EXPECT_LT(haze.mean_luminance, before.mean_luminance);
   // Clear fluid again: the picture comes back exactly.
   snapshot.haze_density = 0.0;
-  view.update(snapshot);
-  EXPECT_LT(testing::mean_abs_difference(clear, view.capture(), 0.9), 0.5);
+  start.expect_the_clear_picture_again();
 }
 
 TEST(EndoscopicView, coagulation_smoke_veils_the_picture_and_a_steamed_lens_blurs_it) {
@@ -248,8 +252,7 @@ TEST(EndoscopicView, coagulation_smoke_veils_the_picture_and_a_steamed_lens_blur
   EXPECT_LT(fogged.luminance_stddev, before.luminance_stddev);
   EXPECT_LT(fogged.chromaticity[0], before.chromaticity[0] - 0.01);
   snapshot.lens_fog = 0.0;
-  view.update(snapshot);
-  EXPECT_LT(testing::mean_abs_difference(clear, view.capture(), 0.9), 0.5);
+  start.expect_the_clear_picture_again();
 }
 
 TEST(EndoscopicView, air_bubbles_and_irrigation_drops_show_as_pale_particles) {
@@ -275,8 +278,7 @@ TEST(EndoscopicView, air_bubbles_and_irrigation_drops_show_as_pale_particles) {
   snapshot.bubble_size.clear();
   snapshot.irrigation_drops.clear();
   snapshot.irrigation_drop_age.clear();
-  view.update(snapshot);
-  EXPECT_LT(testing::mean_abs_difference(clear, view.capture(), 0.9), 0.5);
+  start.expect_the_clear_picture_again();
 }
 
 TEST(EndoscopicView, coagulated_tissue_darkens_towards_brown_where_its_nodes_are) {
@@ -300,8 +302,7 @@ TEST(EndoscopicView, coagulated_tissue_darkens_towards_brown_where_its_nodes_are
   EXPECT_GT(testing::mean_abs_difference(clear, view.capture(), 0.9), 5.0);
   for (sim::BodyPositions& body : snapshot.bodies)
     body.coagulated.clear();
-  view.update(snapshot);
-  EXPECT_LT(testing::mean_abs_difference(clear, view.capture(), 0.9), 0.5);
+  start.expect_the_clear_picture_again();
 }
 
 TEST(EndoscopicView, the_pool_shows_as_a_translucent_surface_tinted_by_its_blood) {

@@ -44,6 +44,13 @@ class VisualCutter {
     out_ = in_;
     out_.triangles.clear();
     const std::size_t n = in_.vertices.size();
+    // Cut faces of earlier cuts stay cut faces.
+    cut_flag_.assign(n, 0);
+    if (const auto it = in_.vertex_attributes.find("cut_face");
+        it != in_.vertex_attributes.end() && it->second.size() == n) {
+      for (std::size_t i = 0; i < n; ++i)
+        cut_flag_[i] = it->second[i] > 0.5 ? 1 : 0;
+    }
     material_.resize(n);
     current_.resize(n);
     c_.visual_embedding.tet.resize(n);
@@ -105,7 +112,8 @@ class VisualCutter {
     }
     material_.push_back((1 - t) * material_[a] + t * material_[b]);
     current_.push_back((1 - t) * current_[a] + t * current_[b]);
-    cut_flag_.resize(out_.vertices.size(), 0);
+    // A point on an earlier cut face's edge is on that cut face.
+    cut_flag_.push_back(cut_flag_[a] != 0 && cut_flag_[b] != 0 ? 1 : 0);
     return v;
   }
 
@@ -145,7 +153,7 @@ class VisualCutter {
         auto [it, inserted] = vertex_of_node.try_emplace(node, 0);
         if (inserted) {
           it->second = static_cast<int>(out_.vertices.size());
-          out_.vertices.push_back(c_.current[node]);
+          out_.vertices.push_back(c_.mesh.nodes[node]);  // rest, like every visual vertex
           if (!in_.normals.empty()) out_.normals.push_back(Vec3::UnitZ());
           if (!in_.uvs.empty()) out_.uvs.push_back(core::Vec2::Zero());
           for (auto& [name, values] : out_.vertex_attributes)

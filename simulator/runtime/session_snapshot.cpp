@@ -19,6 +19,9 @@ void capture_snapshot(const SessionRunner& runner, SessionSnapshot& out) {
     if (out.bodies[b].name != body.name()) out.bodies[b].name = body.name();
     out.bodies[b].positions.assign(body.positions().begin(), body.positions().end());
     out.bodies[b].coagulated.clear();
+    out.bodies[b].cut_surface = runner.visible_surfaces() != nullptr
+                                    ? runner.visible_surfaces()->cut_surface(static_cast<int>(b))
+                                    : nullptr;
     if (const LaparoscopicTools* tools = runner.tools();
         tools != nullptr && b < tools->coagulated().size()) {
       const std::vector<std::uint8_t>& flags = tools->coagulated()[b];

@@ -4,12 +4,14 @@
 /// one and hands it to the render thread through a TripleBuffer, so the view never reads the
 /// SessionRunner while it steps.
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "core/math_types.h"
 #include "simulator/session/instrument_state.h"
 #include "simulator/session/surgical_smoke.h"
+#include "simulator/session/visible_surfaces.h"
 
 namespace viscera::sim {
 
@@ -22,6 +24,9 @@ struct BodyPositions {
   /// Per node, 1 where the bipolar forceps coagulated the tissue (issue 19 §3); empty when no
   /// node of the body is coagulated.
   std::vector<float> coagulated;
+  /// The body's visible surface as cut so far (VisibleSurfaces), or null while it is uncut;
+  /// shared, immutable, so the copy is a pointer.
+  std::shared_ptr<const CutVisibleSurface> cut_surface;
 };
 
 /// A session as the view draws it.

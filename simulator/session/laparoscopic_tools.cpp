@@ -333,7 +333,9 @@ void LaparoscopicTools::cut(const InstrumentState& state, World& world, double t
         current[static_cast<std::size_t>(r.node)] / static_cast<double>(between.size());
   record.pieces_before = piece_count(world, body);
   const auto start = std::chrono::steady_clock::now();
-  const cutting::TopologyChange change = cutting::hybrid_cut(model.mesh, current, blades);
+  const cutting::TopologyChange change = visible_ != nullptr
+                                             ? visible_->cut(body, model.mesh, current, blades, {})
+                                             : cutting::hybrid_cut(model.mesh, current, blades);
   if (!change.changed) {
     events.push_back(
         {time, "cut-missed", "the scissors closed on " + model.name + " but cut no tet"});

@@ -48,6 +48,7 @@
 #include "simulator/session/laparoscopy_summary.h"
 #include "simulator/session/session_report.h"
 #include "simulator/session/surgical_smoke.h"
+#include "simulator/session/visible_surfaces.h"
 #include "simulator/world/world.h"
 
 namespace viscera::sim {
@@ -109,6 +110,8 @@ class LaparoscopicTools {
   using CutObserver =
       std::function<void(int body, const cutting::TopologyChange& change, double time)>;
   void on_cut(CutObserver observer) { cut_observer_ = std::move(observer); }
+  /// Cuts go through `surfaces` (null: the tets alone), so the bodies' visible surfaces follow.
+  void cut_visible_surfaces(VisibleSurfaces* surfaces) { visible_ = surfaces; }
 
   /// The knots between the jaws at `state`: body-local nodes of one body (empty when none).
   std::vector<NodeReference> tissue_between_jaws(const World& world, const InstrumentState& state,
@@ -144,6 +147,7 @@ class LaparoscopicTools {
   ClipObserver clip_observer_;
   CoagulationObserver coagulation_observer_;
   CutObserver cut_observer_;
+  VisibleSurfaces* visible_ = nullptr;
 };
 
 /// Where a tool with jaws touches tissue: the hinge, `jaw_length` m behind the tip along the

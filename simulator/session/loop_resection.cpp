@@ -139,7 +139,8 @@ void LoopResection::cut(World& world, double time, CuttingSummary& summary,
     }
     const auto start = std::chrono::steady_clock::now();
     const cutting::TopologyChange change =
-        cutting::hybrid_cut(model.mesh, current, surface, options_);
+        visible_ != nullptr ? visible_->cut(b, model.mesh, current, surface, options_)
+                            : cutting::hybrid_cut(model.mesh, current, surface, options_);
     if (!change.changed) continue;
     world.topology_changed(b, topology_of_cut(change));
     summary.cut_seconds.push_back(

@@ -25,6 +25,7 @@
 #include "simulator/cutting/hybrid_cut.h"
 #include "simulator/session/instrument_state.h"
 #include "simulator/session/session_report.h"
+#include "simulator/session/visible_surfaces.h"
 #include "simulator/world/world.h"
 
 namespace viscera::sim {
@@ -54,6 +55,8 @@ class LoopResection {
   using CutObserver =
       std::function<void(int body, const cutting::TopologyChange& change, double time)>;
   void on_cut(CutObserver observer) { observer_ = std::move(observer); }
+  /// Cuts go through `surfaces` (null: the tets alone), so the bodies' visible surfaces follow.
+  void cut_visible_surfaces(VisibleSurfaces* surfaces) { visible_ = surfaces; }
 
   /// True while the pedal is down.
   bool sweeping() const { return sweeping_; }
@@ -72,6 +75,7 @@ class LoopResection {
   bool sweeping_ = false;
   std::vector<cutting::LoopPose> sweep_;
   CutObserver observer_;
+  VisibleSurfaces* visible_ = nullptr;
 };
 
 }  // namespace viscera::sim

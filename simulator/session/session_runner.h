@@ -79,6 +79,8 @@ class SessionRunner {
   core::Vec3 instrument_force() const;
   /// The laparoscopic tools, or null when the instrument carries none.
   const LaparoscopicTools* tools() const { return tools_.get(); }
+  /// The cut bodies' visible surfaces, or null when no instrument of the session cuts.
+  const VisibleSurfaces* visible_surfaces() const { return visible_.get(); }
   /// The suction–irrigation cannula's jet and the pool, or null when the instrument carries no
   /// laparoscopic tools.
   const SuctionIrrigation* irrigation() const { return irrigation_.get(); }
@@ -121,7 +123,8 @@ class SessionRunner {
   std::unique_ptr<SurfaceCoverage> coverage_;
   /// The resection loop, with a "resectoscope" instrument: it cuts the pathology bodies.
   std::unique_ptr<LoopResection> resection_;
-  std::vector<core::Vec3> coverage_rest_;  ///< visual vertices when the surface has no embedding
+  std::unique_ptr<VisibleSurfaces> visible_;  ///< made by the first cutting instrument
+  std::vector<core::Vec3> coverage_rest_;     ///< visual vertices when the surface has no embedding
   std::vector<Monitor> monitors_;
   int current_ = -1;
   double time_limit_ = 0.0, force_warning_ = 0.0, perforation_depth_ = 0.0;

@@ -26,6 +26,8 @@ void SessionRunner::start_resection(const core::Scenario& scenario) {
       std::make_unique<LoopResection>(world_, std::move(bodies), standard_resection_loop());
   report_.cutting.emplace();
   resection_->begin(world_, *report_.cutting);
+  if (!visible_) visible_ = std::make_unique<VisibleSurfaces>(scenario, world_);
+  resection_->cut_visible_surfaces(visible_.get());
 
   start_bleeding_sources(scenario);
   resection_->on_cut([this](int body, const cutting::TopologyChange& change, double time) {

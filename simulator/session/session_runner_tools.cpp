@@ -34,6 +34,8 @@ void SessionRunner::move_tissue() {
 
 void SessionRunner::start_tools(const core::Scenario& scenario) {
   tools_ = std::make_unique<LaparoscopicTools>(world_);
+  if (!visible_) visible_ = std::make_unique<VisibleSurfaces>(scenario, world_);
+  tools_->cut_visible_surfaces(visible_.get());
   report_.laparoscopy.emplace();
   if (!bleeding_) start_bleeding_sources(scenario);
   tools_->on_cut([this](int body, const cutting::TopologyChange& change, double time) {

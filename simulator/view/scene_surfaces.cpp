@@ -24,6 +24,7 @@
 #include "core/mesh/surface_embedding.h"
 #include "core/package/scenario_package.h"
 #include "core/package/zip_archive.h"
+#include "simulator/view/cut_face_colours.h"
 
 namespace viscera::view {
 
@@ -68,29 +69,68 @@ std::array<double, 3> mean_colour(vtkImageData* image) {
 
 struct SceneSurfaces::Surface {
   std::string id;
-  vtkSmartPointer<vtkPolyData> mesh;
+  vtkSmartPointer<vtkPolyData> mesh;  ///< the skin
   vtkSmartPointer<vtkActor> actor;
   vtkSmartPointer<vtkImageData> texture;
   std::string body;  ///< name of the world body it follows, or ""
   const core::SurfaceEmbedding* embedding = nullptr;
   std::vector<core::Tetrahedron> tets;
-  std::vector<core::Triangle> triangles;
+  std::vector<core::Triangle> triangles;  ///< skin, then cut faces: both shape the normals
   std::vector<int> weld;  ///< per vertex, the first vertex at the same rest position (UV seams)
+  /// Once cut: the surface shown, its cut faces (sharing the skin's points and normals) and
+  /// their colours from the organ's solid texture (0…1, per vertex, zero off the cut faces).
+  std::shared_ptr<const sim::CutVisibleSurface> cut;
+  vtkSmartPointer<vtkPolyData> cut_faces;
+  vtkSmartPointer<vtkActor> cut_actor;
+  std::vector<std::array<double, 3>> cut_colours;
+  std::string texture_preset;  ///< the object's TextureSpec preset ("": none)
+  std::uint64_t texture_seed = 0;
+  std::shared_ptr<const CutFaceColours> inside;  ///< made at the first cut
 };
 
 namespace {
 
-/// Per vertex, the first vertex with bit-identical coordinates: texture atlases split vertices
-/// along seams, and their normals must still agree or the seams show as creases.
-std::vector<int> weld_map(const std::vector<core::Vec3>& points) {
-  std::map<std::array<double, 3>, int> first;
+/// Per vertex, the first vertex with bit-identical coordinates and the same `side` (when
+/// given): texture atlases split vertices along seams, and their normals must still agree or the
+/// seams show as creases; a cut face's corner is not welded to the skin's, so the cut's rim
+/// stays sharp.
+std::vector<int> weld_map(const std::vector<core::Vec3>& points,
+                          const std::vector<double>* side = nullptr) {
+  std::map<std::array<double, 4>, int> first;
   std::vector<int> weld(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) {
+    const double s = side != nullptr ? (*side)[i] : 0.0;
     const auto [it, inserted] =
-        first.try_emplace({points[i].x(), points[i].y(), points[i].z()}, static_cast<int>(i));
+        first.try_emplace({points[i].x(), points[i].y(), points[i].z(), s}, static_cast<int>(i));
     weld[i] = it->second;
   }
   return weld;
+}
+
+/// The wet-mucosa look of every surface: mostly diffuse under the head light with a tight
+/// specular highlight.
+void set_tissue_lighting(vtkProperty* property) {
+  property->SetAmbient(0.08);
+  property->SetDiffuse(0.9);
+  property->SetSpecular(0.25);
+  property->SetSpecularPower(30.0);
+}
+
+/// Fills `colours` (RGB bytes) from `base` × the coagulated tint at each vertex's share
+/// (`share[v].x()`, 0…1; null share: none).
+void fill_colours(vtkUnsignedCharArray* colours, const std::vector<std::array<double, 3>>& base,
+                  const std::vector<core::Vec3>* share, const std::array<double, 3>& tint) {
+  colours->SetNumberOfComponents(3);
+  colours->SetNumberOfTuples(static_cast<vtkIdType>(base.size()));
+  for (std::size_t v = 0; v < base.size(); ++v) {
+    const double s = share != nullptr ? std::clamp((*share)[v].x(), 0.0, 1.0) : 0.0;
+    for (std::size_t c = 0; c < 3; ++c) {
+      const double factor = 1.0 + s * (tint[c] - 1.0);
+      colours->SetComponent(static_cast<vtkIdType>(v), static_cast<int>(c),
+                            std::round(255.0 * base[v][c] * factor));
+    }
+  }
+  colours->Modified();
 }
 
 /// Writes positions and area-weighted unit normals (shared across welded vertices) into `mesh`.
@@ -189,12 +229,24 @@ SceneSurfaces::SceneSurfaces(const core::Scenario& scenario, const std::filesyst
     surface.actor = vtkSmartPointer<vtkActor>::New();
     surface.actor->SetMapper(mapper);
     vtkProperty* property = surface.actor->GetProperty();
-    // Wet mucosa under a head light: mostly diffuse with a tight specular highlight.
-    property->SetAmbient(0.08);
-    property->SetDiffuse(0.9);
-    property->SetSpecular(0.25);
-    property->SetSpecularPower(30.0);
+    set_tissue_lighting(property);
     property->SetColor(0.85, 0.55, 0.5);
+    if (const auto it = scenario.textures.find(object.texture); it != scenario.textures.end()) {
+      surface.texture_preset = it->second.preset;
+      surface.texture_seed = it->second.seed;
+    }
+    if (!surface.body.empty()) {
+      // The inside a cut lays open: empty and hidden until the first cut.
+      surface.cut_faces = vtkSmartPointer<vtkPolyData>::New();
+      vtkNew<vtkPolyDataMapper> cut_mapper;
+      cut_mapper->SetInputData(surface.cut_faces);
+      cut_mapper->SetColorModeToDirectScalars();
+      cut_mapper->SetScalarModeToUsePointData();
+      surface.cut_actor = vtkSmartPointer<vtkActor>::New();
+      surface.cut_actor->SetMapper(cut_mapper);
+      set_tissue_lighting(surface.cut_actor->GetProperty());
+      surface.cut_actor->VisibilityOff();
+    }
     if (surface.texture) {
       if (surface.mesh->GetPointData()->GetTCoords() != nullptr) {
         vtkNew<vtkTexture> texture;
@@ -216,19 +268,9 @@ SceneSurfaces::SceneSurfaces(const core::Scenario& scenario, const std::filesyst
 SceneSurfaces::~SceneSurfaces() = default;
 
 void SceneSurfaces::add_to(vtkRenderer* renderer) const {
-  for (const Surface& surface : surfaces_)
+  for (const Surface& surface : surfaces_) {
     renderer->AddActor(surface.actor);
-}
-
-void SceneSurfaces::update(const sim::World& world) {
-  for (Surface& surface : surfaces_) {
-    if (surface.body.empty()) continue;
-    for (const sim::BodyView& body : world.bodies()) {
-      if (body.name() != surface.body) continue;
-      set_geometry(surface.mesh,
-                   core::embedded_positions(*surface.embedding, surface.tets, body.positions()),
-                   surface.triangles, surface.weld);
-    }
+    if (surface.cut_actor) renderer->AddActor(surface.cut_actor);
   }
 }
 
@@ -237,6 +279,7 @@ void SceneSurfaces::update(const std::vector<sim::BodyPositions>& bodies) {
     if (surface.body.empty()) continue;
     for (const sim::BodyPositions& body : bodies) {
       if (body.name != surface.body) continue;
+      if (body.cut_surface && body.cut_surface != surface.cut) show_cut(surface, body.cut_surface);
       set_geometry(surface.mesh,
                    core::embedded_positions(*surface.embedding, surface.tets, body.positions),
                    surface.triangles, surface.weld);
@@ -251,6 +294,11 @@ void SceneSurfaces::tint_coagulated(Surface& surface, const std::vector<float>& 
     if (mapper->GetScalarVisibility() != 0) {
       mapper->ScalarVisibilityOff();
       surface.mesh->GetPointData()->RemoveArray("Coagulated");
+      if (surface.cut) {
+        fill_colours(
+            vtkUnsignedCharArray::SafeDownCast(surface.cut_faces->GetPointData()->GetScalars()),
+            surface.cut_colours, nullptr, kCoagulatedTint);
+      }
     }
     return;
   }
@@ -266,24 +314,98 @@ void SceneSurfaces::tint_coagulated(Surface& surface, const std::vector<float>& 
   if (!surface.actor->GetTexture()) surface.actor->GetProperty()->GetColor(base);
   vtkNew<vtkUnsignedCharArray> colours;
   colours->SetName("Coagulated");
-  colours->SetNumberOfComponents(3);
-  colours->SetNumberOfTuples(static_cast<vtkIdType>(share.size()));
-  for (std::size_t v = 0; v < share.size(); ++v) {
-    const double s = std::clamp(share[v].x(), 0.0, 1.0);
-    for (int c = 0; c < 3; ++c) {
-      const double tint = 1.0 + s * (kCoagulatedTint[static_cast<std::size_t>(c)] - 1.0);
-      colours->SetComponent(static_cast<vtkIdType>(v), c, std::round(255.0 * base[c] * tint));
-    }
-  }
+  fill_colours(colours,
+               std::vector<std::array<double, 3>>(share.size(), {base[0], base[1], base[2]}),
+               &share, kCoagulatedTint);
   surface.mesh->GetPointData()->SetScalars(colours);
   mapper->SetColorModeToDirectScalars();
   mapper->SetScalarModeToUsePointData();
   mapper->ScalarVisibilityOn();
+  if (surface.cut) {
+    fill_colours(
+        vtkUnsignedCharArray::SafeDownCast(surface.cut_faces->GetPointData()->GetScalars()),
+        surface.cut_colours, &share, kCoagulatedTint);
+  }
+}
+
+void SceneSurfaces::show_cut(Surface& surface, std::shared_ptr<const sim::CutVisibleSurface> cut) {
+  const core::SurfaceMesh& mesh = cut->mesh;
+  const std::vector<double> none(mesh.vertices.size(), 0.0);
+  const auto flag_it = mesh.vertex_attributes.find("cut_face");
+  const std::vector<double>& flag =
+      flag_it != mesh.vertex_attributes.end() && flag_it->second.size() == mesh.vertices.size()
+          ? flag_it->second
+          : none;
+  std::vector<core::Triangle> skin, inside;
+  for (const core::Triangle& t : mesh.triangles) {
+    const bool opened = flag[static_cast<std::size_t>(t[0])] > 0.5 &&
+                        flag[static_cast<std::size_t>(t[1])] > 0.5 &&
+                        flag[static_cast<std::size_t>(t[2])] > 0.5;
+    (opened ? inside : skin).push_back(t);
+  }
+  surface.weld = weld_map(mesh.vertices, &flag);
+  surface.mesh = make_mesh(mesh.vertices, skin, mesh.uvs, surface.weld);
+  vtkPolyDataMapper::SafeDownCast(surface.actor->GetMapper())->SetInputData(surface.mesh);
+  surface.actor->GetMapper()->ScalarVisibilityOff();  // tint_coagulated sets it again
+
+  // The cut faces share the skin's points and normals; their colours are the solid texture at
+  // their material points.
+  surface.cut_faces->Initialize();
+  surface.cut_faces->SetPoints(surface.mesh->GetPoints());
+  surface.cut_faces->GetPointData()->SetNormals(surface.mesh->GetPointData()->GetNormals());
+  vtkNew<vtkCellArray> polys;
+  for (const core::Triangle& t : inside) {
+    const vtkIdType ids[3] = {t[0], t[1], t[2]};
+    polys->InsertNextCell(3, ids);
+  }
+  surface.cut_faces->SetPolys(polys);
+  surface.cut_colours.assign(mesh.vertices.size(), {0.0, 0.0, 0.0});
+  std::vector<core::Vec3> material;
+  std::vector<std::size_t> opened;
+  const auto& mx = mesh.vertex_attributes.find("material_x");
+  const auto& my = mesh.vertex_attributes.find("material_y");
+  const auto& mz = mesh.vertex_attributes.find("material_z");
+  const bool has_material = mx != mesh.vertex_attributes.end() &&
+                            my != mesh.vertex_attributes.end() &&
+                            mz != mesh.vertex_attributes.end();
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+    if (flag[v] <= 0.5) continue;
+    opened.push_back(v);
+    material.push_back(has_material ? core::Vec3(mx->second[v], my->second[v], mz->second[v])
+                                    : mesh.vertices[v]);
+  }
+  if (!surface.inside && !surface.texture_preset.empty())
+    surface.inside =
+        std::make_shared<const CutFaceColours>(surface.texture_preset, surface.texture_seed);
+  double plain[3];
+  surface.actor->GetProperty()->GetColor(plain);  // untextured surfaces: their own colour
+  const auto colours = surface.inside ? surface.inside->at(material)
+                                      : std::vector<std::array<double, 3>>(
+                                            material.size(), {plain[0], plain[1], plain[2]});
+  for (std::size_t i = 0; i < opened.size(); ++i)
+    surface.cut_colours[opened[i]] = colours[i];
+  vtkNew<vtkUnsignedCharArray> scalars;
+  scalars->SetName("CutFaceColour");
+  fill_colours(scalars, surface.cut_colours, nullptr, kCoagulatedTint);
+  surface.cut_faces->GetPointData()->SetScalars(scalars);
+  surface.cut_actor->SetVisibility(inside.empty() ? 0 : 1);
+
+  surface.triangles = std::move(skin);
+  surface.triangles.insert(surface.triangles.end(), inside.begin(), inside.end());
+  surface.cut = std::move(cut);
+  surface.embedding = &surface.cut->embedding;
+  surface.tets = surface.cut->tets;
 }
 
 vtkImageData* SceneSurfaces::texture_of(const std::string& id) const {
   for (const Surface& surface : surfaces_)
     if (surface.id == id) return surface.texture;
+  return nullptr;
+}
+
+vtkPolyData* SceneSurfaces::cut_faces_of(const std::string& id) const {
+  for (const Surface& surface : surfaces_)
+    if (surface.id == id) return surface.cut_faces;
   return nullptr;
 }
 

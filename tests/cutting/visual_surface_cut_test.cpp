@@ -69,5 +69,45 @@ TEST(VisualSurfaceCut, the_visual_surface_is_split_along_the_cut_and_gets_cut_fa
   EXPECT_EQ(spanning, 0u);
 }
 
+TEST(VisualSurfaceCut, a_second_cut_keeps_the_first_cuts_faces_and_cut_vertices_are_rest_points) {
+  const core::TetMesh& ball = testing::cutting_ball();
+  const core::SurfaceMesh visual = core::make_icosphere(0.0199, 4);
+  const core::SurfaceEmbedding embedding = core::embed_points(visual.vertices, ball);
+  const Vec3 n1 = Vec3(0.3, 1, 0.2).normalized(), n2 = Vec3(1, -0.2, 0.1).normalized();
+  const TopologyChange first = hybrid_cut(
+      ball, ball.nodes, planar_cut_surface(0.004 * n1, n1, n1.unitOrthogonal(), 0.05, 0.05, 4),
+      visual, embedding);
+  ASSERT_TRUE(first.changed);
+  // The second cut crosses the first: the body it cuts is the first cut's, deformed nowhere.
+  const TopologyChange second =
+      hybrid_cut(first.mesh, first.mesh.nodes,
+                 planar_cut_surface(-0.003 * n2, n2, n2.unitOrthogonal(), 0.05, 0.05, 4),
+                 first.visual, first.visual_embedding);
+  ASSERT_TRUE(second.changed);
+  const auto count_cut_faces = [](const core::SurfaceMesh& mesh) {
+    const auto& flag = mesh.vertex_attributes.at("cut_face");
+    std::size_t faces = 0;
+    for (const auto& t : mesh.triangles)
+      faces += flag[t[0]] == 1.0 && flag[t[1]] == 1.0 && flag[t[2]] == 1.0;
+    return faces;
+  };
+  // Every face either cut made is still a cut face (the first cut's may have been split).
+  EXPECT_EQ(count_cut_faces(first.visual), first.cut_surface_faces.size());
+  EXPECT_GE(count_cut_faces(second.visual),
+            first.cut_surface_faces.size() + second.cut_surface_faces.size());
+  // Vertices are rest points, like the uncut surface's: a cut vertex is its material point.
+  const auto& flag = second.visual.vertex_attributes.at("cut_face");
+  const auto& mx = second.visual.vertex_attributes.at("material_x");
+  const auto& my = second.visual.vertex_attributes.at("material_y");
+  const auto& mz = second.visual.vertex_attributes.at("material_z");
+  std::size_t cut_vertices = 0;
+  for (std::size_t v = 0; v < second.visual.vertices.size(); ++v) {
+    if (flag[v] != 1.0) continue;
+    ++cut_vertices;
+    EXPECT_LT((second.visual.vertices[v] - Vec3(mx[v], my[v], mz[v])).norm(), 1e-12);
+  }
+  EXPECT_GT(cut_vertices, 0u);
+}
+
 }  // namespace
 }  // namespace viscera::sim::cutting

@@ -10,7 +10,9 @@
 #include <fstream>
 
 #include "core/json_schema/json_schema_validator.h"
+#include "core/mesh/surface_embedding.h"
 #include "simulator/dynamics/attachment_term.h"
+#include "simulator/runtime/session_snapshot.h"
 #include "simulator/session/instrument_input.h"
 #include "simulator/session/session_runner.h"
 #include "templates/template_catalog.h"
@@ -333,6 +335,53 @@ TEST(LoopResection, the_loop_hangs_towards_the_optics_view_across_the_shaft) {
   EXPECT_NEAR((middle - (s.tip + kRadius * s.up)).norm(), 0.0, 1e-12);
   for (const auto& p : points)
     EXPECT_NEAR((p - s.tip).dot(s.axis), 0.0, 1e-12);
+}
+
+TEST(LoopResection, the_cut_polyp_shows_its_inside_on_its_visible_surface) {
+  // Issue 17 §2: the polyp's visible surface is cut with its tets; the faces the cut opened
+  // are part of it, each vertex follows a tet of the cut body, and the view's snapshot carries
+  // the surface without copying it.
+  const core::Scenario scenario = resectoscope_patient();
+  const auto input =
+      ScriptedTrajectory::from_json(scoop_script(frame_of(scenario), 2.0e-3), "scoop", 30.0);
+  HeadlessRunOptions options;
+  options.duration = 1.0;
+  options.instrument = &input;
+  options.instrument_body = "uterus";
+  SessionRunner runner(scenario, options);
+  const int polyp = runner.world().body_index("polyp-1");
+  ASSERT_NE(runner.visible_surfaces(), nullptr);
+  EXPECT_EQ(runner.visible_surfaces()->cut_surface(polyp), nullptr);
+  while (!runner.finished())
+    runner.step(input.state(runner.world().steps() + 1, runner.world().time()));
+  const auto& cut = runner.visible_surfaces()->cut_surface(polyp);
+  ASSERT_NE(cut, nullptr);
+  const core::TetMesh& body = runner.world().models()[static_cast<std::size_t>(polyp)]->mesh;
+  EXPECT_EQ(cut->tets, body.tets);
+  ASSERT_EQ(cut->embedding.tet.size(), cut->mesh.vertices.size());
+  const core::SceneObject& object = *scenario.find_object("polyp-1");
+  EXPECT_GT(cut->mesh.triangles.size(), object.surface.triangles.size());
+  // The cut faces: vertices flagged, at their material points, and embedded where they are.
+  const auto& flag = cut->mesh.vertex_attributes.at("cut_face");
+  const auto rest = core::embedded_positions(cut->embedding, cut->tets, body.nodes);
+  std::size_t opened = 0;
+  for (const core::Triangle& t : cut->mesh.triangles)
+    opened += flag[static_cast<std::size_t>(t[0])] == 1.0 &&
+              flag[static_cast<std::size_t>(t[1])] == 1.0 &&
+              flag[static_cast<std::size_t>(t[2])] == 1.0;
+  EXPECT_GT(opened, 0u);
+  for (std::size_t v = 0; v < cut->mesh.vertices.size(); ++v) {
+    ASSERT_LT(cut->embedding.tet[v], static_cast<int>(body.tets.size()));
+    if (flag[v] == 1.0) {
+      EXPECT_LT((rest[v] - cut->mesh.vertices[v]).norm(), 1e-9) << v;
+    }
+  }
+  SessionSnapshot snapshot;
+  capture_snapshot(runner, snapshot);
+  EXPECT_EQ(snapshot.bodies[static_cast<std::size_t>(polyp)].cut_surface, cut);
+  EXPECT_EQ(
+      snapshot.bodies[static_cast<std::size_t>(runner.world().body_index("uterus"))].cut_surface,
+      nullptr);
 }
 
 }  // namespace

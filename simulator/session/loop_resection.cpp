@@ -145,7 +145,6 @@ void LoopResection::cut(World& world, double time, CuttingSummary& summary,
     world.topology_changed(b, topology_of_cut(change));
     summary.cut_seconds.push_back(
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-    if (observer_) observer_(b, change, time);
 
     const cutting::CutStatistics& s = change.statistics;
     ++summary.cuts;
@@ -168,11 +167,14 @@ void LoopResection::cut(World& world, double time, CuttingSummary& summary,
     BodyResection& resection = summary.bodies[k];
     resection.resected_volume = 0.0;
     resection.chips = 0;
+    std::erase_if(chips_, [b](const Chip& chip) { return chip.body == b; });
     for (std::size_t f = 0; f < fragments.size(); ++f) {
       if (fragments[f].anchored || (!any_anchor && f == largest)) continue;
       resection.resected_volume += fragments[f].rest_volume;
       ++resection.chips;
+      chips_.push_back({b, fragments[f].nodes, fragments[f].rest_volume});
     }
+    if (observer_) observer_(b, change, time);  // the chips of this cut are known
     events.push_back({time, "cut",
                       "the loop cut " + model.name + ": " + std::to_string(s.tets_traversed) +
                           " tets traversed, " + std::to_string(resection.chips) + " chip(s), " +

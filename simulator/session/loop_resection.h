@@ -37,6 +37,13 @@ cutting::LoopElectrode standard_resection_loop();
 /// tip, local z along the shaft, the loop hanging (local −y) towards `up`.
 cutting::LoopPose loop_pose(const InstrumentState& state);
 
+/// A chip: a fragment of a cut body that lost every anchor (local node indices, ascending).
+struct Chip {
+  int body = 0;
+  std::vector<int> nodes;
+  double rest_volume = 0.0;  ///< m³
+};
+
 class LoopResection {
  public:
   /// `bodies`: indices of the world bodies the loop may cut; `names` their names for the report.
@@ -50,14 +57,17 @@ class LoopResection {
   void follow(const InstrumentState& state, World& world, double time, CuttingSummary& summary,
               std::vector<SessionEvent>& events);
 
-  /// Called for each body a cut changed, after the world took its new topology, with the world
-  /// body's index and the session time in s (the session starts bleeding there, issue 18 §3).
+  /// Called for each body a cut changed, after the world took its new topology and chips() was
+  /// renewed, with the world body's index and the session time in s (the session starts
+  /// bleeding there, issue 18 §3).
   using CutObserver =
       std::function<void(int body, const cutting::TopologyChange& change, double time)>;
   void on_cut(CutObserver observer) { observer_ = std::move(observer); }
   /// Cuts go through `surfaces` (null: the tets alone), so the bodies' visible surfaces follow.
   void cut_visible_surfaces(VisibleSurfaces* surfaces) { visible_ = surfaces; }
 
+  /// The chips of every body cut so far (a body's list is renewed at each of its cuts).
+  const std::vector<Chip>& chips() const { return chips_; }
   /// True while the pedal is down.
   bool sweeping() const { return sweeping_; }
   const cutting::LoopElectrode& loop() const { return loop_; }
@@ -76,6 +86,7 @@ class LoopResection {
   std::vector<cutting::LoopPose> sweep_;
   CutObserver observer_;
   VisibleSurfaces* visible_ = nullptr;
+  std::vector<Chip> chips_;
 };
 
 }  // namespace viscera::sim

@@ -11,6 +11,7 @@
 
 #include "core/scenario/scenario.h"
 #include "simulator/camera/surface_coverage.h"
+#include "simulator/dynamics/fluid_drag.h"
 #include "simulator/dynamics/hydrometra_forces.h"
 #include "simulator/fluid/bleeding_sources.h"
 #include "simulator/fluid/cavity_flow.h"
@@ -79,6 +80,8 @@ class SessionRunner {
   core::Vec3 instrument_force() const;
   /// The laparoscopic tools, or null when the instrument carries none.
   const LaparoscopicTools* tools() const { return tools_.get(); }
+  /// The resection loop, or null without a resectoscope.
+  const LoopResection* resection() const { return resection_.get(); }
   /// The cut bodies' visible surfaces, or null when no instrument of the session cuts.
   const VisibleSurfaces* visible_surfaces() const { return visible_.get(); }
   /// The suction–irrigation cannula's jet and the pool, or null when the instrument carries no
@@ -184,6 +187,7 @@ class SessionRunner {
   /// The flow in the cavity of the first body whose surface marks a "cavity" (issue 18 §2),
   /// with the distension fluid.
   std::unique_ptr<fluid::CavityFlow> cavity_;
+  FluidDrag* chip_drag_ = nullptr;  ///< the flow's drag on the loop's chips, owned by world_
   int cavity_body_ = -1;
   const core::SceneObject* cavity_object_ = nullptr;
   std::vector<double> bled_seen_;  ///< per bleeding source, m³ already handed to the flow

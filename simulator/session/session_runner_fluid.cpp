@@ -9,7 +9,9 @@
 #include <vector>
 
 #include "core/mesh/surface_embedding.h"
+#include "simulator/dynamics/fluid_drag.h"
 #include "simulator/dynamics/pulse_waves.h"
+#include "simulator/session/chip_drift.h"
 #include "simulator/session/session_runner.h"
 
 namespace viscera::sim {
@@ -49,10 +51,20 @@ void SessionRunner::start_bleeding_sources(const core::Scenario& scenario) {
 }
 
 void SessionRunner::start_bleeding(int body, const cutting::TopologyChange& change, double time) {
+  // Blood comes from the side still fed by the patient: a chip's cut faces do not bleed.
+  std::vector<std::uint8_t> excised(change.mesh.nodes.size(), 0);
+  if (resection_) {
+    for (const Chip& chip : resection_->chips())
+      if (chip.body == body)
+        for (const int n : chip.nodes)
+          excised[static_cast<std::size_t>(n)] = 1;
+  }
   std::vector<core::Triangle> cut_triangles;
   cut_triangles.reserve(change.cut_surface_faces.size());
-  for (const int f : change.cut_surface_faces)
-    cut_triangles.push_back(change.mesh.surface_faces[static_cast<std::size_t>(f)]);
+  for (const int f : change.cut_surface_faces) {
+    const core::Triangle& t = change.mesh.surface_faces[static_cast<std::size_t>(f)];
+    if (excised[static_cast<std::size_t>(t[0])] == 0) cut_triangles.push_back(t);
+  }
   const std::size_t before = bleeding_->sources().size();
   bleeding_->add_cut(body, hosted_trees_[static_cast<std::size_t>(body)], change.mesh.nodes,
                      cut_triangles, time);
@@ -177,6 +189,12 @@ void SessionRunner::start_cavity_flow(const core::Scenario& scenario) {
         for (int i = 0; i < cavity_->grid().nx(); ++i)
           summary.fluid_cells += cavity_->grid().cell(i, j, k) == fluid::FlowCell::Fluid;
     summary.obscured_threshold = settings.obscured_transmission;
+    if (resection_) {
+      // The loop's chips drift with the flow (chip_drift.h).
+      auto drag = std::make_unique<FluidDrag>();
+      chip_drag_ = drag.get();
+      world_.add_term(std::move(drag));
+    }
     return;
   }
 }
@@ -240,6 +258,12 @@ void SessionRunner::flow_cavity(double dt) {
   cavity_->advance(dt, inputs);
   if (cavity_->flow_steps() == before) return;
   pressure_iterations_ += cavity_->last_step().pressure_iterations;
+  if (chip_drag_ != nullptr && !resection_->chips().empty()) {
+    ChipDragSettings drag;
+    drag.kinematic_viscosity = cavity_->settings().flow.viscosity;
+    chip_drag_->set(chip_drag(resection_->chips(), world_.state(), cavity_->grid(), drag),
+                    world_.state());
+  }
   CavityFlowSummary& summary = *report_.cavity_flow;
   const double transmission =
       cavity_->view_transmission(state_.tip, view_direction(state_, instrument_.optics_angle));

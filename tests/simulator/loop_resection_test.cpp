@@ -12,6 +12,7 @@
 #include "core/json_schema/json_schema_validator.h"
 #include "core/mesh/surface_embedding.h"
 #include "simulator/dynamics/attachment_term.h"
+#include "simulator/dynamics/fluid_drag.h"
 #include "simulator/runtime/session_snapshot.h"
 #include "simulator/session/instrument_input.h"
 #include "simulator/session/session_runner.h"
@@ -376,6 +377,18 @@ TEST(LoopResection, the_cut_polyp_shows_its_inside_on_its_visible_surface) {
       EXPECT_LT((rest[v] - cut->mesh.vertices[v]).norm(), 1e-9) << v;
     }
   }
+  // The flow carries the chips: the fluid's drag holds every chip node (chip_drift.h).
+  const FluidDrag* drag = nullptr;
+  for (const auto& term : runner.world().terms())
+    if (const auto* d = dynamic_cast<const FluidDrag*>(term.get())) drag = d;
+  ASSERT_NE(drag, nullptr);
+  std::size_t chip_nodes = 0;
+  for (const Chip& chip : runner.resection()->chips())
+    chip_nodes += chip.nodes.size();
+  EXPECT_GT(chip_nodes, 0u);
+  EXPECT_EQ(drag->drag().size(), chip_nodes);
+  for (const NodeDrag& d : drag->drag())
+    EXPECT_GT(d.coefficient, 0.0);
   SessionSnapshot snapshot;
   capture_snapshot(runner, snapshot);
   EXPECT_EQ(snapshot.bodies[static_cast<std::size_t>(polyp)].cut_surface, cut);

@@ -10,7 +10,6 @@ namespace {
 
 constexpr std::uint8_t kSolid = static_cast<std::uint8_t>(FlowCell::Solid);
 constexpr std::uint8_t kFluid = static_cast<std::uint8_t>(FlowCell::Fluid);
-constexpr std::uint8_t kOpen = static_cast<std::uint8_t>(FlowCell::Open);
 
 constexpr float kJacobiWeight = 2.0f / 3.0f;
 constexpr int kSweeps = 2;           ///< Jacobi sweeps before and after each coarse correction
@@ -41,34 +40,25 @@ double largest_of(const std::vector<double>& values) {
 
 MultigridPoisson::MultigridPoisson(const FlowGrid& grid) : planar_(grid.planar()) {
   restriction_scale_ = planar_ ? 1.0 : 0.5;
-  int nx = grid.nx(), ny = grid.ny(), nz = grid.nz();
   std::vector<std::uint8_t> labels(static_cast<std::size_t>(grid.cell_count()));
-  for (int k = 0; k < nz; ++k)
-    for (int j = 0; j < ny; ++j)
-      for (int i = 0; i < nx; ++i) {
+  for (int k = 0; k < grid.nz(); ++k)
+    for (int j = 0; j < grid.ny(); ++j)
+      for (int i = 0; i < grid.nx(); ++i) {
         const FlowCell cell = grid.cell(i, j, k);
         labels[static_cast<std::size_t>(grid.cell_index(i, j, k))] =
             static_cast<std::uint8_t>(cell);
         has_open_ = has_open_ || cell == FlowCell::Open;
       }
+  levels_.emplace_back();
+  build_finest(levels_.back(), grid.nx(), grid.ny(), grid.nz(), labels);
   for (;;) {
-    levels_.emplace_back();
-    build_level(levels_.back(), nx, ny, nz, labels);
-    const int smallest = planar_ ? std::min(nx, ny) : std::min({nx, ny, nz});
+    const Level& fine = levels_.back();
+    const int smallest =
+        planar_ ? std::min(fine.nx, fine.ny) : std::min({fine.nx, fine.ny, fine.nz});
     if (smallest < 4) break;
-    // The next level: each coarse cell open if a child is, else fluid if a child is.
-    const int cx = (nx + 1) / 2, cy = (ny + 1) / 2, cz = planar_ ? 1 : (nz + 1) / 2;
-    std::vector<std::uint8_t> coarse(static_cast<std::size_t>(cx * cy * cz), kSolid);
-    for (int k = 0; k < nz; ++k)
-      for (int j = 0; j < ny; ++j)
-        for (int i = 0; i < nx; ++i) {
-          const std::uint8_t child = labels[static_cast<std::size_t>(i + nx * (j + ny * k))];
-          auto& parent =
-              coarse[static_cast<std::size_t>(i / 2 + cx * (j / 2 + cy * (planar_ ? 0 : k / 2)))];
-          if (child == kOpen || (child == kFluid && parent == kSolid)) parent = child;
-        }
-    labels = std::move(coarse);
-    nx = cx, ny = cy, nz = cz;
+    Level coarse;
+    coarsen(fine, coarse);
+    levels_.push_back(std::move(coarse));
   }
   const Level& finest = levels_.front();
   unknown_.assign(static_cast<std::size_t>(finest.nx) * finest.ny * finest.nz, 0);
@@ -76,7 +66,7 @@ MultigridPoisson::MultigridPoisson(const FlowGrid& grid) : planar_(grid.planar()
     for (int j = 0; j < finest.ny; ++j)
       for (int i = 0; i < finest.nx; ++i, ++c)
         unknown_[static_cast<std::size_t>(c)] = finest.inverse_diagonal[finest.at(i, j, k)] != 0.0f;
-  // Each fine cell's renormalisation over the parents that are not solid.
+  // Each fine unknown's renormalisation over the parents that are unknowns.
   for (std::size_t l = 0; l + 1 < levels_.size(); ++l) {
     Level& fine = levels_[l];
     const Level& coarse = levels_[l + 1];
@@ -94,7 +84,7 @@ MultigridPoisson::MultigridPoisson(const FlowGrid& grid) : planar_(grid.planar()
                                          std::pair{ty.neighbour, ty.neighbour_weight}})
               for (const auto& [ck, wk] : {std::pair{tz.parent, tz.parent_weight},
                                            std::pair{tz.neighbour, tz.neighbour_weight}})
-                if (coarse.non_solid[coarse.at(ci, cj, ck)] != 0) total += wi * wj * wk;
+                if (coarse.inverse_diagonal[coarse.at(ci, cj, ck)] != 0.0f) total += wi * wj * wk;
           fine.prolongation_scale[f] = total > 0.0f ? 1.0f / total : 0.0f;
         }
   }
@@ -103,28 +93,35 @@ MultigridPoisson::MultigridPoisson(const FlowGrid& grid) : planar_(grid.planar()
     v->assign(n, 0.0);
 }
 
-void MultigridPoisson::build_level(Level& level, int nx, int ny, int nz,
-                                   const std::vector<std::uint8_t>& labels) {
+namespace {
+
+/// Sizes `level` for nx×ny×nz cells, every array zero.
+template <typename Level>
+void size_level(Level& level, int nx, int ny, int nz) {
   level.nx = nx, level.ny = ny, level.nz = nz;
   level.sx = nx + 3, level.sy = ny + 3;
   const auto size = static_cast<std::size_t>(level.sx * level.sy * (nz + 3));
+  for (auto* v : {&level.diagonal, &level.inverse_diagonal, &level.prolongation_scale, &level.x,
+                  &level.b, &level.r, &level.scratch})
+    v->assign(size, 0.0f);
+}
+
+}  // namespace
+
+void MultigridPoisson::build_finest(Level& level, int nx, int ny, int nz,
+                                    const std::vector<std::uint8_t>& labels) {
+  size_level(level, nx, ny, nz);
+  const std::size_t size = level.size();
   std::vector<std::uint8_t> padded(size, kSolid);
   for (int k = 0; k < nz; ++k)
     for (int j = 0; j < ny; ++j)
       for (int i = 0; i < nx; ++i)
         padded[level.at(i, j, k)] = labels[static_cast<std::size_t>(i + nx * (j + ny * k))];
-  level.diagonal.assign(size, 0.0f);
-  level.inverse_diagonal.assign(size, 0.0f);
-  level.non_solid.assign(size, 0);
-  level.prolongation_scale.assign(size, 0.0f);
-  level.x.assign(size, 0.0f), level.b.assign(size, 0.0f), level.r.assign(size, 0.0f);
-  level.scratch.assign(size, 0.0f);
   const std::size_t sx = static_cast<std::size_t>(level.sx), sxy = sx * level.sy;
   for (int k = 0; k < nz; ++k)
     for (int j = 0; j < ny; ++j)
       for (int i = 0; i < nx; ++i) {
         const std::size_t c = level.at(i, j, k);
-        if (padded[c] == kOpen) level.non_solid[c] = 1;
         if (padded[c] != kFluid) continue;
         int sides = 0;
         for (const std::size_t n : {c - 1, c + 1, c - sx, c + sx, c - sxy, c + sxy})
@@ -132,8 +129,47 @@ void MultigridPoisson::build_level(Level& level, int nx, int ny, int nz,
         if (sides == 0) continue;  // a fluid pocket sealed by solid cells: no equation
         level.diagonal[c] = static_cast<Real>(sides);
         level.inverse_diagonal[c] = 1.0f / static_cast<Real>(sides);
-        level.non_solid[c] = 1;
       }
+}
+
+void MultigridPoisson::coarsen(const Level& fine, Level& coarse) const {
+  size_level(coarse, (fine.nx + 1) / 2, (fine.ny + 1) / 2, planar_ ? 1 : (fine.nz + 1) / 2);
+  for (auto* v : {&coarse.face_x, &coarse.face_y, &coarse.face_z})
+    v->assign(coarse.size(), 0.0f);
+  const std::size_t sx = static_cast<std::size_t>(fine.sx), sxy = sx * fine.sy;
+  const bool unit = fine.face_x.empty();
+  // −A between fine unknown f and its neighbour f + step along `axis`.
+  const auto coupling = [&](std::size_t f, int axis, std::size_t step) -> Real {
+    if (!unit) return (axis == 0 ? fine.face_x : axis == 1 ? fine.face_y : fine.face_z)[f];
+    return fine.inverse_diagonal[f + step] != 0.0f ? 1.0f : 0.0f;
+  };
+  // (Pᵀ A P)_IJ with P the children's indicator: each child's diagonal, less twice each face
+  // inside I, and each face between I and its next coarse cell along an axis.
+  for (int k = 0; k < fine.nz; ++k)
+    for (int j = 0; j < fine.ny; ++j)
+      for (int i = 0; i < fine.nx; ++i) {
+        const std::size_t f = fine.at(i, j, k);
+        if (fine.inverse_diagonal[f] == 0.0f) continue;
+        const std::size_t I = coarse.at(i / 2, j / 2, planar_ ? k : k / 2);
+        coarse.diagonal[I] += fine.diagonal[f];
+        const int index[3] = {i, j, k};
+        const std::size_t steps[3] = {1, sx, sxy};
+        std::vector<Real>* faces[3] = {&coarse.face_x, &coarse.face_y, &coarse.face_z};
+        for (int axis = 0; axis < (planar_ ? 2 : 3); ++axis) {
+          const Real a = coupling(f, axis, steps[axis]);
+          if (index[axis] % 2 == 0)
+            coarse.diagonal[I] -= 2.0f * a;  // both children in I
+          else
+            (*faces[axis])[I] += a;
+        }
+      }
+  const Real scale = planar_ ? 0.5f : 0.25f;  // 2^(d−1) fine faces make one coarse face
+  for (std::size_t c = 0; c < coarse.size(); ++c) {
+    coarse.face_x[c] *= scale, coarse.face_y[c] *= scale, coarse.face_z[c] *= scale;
+    // A sum of multiples of ¼, exact in single precision: 0 only for a pocket sealed inside I.
+    coarse.diagonal[c] *= scale;
+    if (coarse.diagonal[c] > 0.0f) coarse.inverse_diagonal[c] = 1.0f / coarse.diagonal[c];
+  }
 }
 
 void MultigridPoisson::smooth(Level& level, int sweeps, bool from_zero, int threads) {
@@ -155,9 +191,21 @@ void MultigridPoisson::smooth(Level& level, int sweeps, bool from_zero, int thre
           out[c] = kJacobiWeight * inverse[c] * b[c];
         return;
       }
+      if (level.face_x.empty()) {
+        for (std::size_t c = row; c < row + nx; ++c) {
+          const Real ax = diagonal[c] * x[c] -
+                          (x[c - 1] + x[c + 1] + x[c - sx] + x[c + sx] + x[c - sxy] + x[c + sxy]);
+          out[c] = x[c] + kJacobiWeight * inverse[c] * (b[c] - ax);
+        }
+        return;
+      }
+      const Real* __restrict fx = level.face_x.data();
+      const Real* __restrict fy = level.face_y.data();
+      const Real* __restrict fz = level.face_z.data();
       for (std::size_t c = row; c < row + nx; ++c) {
         const Real ax = diagonal[c] * x[c] -
-                        (x[c - 1] + x[c + 1] + x[c - sx] + x[c + sx] + x[c - sxy] + x[c + sxy]);
+                        (fx[c - 1] * x[c - 1] + fx[c] * x[c + 1] + fy[c - sx] * x[c - sx] +
+                         fy[c] * x[c + sx] + fz[c - sxy] * x[c - sxy] + fz[c] * x[c + sxy]);
         out[c] = x[c] + kJacobiWeight * inverse[c] * (b[c] - ax);
       }
     });
@@ -175,9 +223,21 @@ void MultigridPoisson::residual(Level& level, int threads) {
     const Real* __restrict diagonal = level.diagonal.data();
     const Real* __restrict scale = level.prolongation_scale.data();  // 0 off the unknowns
     Real* __restrict r = level.r.data();
-    for (std::size_t c = row; c < row + static_cast<std::size_t>(level.nx); ++c)
+    const std::size_t end = row + static_cast<std::size_t>(level.nx);
+    if (level.face_x.empty()) {
+      for (std::size_t c = row; c < end; ++c)
+        r[c] = (b[c] - (diagonal[c] * x[c] -
+                        (x[c - 1] + x[c + 1] + x[c - sx] + x[c + sx] + x[c - sxy] + x[c + sxy]))) *
+               scale[c];
+      return;
+    }
+    const Real* __restrict fx = level.face_x.data();
+    const Real* __restrict fy = level.face_y.data();
+    const Real* __restrict fz = level.face_z.data();
+    for (std::size_t c = row; c < end; ++c)
       r[c] = (b[c] - (diagonal[c] * x[c] -
-                      (x[c - 1] + x[c + 1] + x[c - sx] + x[c + sx] + x[c - sxy] + x[c + sxy]))) *
+                      (fx[c - 1] * x[c - 1] + fx[c] * x[c + 1] + fy[c - sx] * x[c - sx] +
+                       fy[c] * x[c + sx] + fz[c - sxy] * x[c - sxy] + fz[c] * x[c + sxy]))) *
              scale[c];
   });
 }

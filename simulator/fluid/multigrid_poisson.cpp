@@ -89,7 +89,7 @@ MultigridPoisson::MultigridPoisson(const FlowGrid& grid) : planar_(grid.planar()
         }
   }
   const std::size_t n = levels_.front().size();
-  for (auto* v : {&rhs_, &p_, &r_, &d_, &q_, &z_})
+  for (auto* v : {&rhs_, &p_, &r_, &d_, &q_})
     v->assign(n, 0.0);
 }
 
@@ -308,13 +308,19 @@ void MultigridPoisson::prolong_add(const Level& coarse, Level& fine, int threads
     for (std::size_t I = 0; I < width; ++I)
       blend[I] = a * y0z0[I] + b * y1z0[I] + c * y0z1[I] + d * y1z1[I];
     const std::size_t row = fine.at(0, j, k);
-    Real* x = &fine.x[row];
-    const Real* scale = &fine.prolongation_scale[row];
-    for (int i = 0; i < fine.nx; ++i) {
-      const auto parent = static_cast<std::size_t>(i / 2 + 1);
-      const std::size_t other = i % 2 == 0 ? parent - 1 : parent + 1;
-      x[i] += scale[i] * (0.75f * blend[parent] + 0.25f * blend[other]);
+    Real* __restrict x = &fine.x[row];
+    const Real* __restrict scale = &fine.prolongation_scale[row];
+    const Real* __restrict parent = blend.data() + 1;  // parent[I], I = −1 … coarse nx
+    // Fine cells 2I and 2I + 1 share parent I; the other parent is I − 1 and I + 1. In pairs,
+    // with no division, so the loop vectorises; an odd fine line ends on a lone even cell
+    // (the padding past it is a solid cell whose scale is 0).
+    const int pairs = fine.nx / 2;
+    for (int I = 0; I < pairs; ++I) {
+      x[2 * I] += scale[2 * I] * (0.75f * parent[I] + 0.25f * parent[I - 1]);
+      x[2 * I + 1] += scale[2 * I + 1] * (0.75f * parent[I] + 0.25f * parent[I + 1]);
     }
+    if (fine.nx % 2 != 0)
+      x[2 * pairs] += scale[2 * pairs] * (0.75f * parent[pairs] + 0.25f * parent[pairs - 1]);
   });
 }
 
@@ -359,40 +365,50 @@ PoissonSolveResult MultigridPoisson::solve(const std::vector<double>& b, std::ve
     }
   });
   const auto line_index = [&](int j, int k) { return static_cast<std::size_t>(j + fine.ny * k); };
-  // r = b − A p, and the line's largest |r|.
+  // r = b − A p, the V-cycle's right-hand side (r in single precision) and the line's largest
+  // |r|. Each pass that changes r writes the V-cycle's copy too: no pass of its own.
+  Real* __restrict vcycle_rhs = fine.b.data();
   for_each_line(fine.ny, fine.nz, threads, [&](int j, int k) {
     const std::size_t row = fine.at(0, j, k);
     double m = 0.0;
     for (std::size_t c = row; c < row + nx; ++c) {
       r_[c] = fine.inverse_diagonal[c] == 0.0f ? 0.0 : rhs_[c] - apply(fine, p_, c);
+      vcycle_rhs[c] = static_cast<Real>(r_[c]);
       m = std::max(m, std::abs(r_[c]));
     }
     line_largest_[line_index(j, k)] = m;
   });
   double largest = largest_of(line_largest_);
-  // z = M r (one single-precision V-cycle); returns r·z.
+  // z = M r (one single-precision V-cycle, left in fine.x and read from there); returns r·z.
   const auto precondition = [&] {
-    for_each_line(fine.ny, fine.nz, threads, [&](int j, int k) {
-      const std::size_t row = fine.at(0, j, k);
-      for (std::size_t c = row; c < row + nx; ++c)
-        fine.b[c] = static_cast<Real>(r_[c]);
-    });
     vcycle(0, threads);
     if (!has_open_) remove_mean(fine.x, fine);
     return sum_over_lines(fine.ny, fine.nz, threads, partials_, [&](int j, int k) {
       const std::size_t row = fine.at(0, j, k);
       double s = 0.0;
-      for (std::size_t c = row; c < row + nx; ++c) {
-        z_[c] = static_cast<double>(fine.x[c]);
-        s += r_[c] * z_[c];
-      }
+      for (std::size_t c = row; c < row + nx; ++c)
+        s += r_[c] * static_cast<double>(fine.x[c]);
       return s;
+    });
+  };
+  // d = z + β d, or d = z to start.
+  const auto update_direction = [&](bool first, double beta) {
+    for_each_line(fine.ny, fine.nz, threads, [&](int j, int k) {
+      const std::size_t row = fine.at(0, j, k);
+      const Real* __restrict z = fine.x.data();
+      if (first) {
+        for (std::size_t c = row; c < row + nx; ++c)
+          d_[c] = static_cast<double>(z[c]);
+        return;
+      }
+      for (std::size_t c = row; c < row + nx; ++c)
+        d_[c] = static_cast<double>(z[c]) + beta * d_[c];
     });
   };
   PoissonSolveResult result;
   if (largest > settings.residual_tolerance) {
     double rz = precondition();
-    d_ = z_;
+    update_direction(true, 0.0);
     while (result.iterations < settings.max_iterations) {
       const double dq = sum_over_lines(fine.ny, fine.nz, threads, partials_, [&](int j, int k) {
         const std::size_t row = fine.at(0, j, k);
@@ -411,6 +427,7 @@ PoissonSolveResult MultigridPoisson::solve(const std::vector<double>& b, std::ve
         for (std::size_t c = row; c < row + nx; ++c) {
           p_[c] += alpha * d_[c];
           r_[c] -= alpha * q_[c];
+          vcycle_rhs[c] = static_cast<Real>(r_[c]);
           m = std::max(m, std::abs(r_[c]));
         }
         line_largest_[line_index(j, k)] = m;
@@ -421,11 +438,7 @@ PoissonSolveResult MultigridPoisson::solve(const std::vector<double>& b, std::ve
       const double rz_next = precondition();
       const double beta = rz_next / rz;
       rz = rz_next;
-      for_each_line(fine.ny, fine.nz, threads, [&](int j, int k) {
-        const std::size_t row = fine.at(0, j, k);
-        for (std::size_t c = row; c < row + nx; ++c)
-          d_[c] = z_[c] + beta * d_[c];
-      });
+      update_direction(false, beta);
     }
   }
   result.largest_residual = largest;

@@ -108,8 +108,8 @@ class MultigridPoisson {
   std::vector<std::uint8_t> unknown_;  ///< per grid cell
   bool planar_ = false;
   bool has_open_ = false;
-  double restriction_scale_ = 0.5;  ///< 4 / 2^d: A is h²-scaled and restriction averages
-  std::vector<double> rhs_, p_, r_, d_, q_, z_;  ///< the conjugate gradients' vectors (padded)
+  double restriction_scale_ = 0.5;           ///< 4 / 2^d: A is h²-scaled and restriction averages
+  std::vector<double> rhs_, p_, r_, d_, q_;  ///< the conjugate gradients' vectors (padded)
   std::vector<double> partials_, line_largest_;
 };
 

@@ -84,26 +84,25 @@ ProjectionResult PressureProjector::project(FlowGrid& grid, const ProjectionSett
   result.iterations = solved.iterations;
   result.converged = solved.converged;
 
-  // u −= Δt ∇p on the active faces (p = 0 in open cells, solid faces untouched).
+  // u −= Δt ∇p on the active faces (p = 0 in open cells, solid faces untouched). p is 0 in
+  // every cell that is not an unknown, so each line runs without branches; a face on the grid's
+  // boundary has a cell outside the grid on one side and is never active.
   const double scale = dt / h;
   for (int axis = 0; axis < (grid.planar() ? 2 : 3); ++axis) {
     const FaceDims fd = grid.face_dims(axis);
     const auto& states = grid.face_states(axis);
     auto& velocity = grid.velocity(axis);
+    const std::ptrdiff_t step = axis == 0 ? 1 : (axis == 1 ? nx : nx * ny);  // cell to cell
     for_each_line(fd.y, fd.z, threads, [&](int j, int k) {
-      for (int i = 0; i < fd.x; ++i) {
-        const auto f = static_cast<std::size_t>(fd.index(i, j, k));
-        if (states[f] != FaceState::Active) continue;
-        // Cells on the face's two sides; an index past the grid only occurs for solid sides.
-        const int ci = i - (axis == 0), cj = j - (axis == 1), ck = k - (axis == 2);
-        const double before = grid.cell(ci, cj, ck) == FlowCell::Fluid
-                                  ? p[static_cast<std::size_t>(grid.cell_index(ci, cj, ck))]
-                                  : 0.0;
-        const double after = grid.cell(i, j, k) == FlowCell::Fluid
-                                 ? p[static_cast<std::size_t>(grid.cell_index(i, j, k))]
-                                 : 0.0;
-        velocity[f] -= scale * (after - before);
-      }
+      if ((axis == 1 && (j == 0 || j == ny)) || (axis == 2 && (k == 0 || k == nz))) return;
+      const int first = axis == 0 ? 1 : 0;  // faces i = first … nx − 1 lie between two cells
+      const auto face = static_cast<std::size_t>(fd.index(0, j, k));
+      const auto cell = static_cast<std::size_t>(grid.cell_index(0, j, k));  // after face 0
+      const FaceState* __restrict state = states.data() + face;
+      double* __restrict u = velocity.data() + face;
+      const double* __restrict pressure = p.data() + cell;
+      for (std::ptrdiff_t i = first; i < nx; ++i)
+        u[i] -= state[i] == FaceState::Active ? scale * (pressure[i] - pressure[i - step]) : 0.0;
     });
   }
   result.max_divergence = largest_divergence(grid, threads, partials);

@@ -54,6 +54,34 @@ double largest_of(const std::vector<double>& values) {
   return m;
 }
 
+/// One damped Jacobi update of cells [begin, end) of a level with face couplings, into out.
+void weighted_jacobi_line(const float* __restrict x, const float* __restrict b,
+                          const float* __restrict inverse, const float* __restrict diagonal,
+                          const float* __restrict fx, const float* __restrict fy,
+                          const float* __restrict fz, float* __restrict out, std::size_t begin,
+                          std::size_t end, std::size_t sx, std::size_t sxy, float weight) {
+  for (std::size_t c = begin; c < end; ++c) {
+    const float ax =
+        diagonal[c] * x[c] - (fx[c - 1] * x[c - 1] + fx[c] * x[c + 1] + fy[c - sx] * x[c - sx] +
+                              fy[c] * x[c + sx] + fz[c - sxy] * x[c - sxy] + fz[c] * x[c + sxy]);
+    out[c] = x[c] + weight * inverse[c] * (b[c] - ax);
+  }
+}
+
+/// The renormalised residual (b − A x)·scale of cells [begin, end) of a level with face
+/// couplings, into r.
+void weighted_residual_line(const float* __restrict x, const float* __restrict b,
+                            const float* __restrict diagonal, const float* __restrict fx,
+                            const float* __restrict fy, const float* __restrict fz,
+                            const float* __restrict scale, float* __restrict r, std::size_t begin,
+                            std::size_t end, std::size_t sx, std::size_t sxy) {
+  for (std::size_t c = begin; c < end; ++c)
+    r[c] = (b[c] - (diagonal[c] * x[c] -
+                    (fx[c - 1] * x[c - 1] + fx[c] * x[c + 1] + fy[c - sx] * x[c - sx] +
+                     fy[c] * x[c + sx] + fz[c - sxy] * x[c - sxy] + fz[c] * x[c + sxy]))) *
+           scale[c];
+}
+
 }  // namespace
 
 MultigridPoisson::MultigridPoisson(const FlowGrid& grid) : planar_(grid.planar()) {
@@ -218,15 +246,9 @@ void MultigridPoisson::smooth(Level& level, int sweeps, bool from_zero, int thre
         }
         return;
       }
-      const Real* __restrict fx = level.face_x.data();
-      const Real* __restrict fy = level.face_y.data();
-      const Real* __restrict fz = level.face_z.data();
-      for (std::size_t c = row; c < row + nx; ++c) {
-        const Real ax = diagonal[c] * x[c] -
-                        (fx[c - 1] * x[c - 1] + fx[c] * x[c + 1] + fy[c - sx] * x[c - sx] +
-                         fy[c] * x[c + sx] + fz[c - sxy] * x[c - sxy] + fz[c] * x[c + sxy]);
-        out[c] = x[c] + weight * inverse[c] * (b[c] - ax);
-      }
+      weighted_jacobi_line(level.x.data(), level.b.data(), inverse, diagonal, level.face_x.data(),
+                           level.face_y.data(), level.face_z.data(), out, row, row + nx, sx, sxy,
+                           weight);
     });
     std::swap(level.x, level.scratch);
   }
@@ -250,14 +272,8 @@ void MultigridPoisson::residual(Level& level, int threads) {
                scale[c];
       return;
     }
-    const Real* __restrict fx = level.face_x.data();
-    const Real* __restrict fy = level.face_y.data();
-    const Real* __restrict fz = level.face_z.data();
-    for (std::size_t c = row; c < end; ++c)
-      r[c] = (b[c] - (diagonal[c] * x[c] -
-                      (fx[c - 1] * x[c - 1] + fx[c] * x[c + 1] + fy[c - sx] * x[c - sx] +
-                       fy[c] * x[c + sx] + fz[c - sxy] * x[c - sxy] + fz[c] * x[c + sxy]))) *
-             scale[c];
+    weighted_residual_line(x, b, diagonal, level.face_x.data(), level.face_y.data(),
+                           level.face_z.data(), scale, r, row, end, sx, sxy);
   });
 }
 

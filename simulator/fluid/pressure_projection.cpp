@@ -8,19 +8,30 @@
 namespace viscera::sim::fluid {
 namespace {
 
-/// h·∇·u of fluid cell (i,j,k): the net outflow through its faces, m/s.
-double net_outflow(const FlowGrid& grid, int i, int j, int k) {
-  const FaceDims du = grid.face_dims(0), dv = grid.face_dims(1), dw = grid.face_dims(2);
-  const auto& u = grid.velocity(0);
-  const auto& v = grid.velocity(1);
-  const auto& w = grid.velocity(2);
-  return u[static_cast<std::size_t>(du.index(i + 1, j, k))] -
-         u[static_cast<std::size_t>(du.index(i, j, k))] +
-         v[static_cast<std::size_t>(dv.index(i, j + 1, k))] -
-         v[static_cast<std::size_t>(dv.index(i, j, k))] +
-         (grid.planar() ? 0.0
-                        : w[static_cast<std::size_t>(dw.index(i, j, k + 1))] -
-                              w[static_cast<std::size_t>(dw.index(i, j, k))]);
+/// h·∇·u of the cells of line (j, k), the net outflow through their faces (m/s), into a
+/// thread's buffer: contiguous loads from the six face lines around the cells.
+const double* line_outflow(const FlowGrid& grid, int j, int k) {
+  thread_local std::vector<double> outflow;
+  const int nx = grid.nx();
+  outflow.resize(static_cast<std::size_t>(nx));
+  double* __restrict out = outflow.data();
+  const double* u = grid.velocity(0).data() + grid.face_dims(0).index(0, j, k);
+  const FaceDims dv = grid.face_dims(1);
+  const double* v0 = grid.velocity(1).data() + dv.index(0, j, k);
+  const double* v1 = grid.velocity(1).data() + dv.index(0, j + 1, k);
+  for (int i = 0; i < nx; ++i)
+    out[i] = u[i + 1] - u[i] + v1[i] - v0[i];
+  if (grid.planar()) {
+    for (int i = 0; i < nx; ++i)
+      out[i] += 0.0;  // as the three-dimensional sum adds its w terms: the same zeros' signs
+    return out;
+  }
+  const FaceDims dw = grid.face_dims(2);
+  const double* w0 = grid.velocity(2).data() + dw.index(0, j, k);
+  const double* w1 = grid.velocity(2).data() + dw.index(0, j, k + 1);
+  for (int i = 0; i < nx; ++i)
+    out[i] += w1[i] - w0[i];
+  return out;
 }
 
 /// Largest |∇·u| over the fluid cells, 1/s: FlowGrid::max_divergence over the threads.
@@ -28,10 +39,10 @@ double largest_divergence(const FlowGrid& grid, int threads, std::vector<double>
   const int nx = grid.nx(), ny = grid.ny(), nz = grid.nz();
   line_largest.resize(static_cast<std::size_t>(ny * nz));
   for_each_line(ny, nz, threads, [&](int j, int k) {
+    const double* outflow = line_outflow(grid, j, k);
     double m = 0.0;
     for (int i = 0; i < nx; ++i)
-      if (grid.cell(i, j, k) == FlowCell::Fluid)
-        m = std::max(m, std::abs(net_outflow(grid, i, j, k)));
+      if (grid.cell(i, j, k) == FlowCell::Fluid) m = std::max(m, std::abs(outflow[i]));
     line_largest[static_cast<std::size_t>(j + ny * k)] = m;
   });
   return *std::max_element(line_largest.begin(), line_largest.end()) / grid.cell_size();
@@ -53,6 +64,7 @@ ProjectionResult PressureProjector::project(FlowGrid& grid, const ProjectionSett
   // b = −(h/Δt)·(h ∇·u) on the unknowns; a closed region's b must sum to zero.
   std::vector<double> partials;
   const double b_sum = sum_over_lines(ny, nz, threads, partials, [&](int j, int k) {
+    const double* outflow = line_outflow(grid, j, k);
     double line = 0.0;
     for (int i = 0; i < nx; ++i) {
       const int c = grid.cell_index(i, j, k);
@@ -60,7 +72,7 @@ ProjectionResult PressureProjector::project(FlowGrid& grid, const ProjectionSett
         p[static_cast<std::size_t>(c)] = 0.0;
         continue;
       }
-      rhs_[static_cast<std::size_t>(c)] = -(h / dt) * net_outflow(grid, i, j, k);
+      rhs_[static_cast<std::size_t>(c)] = -(h / dt) * outflow[i];
       line += rhs_[static_cast<std::size_t>(c)];
     }
     return line;
@@ -84,26 +96,25 @@ ProjectionResult PressureProjector::project(FlowGrid& grid, const ProjectionSett
   result.iterations = solved.iterations;
   result.converged = solved.converged;
 
-  // u −= Δt ∇p on the active faces (p = 0 in open cells, solid faces untouched).
+  // u −= Δt ∇p on the active faces (p = 0 in open cells, solid faces untouched). p is 0 in
+  // every cell that is not an unknown, so each line runs without branches; a face on the grid's
+  // boundary has a cell outside the grid on one side and is never active.
   const double scale = dt / h;
   for (int axis = 0; axis < (grid.planar() ? 2 : 3); ++axis) {
     const FaceDims fd = grid.face_dims(axis);
     const auto& states = grid.face_states(axis);
     auto& velocity = grid.velocity(axis);
+    const std::ptrdiff_t step = axis == 0 ? 1 : (axis == 1 ? nx : nx * ny);  // cell to cell
     for_each_line(fd.y, fd.z, threads, [&](int j, int k) {
-      for (int i = 0; i < fd.x; ++i) {
-        const auto f = static_cast<std::size_t>(fd.index(i, j, k));
-        if (states[f] != FaceState::Active) continue;
-        // Cells on the face's two sides; an index past the grid only occurs for solid sides.
-        const int ci = i - (axis == 0), cj = j - (axis == 1), ck = k - (axis == 2);
-        const double before = grid.cell(ci, cj, ck) == FlowCell::Fluid
-                                  ? p[static_cast<std::size_t>(grid.cell_index(ci, cj, ck))]
-                                  : 0.0;
-        const double after = grid.cell(i, j, k) == FlowCell::Fluid
-                                 ? p[static_cast<std::size_t>(grid.cell_index(i, j, k))]
-                                 : 0.0;
-        velocity[f] -= scale * (after - before);
-      }
+      if ((axis == 1 && (j == 0 || j == ny)) || (axis == 2 && (k == 0 || k == nz))) return;
+      const int first = axis == 0 ? 1 : 0;  // faces i = first … nx − 1 lie between two cells
+      const auto face = static_cast<std::size_t>(fd.index(0, j, k));
+      const auto cell = static_cast<std::size_t>(grid.cell_index(0, j, k));  // after face 0
+      const FaceState* __restrict state = states.data() + face;
+      double* __restrict u = velocity.data() + face;
+      const double* __restrict pressure = p.data() + cell;
+      for (std::ptrdiff_t i = first; i < nx; ++i)
+        u[i] -= state[i] == FaceState::Active ? scale * (pressure[i] - pressure[i - step]) : 0.0;
     });
   }
   result.max_divergence = largest_divergence(grid, threads, partials);

@@ -15,7 +15,7 @@ void BackwardEuler::declare(const SimulationState& state, std::span<ForceTerm* c
   for (ForceTerm* t : terms)
     t->declare_blocks(pattern);
   system_.set_pattern(pattern);
-  damping_.set_pattern(pattern);
+  damping_.set_structure_of(system_);
   const std::size_t n = state.node_count();
   for (auto* v : {&predicted_, &gradient_, &direction_, &trial_, &forces_, &warm_, &zero_, &cg_r_,
                   &cg_z_, &cg_p_, &cg_q_})

@@ -24,32 +24,49 @@ void BlockPattern::add_clique(std::span<const int> nodes) {
 }
 
 void BlockSparseMatrix::set_pattern(const BlockPattern& pattern) {
+  // Rows are filled with every declared neighbour, duplicates included (elements sharing an edge
+  // declare it twice), then each short row is sorted and made unique in place: no sort over all
+  // the pattern's pairs, which a cut's rebuild of a whole scene paid for.
   const std::size_t n = pattern.node_count();
   pattern_id_ = pattern.id();
-  std::vector<std::pair<int, int>> pairs = pattern.pairs();
-  std::sort(pairs.begin(), pairs.end());
-  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
-  std::vector<int> count(n, 1);  // the diagonal
+  const auto& pairs = pattern.pairs();
+  std::vector<int> start(n + 1, 0);
+  for (std::size_t i = 0; i < n; ++i)
+    start[i + 1] = 1;  // the diagonal
   for (const auto& [i, j] : pairs) {
-    ++count[static_cast<std::size_t>(i)];
-    ++count[static_cast<std::size_t>(j)];
+    ++start[static_cast<std::size_t>(i) + 1];
+    ++start[static_cast<std::size_t>(j) + 1];
+  }
+  for (std::size_t i = 0; i < n; ++i)
+    start[i + 1] += start[i];
+  std::vector<int> filled(static_cast<std::size_t>(start[n]));
+  std::vector<int> fill(start.begin(), start.end() - 1);
+  for (std::size_t i = 0; i < n; ++i)
+    filled[static_cast<std::size_t>(fill[i]++)] = static_cast<int>(i);
+  for (const auto& [i, j] : pairs) {
+    filled[static_cast<std::size_t>(fill[static_cast<std::size_t>(i)]++)] = j;
+    filled[static_cast<std::size_t>(fill[static_cast<std::size_t>(j)]++)] = i;
   }
   row_start_.assign(n + 1, 0);
-  for (std::size_t i = 0; i < n; ++i)
-    row_start_[i + 1] = row_start_[i] + count[i];
-  columns_.assign(static_cast<std::size_t>(row_start_[n]), 0);
-  std::vector<int> fill(row_start_.begin(), row_start_.end() - 1);
-  for (std::size_t i = 0; i < n; ++i)
-    columns_[static_cast<std::size_t>(fill[i]++)] = static_cast<int>(i);
-  for (const auto& [i, j] : pairs) {
-    columns_[static_cast<std::size_t>(fill[static_cast<std::size_t>(i)]++)] = j;
-    columns_[static_cast<std::size_t>(fill[static_cast<std::size_t>(j)]++)] = i;
+  columns_.clear();
+  columns_.reserve(filled.size());
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto begin = filled.begin() + start[i], end = filled.begin() + start[i + 1];
+    std::sort(begin, end);
+    columns_.insert(columns_.end(), begin, std::unique(begin, end));
+    row_start_[i + 1] = static_cast<int>(columns_.size());
   }
   diagonal_.assign(n, 0);
-  for (std::size_t i = 0; i < n; ++i) {
-    std::sort(columns_.begin() + row_start_[i], columns_.begin() + row_start_[i + 1]);
+  for (std::size_t i = 0; i < n; ++i)
     diagonal_[i] = slot(static_cast<int>(i), static_cast<int>(i));
-  }
+  blocks_.assign(columns_.size(), Mat3::Zero());
+}
+
+void BlockSparseMatrix::set_structure_of(const BlockSparseMatrix& other) {
+  row_start_ = other.row_start_;
+  columns_ = other.columns_;
+  diagonal_ = other.diagonal_;
+  pattern_id_ = other.pattern_id_;
   blocks_.assign(columns_.size(), Mat3::Zero());
 }
 

@@ -40,6 +40,9 @@ class BlockPattern {
 class BlockSparseMatrix {
  public:
   void set_pattern(const BlockPattern& pattern);
+  /// The same blocks as `other` (set from one pattern: the same slots), all zero; a copy, not a
+  /// second pass over the pattern.
+  void set_structure_of(const BlockSparseMatrix& other);
   std::size_t node_count() const { return row_start_.empty() ? 0 : row_start_.size() - 1; }
   std::size_t block_count() const { return columns_.size(); }
   /// Id of the pattern the matrix was set from: terms that cache slot indices refresh them

@@ -55,7 +55,7 @@ void ExplicitVerlet::topology_changed(const SimulationState& state,
     t->declare_blocks(pattern);
   BlockSparseMatrix stiffness, damping;
   stiffness.set_pattern(pattern);
-  damping.set_pattern(pattern);
+  damping.set_structure_of(stiffness);
   // Rest Hessians (positive semi-definite parts) and damping matrices at the current state,
   // plus k·I on every node a contact-like term may press on later.
   for (ForceTerm* t : terms) {

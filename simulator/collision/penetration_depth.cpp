@@ -98,6 +98,34 @@ VertexAdjacency VertexAdjacency::from_edges(std::size_t vertex_count,
   return adjacency;
 }
 
+VertexAdjacency VertexAdjacency::from_tets(std::size_t vertex_count,
+                                           std::span<const std::array<int, 4>> tets) {
+  // Every tet lists its three other corners under each corner; rows are then sorted and made
+  // unique one by one (short rows, no sort over all the mesh's edges).
+  std::vector<int> start(vertex_count + 1, 0);
+  for (const auto& t : tets)
+    for (const int v : t)
+      start[static_cast<std::size_t>(v) + 1] += 3;
+  for (std::size_t v = 0; v < vertex_count; ++v)
+    start[v + 1] += start[v];
+  std::vector<int> listed(static_cast<std::size_t>(start.back()));
+  std::vector<int> fill(start.begin(), start.end() - 1);
+  for (const auto& t : tets)
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < 4; ++b)
+        if (a != b) listed[static_cast<std::size_t>(fill[static_cast<std::size_t>(t[a])]++)] = t[b];
+  VertexAdjacency adjacency;
+  adjacency.offsets.assign(vertex_count + 1, 0);
+  adjacency.neighbours.reserve(listed.size() / 2);
+  for (std::size_t v = 0; v < vertex_count; ++v) {
+    const auto begin = listed.begin() + start[v], end = listed.begin() + start[v + 1];
+    std::sort(begin, end);
+    adjacency.neighbours.insert(adjacency.neighbours.end(), begin, std::unique(begin, end));
+    adjacency.offsets[v + 1] = static_cast<int>(adjacency.neighbours.size());
+  }
+  return adjacency;
+}
+
 double segment_triangle_intersection(const core::Vec3& p, const core::Vec3& q, const core::Vec3& a,
                                      const core::Vec3& b, const core::Vec3& c) {
   const core::Vec3 direction = q - p;

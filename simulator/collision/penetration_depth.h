@@ -5,6 +5,7 @@
 /// edges to non-colliding neighbours cross the penetrated surface; the other colliding points
 /// receive depth and direction by propagation from processed neighbours, layer by layer.
 
+#include <array>
 #include <span>
 #include <vector>
 
@@ -21,6 +22,10 @@ struct VertexAdjacency {
   /// From undirected edges over `vertex_count` vertices; neighbours sorted ascending.
   static VertexAdjacency from_edges(std::size_t vertex_count,
                                     std::span<const std::array<int, 2>> edges);
+  /// The edges of tetrahedra over `vertex_count` vertices (each edge once, however many tets
+  /// share it); neighbours sorted ascending, as from_edges gives them.
+  static VertexAdjacency from_tets(std::size_t vertex_count,
+                                   std::span<const std::array<int, 4>> tets);
   std::span<const int> of(int v) const {
     return {neighbours.data() + offsets[v], static_cast<std::size_t>(offsets[v + 1] - offsets[v])};
   }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 
@@ -24,8 +25,8 @@ void BlockPattern::add_clique(std::span<const int> nodes) {
 }
 
 void BlockSparseMatrix::set_pattern(const BlockPattern& pattern) {
-  // Rows are filled with every declared neighbour, duplicates included (elements sharing an edge
-  // declare it twice), then each short row is sorted and made unique in place: no sort over all
+  // Rows are filled with every declared neighbour once (a stamp per column drops the repeats
+  // of elements sharing an edge as they come), then each short row is sorted: no sort over all
   // the pattern's pairs, which a cut's rebuild of a whole scene paid for.
   const std::size_t n = pattern.node_count();
   pattern_id_ = pattern.id();
@@ -39,21 +40,28 @@ void BlockSparseMatrix::set_pattern(const BlockPattern& pattern) {
   }
   for (std::size_t i = 0; i < n; ++i)
     start[i + 1] += start[i];
-  std::vector<int> filled(static_cast<std::size_t>(start[n]));
+  // Neighbours listed by row: (row, column) in row order, through a counting pass.
+  std::vector<int> listed(static_cast<std::size_t>(start[n]));
   std::vector<int> fill(start.begin(), start.end() - 1);
   for (std::size_t i = 0; i < n; ++i)
-    filled[static_cast<std::size_t>(fill[i]++)] = static_cast<int>(i);
+    listed[static_cast<std::size_t>(fill[i]++)] = static_cast<int>(i);
   for (const auto& [i, j] : pairs) {
-    filled[static_cast<std::size_t>(fill[static_cast<std::size_t>(i)]++)] = j;
-    filled[static_cast<std::size_t>(fill[static_cast<std::size_t>(j)]++)] = i;
+    listed[static_cast<std::size_t>(fill[static_cast<std::size_t>(i)]++)] = j;
+    listed[static_cast<std::size_t>(fill[static_cast<std::size_t>(j)]++)] = i;
   }
   row_start_.assign(n + 1, 0);
   columns_.clear();
-  columns_.reserve(filled.size());
+  columns_.reserve(listed.size() / 2);
+  std::vector<int> seen_in_row(n, -1);
   for (std::size_t i = 0; i < n; ++i) {
-    const auto begin = filled.begin() + start[i], end = filled.begin() + start[i + 1];
-    std::sort(begin, end);
-    columns_.insert(columns_.end(), begin, std::unique(begin, end));
+    const auto row_begin = static_cast<std::ptrdiff_t>(columns_.size());
+    for (int k = start[i]; k < start[i + 1]; ++k) {
+      const int column = listed[static_cast<std::size_t>(k)];
+      if (seen_in_row[static_cast<std::size_t>(column)] == static_cast<int>(i)) continue;
+      seen_in_row[static_cast<std::size_t>(column)] = static_cast<int>(i);
+      columns_.push_back(column);
+    }
+    std::sort(columns_.begin() + row_begin, columns_.end());
     row_start_[i + 1] = static_cast<int>(columns_.size());
   }
   diagonal_.assign(n, 0);

@@ -14,26 +14,15 @@ std::vector<CollisionBodyView> views_of(const std::vector<std::shared_ptr<const 
   return views;
 }
 
-std::vector<std::array<int, 2>> edges_of(const core::TetMesh& mesh) {
-  std::vector<std::array<int, 2>> edges;
-  for (const auto& t : mesh.tets)
-    for (int a = 0; a < 4; ++a)
-      for (int b = a + 1; b < 4; ++b)
-        edges.push_back({std::min(t[a], t[b]), std::max(t[a], t[b])});
-  std::sort(edges.begin(), edges.end());
-  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-  return edges;
-}
-
 }  // namespace
 
 BodyContactTerm::BodyContactTerm(std::vector<std::shared_ptr<const BodyModel>> models,
                                  double stiffness, const SimulationState& state)
     : models_(std::move(models)), stiffness_(stiffness) {
-  rebuild(state);
+  rebuild(state, -1);
 }
 
-void BodyContactTerm::rebuild(const SimulationState& state) {
+void BodyContactTerm::rebuild(const SimulationState& state, int changed_body) {
   const auto rest_views = views_of(models_, state, state.rest_positions);
   std::size_t vertices = 0;
   for (const auto& m : models_)
@@ -41,11 +30,14 @@ void BodyContactTerm::rebuild(const SimulationState& state) {
   // Cell size: the mean tet edge (Teschner et al. 2003); about two buckets per vertex.
   hash_ =
       std::make_unique<SpatialHash>(std::max(mean_edge_length(rest_views), 1e-6), 2 * vertices + 1);
-  adjacency_.clear();
+  // Only the changed body's adjacency is rebuilt (all of them when none is named).
+  adjacency_.resize(models_.size());
   surface_nodes_.clear();
-  for (const auto& m : models_) {
-    adjacency_.push_back(VertexAdjacency::from_edges(
-        static_cast<std::size_t>(state.body(m->body).count), edges_of(m->mesh)));
+  for (std::size_t b = 0; b < models_.size(); ++b) {
+    const auto& m = models_[b];
+    if (changed_body < 0 || m->body == changed_body)
+      adjacency_[b] = VertexAdjacency::from_tets(
+          static_cast<std::size_t>(state.body(m->body).count), m->mesh.tets);
     std::vector<char> on(static_cast<std::size_t>(state.body(m->body).count), 0);
     for (const auto& f : m->surface)
       for (const int v : f)
@@ -67,8 +59,8 @@ void BodyContactTerm::rebuild(const SimulationState& state) {
   structure_changed_ = true;
 }
 
-void BodyContactTerm::topology_changed(const SimulationState& state, int) {
-  rebuild(state);
+void BodyContactTerm::topology_changed(const SimulationState& state, int body) {
+  rebuild(state, body);
 }
 
 void BodyContactTerm::prepare(const SimulationState& state, const StepContext&) {

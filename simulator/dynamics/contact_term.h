@@ -56,7 +56,8 @@ class BodyContactTerm : public ForceTerm {
     std::array<Vec3, 5> at;  ///< positions at detection
   };
   double gap(const Contact& c, std::span<const Vec3> x) const;
-  void rebuild(const SimulationState& state);
+  /// Caches for every body, or only `changed_body`'s adjacency when it is ≥ 0.
+  void rebuild(const SimulationState& state, int changed_body);
 
   std::vector<std::shared_ptr<const BodyModel>> models_;
   double stiffness_;

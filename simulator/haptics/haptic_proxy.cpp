@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <limits>
-#include <map>
 
 #include "simulator/collision/penetration_depth.h"
 
@@ -11,16 +10,33 @@ namespace viscera::sim {
 ProxySurface::ProxySurface(std::vector<core::Triangle> faces) : faces_(std::move(faces)) {
   neighbours_.assign(faces_.size(), {-1, -1, -1});
   // Each directed edge (a, b) of one triangle meets (b, a) of its neighbour on a closed,
-  // consistently oriented surface.
-  std::map<std::pair<int, int>, std::pair<int, int>> edge_owner;  // (a, b) → (triangle, edge)
-  for (std::size_t t = 0; t < faces_.size(); ++t) {
-    for (int e = 0; e < 3; ++e)
-      edge_owner[{faces_[t][e], faces_[t][(e + 1) % 3]}] = {static_cast<int>(t), e};
-  }
+  // consistently oriented surface: look for it among the triangles around b. Where several
+  // triangles share a directed edge (a non-manifold input), the last of them is the neighbour.
+  int vertices = 0;
+  for (const auto& f : faces_)
+    for (const int v : f)
+      vertices = std::max(vertices, v + 1);
+  std::vector<int> start(static_cast<std::size_t>(vertices) + 1, 0);
+  for (const auto& f : faces_)
+    for (const int v : f)
+      ++start[static_cast<std::size_t>(v) + 1];
+  for (std::size_t v = 0; v < static_cast<std::size_t>(vertices); ++v)
+    start[v + 1] += start[v];
+  std::vector<int> around(static_cast<std::size_t>(start.back()));
+  std::vector<int> fill(start.begin(), start.end() - 1);
+  for (std::size_t t = 0; t < faces_.size(); ++t)
+    for (const int v : faces_[t])
+      around[static_cast<std::size_t>(fill[static_cast<std::size_t>(v)]++)] = static_cast<int>(t);
   for (std::size_t t = 0; t < faces_.size(); ++t) {
     for (int e = 0; e < 3; ++e) {
-      const auto it = edge_owner.find({faces_[t][(e + 1) % 3], faces_[t][e]});
-      if (it != edge_owner.end()) neighbours_[t][e] = it->second.first;
+      const int a = faces_[t][e], b = faces_[t][(e + 1) % 3];
+      for (int k = start[static_cast<std::size_t>(b)]; k < start[static_cast<std::size_t>(b) + 1];
+           ++k) {
+        const auto& g = faces_[static_cast<std::size_t>(around[static_cast<std::size_t>(k)])];
+        for (int d = 0; d < 3; ++d)
+          if (g[d] == b && g[(d + 1) % 3] == a)
+            neighbours_[t][e] = around[static_cast<std::size_t>(k)];
+      }
     }
   }
 }

@@ -14,6 +14,32 @@ viscera::testing::Sheet make_sheet() {
   return viscera::testing::make_sheet(20, 0.05);
 }
 
+TEST(ProxySurface, finds_the_triangle_across_every_edge_and_none_across_a_border) {
+  // A closed sphere: every edge has the neighbour that runs it the other way.
+  const core::SurfaceMesh sphere = core::make_icosphere(0.02, 2);
+  const ProxySurface closed(sphere.triangles);
+  for (int t = 0; t < static_cast<int>(sphere.triangles.size()); ++t)
+    for (int e = 0; e < 3; ++e) {
+      const int across = closed.neighbour(t, e);
+      ASSERT_GE(across, 0);
+      ASSERT_NE(across, t);
+      const auto& f = sphere.triangles[static_cast<std::size_t>(t)];
+      const auto& g = sphere.triangles[static_cast<std::size_t>(across)];
+      bool reversed = false;
+      for (int d = 0; d < 3; ++d)
+        reversed = reversed || (g[d] == f[(e + 1) % 3] && g[(d + 1) % 3] == f[e]);
+      EXPECT_TRUE(reversed);
+    }
+  // The open sheet: 4·20 border edges have none, every other edge has one.
+  const viscera::testing::Sheet sheet = make_sheet();
+  const ProxySurface open(sheet.faces);
+  int border = 0;
+  for (int t = 0; t < static_cast<int>(sheet.faces.size()); ++t)
+    for (int e = 0; e < 3; ++e)
+      border += open.neighbour(t, e) < 0 ? 1 : 0;
+  EXPECT_EQ(border, 80);
+}
+
 TEST(HapticProxy, stays_on_the_surface_above_the_tip_with_a_spring_force) {
   const viscera::testing::Sheet sheet = make_sheet();
   const ProxySurface surface(sheet.faces);

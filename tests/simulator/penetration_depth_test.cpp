@@ -35,6 +35,28 @@ VertexAdjacency adjacency_of(const core::TetMesh& mesh) {
   return VertexAdjacency::from_edges(mesh.nodes.size(), edges);
 }
 
+TEST(VertexAdjacency, from_tets_lists_each_edge_once_as_from_sorted_edges_does) {
+  // A gmsh ball: edges shared by up to a dozen tets, nodes of valence 4 to 20.
+  const core::TetMesh ball = core::mesh_closed_surface(core::make_icosphere(0.02, 2));
+  const VertexAdjacency expected = adjacency_of(ball);
+  const VertexAdjacency adjacency = VertexAdjacency::from_tets(ball.nodes.size(), ball.tets);
+  EXPECT_EQ(adjacency.offsets, expected.offsets);
+  EXPECT_EQ(adjacency.neighbours, expected.neighbours);
+  // Every tet's six edges are there, both ways, and no node neighbours itself.
+  for (const auto& t : ball.tets)
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) {
+        const auto row = adjacency.of(t[i]);
+        if (i != j) {
+          EXPECT_TRUE(std::binary_search(row.begin(), row.end(), t[j]));
+        }
+      }
+  for (int v = 0; v < static_cast<int>(ball.nodes.size()); ++v) {
+    const auto row = adjacency.of(v);
+    EXPECT_FALSE(std::binary_search(row.begin(), row.end(), v));
+  }
+}
+
 TEST(PenetrationDepth, plane_gives_exact_depth_and_normal_and_propagates_inward) {
   // Slab b fills z ∈ [−0.05, 0]; block a's two lowest node layers sit 3 mm and 13 mm deep.
   core::TetMesh b = viscera::testing::tet_block(8, 8, 5, 0.01);

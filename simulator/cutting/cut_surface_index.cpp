@@ -58,6 +58,7 @@ CutSurfaceIndex::CutSurfaceIndex(CutSurface surface, double cell_size)
     if (cells <= double(1 << 18)) break;
     cell_ *= 1.01 * std::cbrt(cells / double(1 << 18));
   }
+  inverse_cell_ = 1.0 / cell_;
   for (int t = 0; t < static_cast<int>(surface_.triangles.size()); ++t) {
     core::BoundingBox box;
     for (int k : surface_.triangles[t])
@@ -94,7 +95,7 @@ std::int64_t CutSurfaceIndex::key(int i, int j, int k) const {
 std::array<int, 3> CutSurfaceIndex::cell_of(const Vec3& p) const {
   std::array<int, 3> c{};
   for (int d = 0; d < 3; ++d) {
-    const double x = std::floor((p[d] - origin_[d]) / cell_);
+    const double x = std::floor((p[d] - origin_[d]) * inverse_cell_);
     c[d] = static_cast<int>(std::clamp(x, 0.0, static_cast<double>(dims_[d] - 1)));
   }
   return c;

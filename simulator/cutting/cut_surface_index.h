@@ -54,6 +54,7 @@ class CutSurfaceIndex {
   CutSurface surface_;
   std::vector<core::Vec3> normals_;
   double cell_ = 0.0;
+  double inverse_cell_ = 0.0;  ///< 1 / cell_: a cell lookup multiplies
   core::BoundingBox bounds_;
   core::Vec3 origin_ = core::Vec3::Zero();
   std::array<int, 3> dims_{1, 1, 1};

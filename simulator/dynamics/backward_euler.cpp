@@ -12,8 +12,10 @@ void BackwardEuler::topology_changed(const SimulationState& state,
 
 void BackwardEuler::declare(const SimulationState& state, std::span<ForceTerm* const> terms) {
   BlockPattern pattern(state.node_count());
+  pattern.reserve(declared_pairs_ + declared_pairs_ / 4);
   for (ForceTerm* t : terms)
     t->declare_blocks(pattern);
+  declared_pairs_ = pattern.pairs().size();
   system_.set_pattern(pattern);
   damping_.set_structure_of(system_);
   const std::size_t n = state.node_count();

@@ -61,7 +61,10 @@ void BlockSparseMatrix::set_pattern(const BlockPattern& pattern) {
       seen_in_row[static_cast<std::size_t>(column)] = static_cast<int>(i);
       columns_.push_back(column);
     }
-    std::sort(columns_.begin() + row_begin, columns_.end());
+    // A row holds a few dozen columns: insertion sort, no introsort set-up per row.
+    for (auto it = columns_.begin() + row_begin + 1; it < columns_.end(); ++it)
+      for (auto at = it; at > columns_.begin() + row_begin && *(at - 1) > *at; --at)
+        std::iter_swap(at - 1, at);
     row_start_[i + 1] = static_cast<int>(columns_.size());
   }
   diagonal_.assign(n, 0);

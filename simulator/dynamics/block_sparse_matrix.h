@@ -23,6 +23,8 @@ class BlockPattern {
   explicit BlockPattern(std::size_t nodes = 0);
   std::uint64_t id() const { return id_; }
   std::size_t node_count() const { return nodes_; }
+  /// Room for `pairs` declarations (a solver re-declaring a scene knows about how many).
+  void reserve(std::size_t pairs) { pairs_.reserve(pairs); }
   /// Declares blocks (i, j) and (j, i).
   void add(int i, int j);
   /// Declares every pair of `nodes` (an element's blocks).

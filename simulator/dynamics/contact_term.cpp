@@ -24,18 +24,25 @@ BodyContactTerm::BodyContactTerm(std::vector<std::shared_ptr<const BodyModel>> m
 
 void BodyContactTerm::rebuild(const SimulationState& state, int changed_body) {
   const auto rest_views = views_of(models_, state, state.rest_positions);
-  std::size_t vertices = 0;
-  for (const auto& m : models_)
-    vertices += static_cast<std::size_t>(state.body(m->body).count);
-  // Cell size: the mean tet edge (Teschner et al. 2003); about two buckets per vertex.
-  hash_ =
-      std::make_unique<SpatialHash>(std::max(mean_edge_length(rest_views), 1e-6), 2 * vertices + 1);
+  const std::size_t bodies = models_.size();
+  std::size_t changed = bodies;  // index in models_ of the changed body; bodies: all changed
+  for (std::size_t b = 0; b < bodies && changed_body >= 0; ++b)
+    if (models_[b]->body == changed_body) changed = b;
+  if (hash_ == nullptr || changed == bodies) {
+    // Cell size: the mean tet edge (Teschner et al. 2003); about two buckets per vertex. A cut
+    // keeps the hash: its cells only set the speed of detection, never what is found.
+    std::size_t vertices = 0;
+    for (const auto& m : models_)
+      vertices += static_cast<std::size_t>(state.body(m->body).count);
+    hash_ = std::make_unique<SpatialHash>(std::max(mean_edge_length(rest_views), 1e-6),
+                                          2 * vertices + 1);
+  }
   // Only the changed body's adjacency is rebuilt (all of them when none is named).
-  adjacency_.resize(models_.size());
+  adjacency_.resize(bodies);
   surface_nodes_.clear();
-  for (std::size_t b = 0; b < models_.size(); ++b) {
+  for (std::size_t b = 0; b < bodies; ++b) {
     const auto& m = models_[b];
-    if (changed_body < 0 || m->body == changed_body)
+    if (changed == bodies || b == changed)
       adjacency_[b] = VertexAdjacency::from_tets(
           static_cast<std::size_t>(state.body(m->body).count), m->mesh.tets);
     std::vector<char> on(static_cast<std::size_t>(state.body(m->body).count), 0);
@@ -45,18 +52,53 @@ void BodyContactTerm::rebuild(const SimulationState& state, int changed_body) {
     for (std::size_t i = 0; i < on.size(); ++i)
       if (on[i]) surface_nodes_.push_back(state.body(m->body).first + static_cast<int>(i));
   }
-  // Overlaps of the rest configuration are authored (a polyp's base in its wall): never contacts.
-  const std::size_t bodies = models_.size();
-  rest_overlap_.assign(bodies, {});
-  for (std::size_t b = 0; b < bodies; ++b)
-    rest_overlap_[b].assign(rest_views[b].positions.size() * bodies, 0);
-  for (const VertexInTet& c : hash_->detect(rest_views, false))
-    rest_overlap_[static_cast<std::size_t>(c.vertex_body)]
-                 [static_cast<std::size_t>(c.vertex) * bodies +
-                  static_cast<std::size_t>(c.tet_body)] = 1;
+  find_rest_overlaps(rest_views, changed);
   contacts_.clear();
   declared_.clear();
   structure_changed_ = true;
+}
+
+void BodyContactTerm::find_rest_overlaps(const std::vector<CollisionBodyView>& rest_views,
+                                         std::size_t changed) {
+  // Overlaps of the rest configuration are authored (a polyp's base in its wall): never
+  // contacts. After a cut only the pairs with the cut body can differ: its own vertices in the
+  // other bodies' tets (only tets near it can hold them) and the others' vertices in its tets.
+  const std::size_t bodies = models_.size();
+  rest_overlap_.resize(bodies);
+  std::vector<CollisionBodyView> views = rest_views;
+  std::vector<std::vector<core::Tetrahedron>> near(bodies);
+  if (changed == bodies) {
+    for (std::size_t b = 0; b < bodies; ++b)
+      rest_overlap_[b].assign(rest_views[b].positions.size() * bodies, 0);
+  } else {
+    core::BoundingBox reach;
+    for (const auto& p : rest_views[changed].positions)
+      reach.add(p);
+    for (std::size_t b = 0; b < bodies; ++b) {
+      if (b == changed) {
+        rest_overlap_[b].assign(rest_views[b].positions.size() * bodies, 0);
+        continue;
+      }
+      for (std::size_t v = 0; v < rest_views[b].positions.size(); ++v)
+        rest_overlap_[b][v * bodies + changed] = 0;
+      const auto& x = rest_views[b].positions;
+      for (const auto& t : rest_views[b].tets) {
+        core::BoundingBox box;
+        for (const int v : t)
+          box.add(x[static_cast<std::size_t>(v)]);
+        if ((box.max.array() >= reach.min.array()).all() &&
+            (box.min.array() <= reach.max.array()).all())
+          near[b].push_back(t);
+      }
+      views[b].tets = near[b];
+    }
+  }
+  for (const VertexInTet& c : hash_->detect(views, false)) {
+    const auto vertex_body = static_cast<std::size_t>(c.vertex_body);
+    const auto tet_body = static_cast<std::size_t>(c.tet_body);
+    if (changed != bodies && vertex_body != changed && tet_body != changed) continue;
+    rest_overlap_[vertex_body][static_cast<std::size_t>(c.vertex) * bodies + tet_body] = 1;
+  }
 }
 
 void BodyContactTerm::topology_changed(const SimulationState& state, int body) {

@@ -58,6 +58,9 @@ class BodyContactTerm : public ForceTerm {
   double gap(const Contact& c, std::span<const Vec3> x) const;
   /// Caches for every body, or only `changed_body`'s adjacency when it is ≥ 0.
   void rebuild(const SimulationState& state, int changed_body);
+  /// rest_overlap_ for every body, or only its pairs with `changed` (an index in models_) when
+  /// that is less than the body count.
+  void find_rest_overlaps(const std::vector<CollisionBodyView>& rest_views, std::size_t changed);
 
   std::vector<std::shared_ptr<const BodyModel>> models_;
   double stiffness_;

@@ -8,35 +8,41 @@ ProxySpringTerm::ProxySpringTerm(std::vector<std::shared_ptr<const BodyModel>> m
                                  double stiffness, const SimulationState& state, const Vec3& tip)
     : models_(std::move(models)), proxy_(stiffness), tip_(tip) {
   proxy_.reset(tip);
-  rebuild(state);
+  rebuild(state, -1);
 }
 
-void ProxySpringTerm::rebuild(const SimulationState& state) {
-  std::vector<core::Triangle> faces;
+void ProxySpringTerm::rebuild(const SimulationState& state, int changed_body) {
+  // Each body's surface in its own node numbers, with its adjacency, is kept: a cut searches
+  // the adjacency of the cut body's surface only, then the parts are joined in global numbers.
+  body_surfaces_.resize(models_.size(), ProxySurface(std::vector<core::Triangle>{}));
+  std::vector<int> node_offsets;
   face_body_.clear();
   face_first_.clear();
   surface_nodes_.clear();
-  for (const auto& m : models_) {
+  int faces = 0;
+  for (std::size_t b = 0; b < models_.size(); ++b) {
+    const auto& m = models_[b];
+    if (changed_body < 0 || m->body == changed_body) body_surfaces_[b] = ProxySurface(m->surface);
     const int first = state.body(m->body).first;
-    face_first_.push_back(static_cast<int>(faces.size()));
-    for (const auto& f : m->surface) {
-      faces.push_back({first + f[0], first + f[1], first + f[2]});
-      face_body_.push_back(m->body);
+    node_offsets.push_back(first);
+    face_first_.push_back(faces);
+    faces += static_cast<int>(m->surface.size());
+    face_body_.insert(face_body_.end(), m->surface.size(), m->body);
+    for (const auto& f : m->surface)
       for (const int v : f)
         surface_nodes_.push_back(first + v);
-    }
   }
   std::sort(surface_nodes_.begin(), surface_nodes_.end());
   surface_nodes_.erase(std::unique(surface_nodes_.begin(), surface_nodes_.end()),
                        surface_nodes_.end());
-  surface_ = std::make_unique<ProxySurface>(std::move(faces));
+  surface_ = std::make_unique<ProxySurface>(ProxySurface::joined(body_surfaces_, node_offsets));
   // A new surface: the proxy starts free where it is and finds its contact at the next step.
   proxy_.reset(proxy_.proxy());
   active_ = {-1, -1, -1};
 }
 
-void ProxySpringTerm::topology_changed(const SimulationState& state, int) {
-  rebuild(state);
+void ProxySpringTerm::topology_changed(const SimulationState& state, int body) {
+  rebuild(state, body);
 }
 
 void ProxySpringTerm::prepare(const SimulationState& state, const StepContext&) {

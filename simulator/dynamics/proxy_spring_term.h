@@ -44,8 +44,10 @@ class ProxySpringTerm : public ForceTerm {
   int touched_body_triangle() const;
 
  private:
-  void rebuild(const SimulationState& state);
+  /// Every body's surface, or only `changed_body`'s when it is ≥ 0, then the joined surface.
+  void rebuild(const SimulationState& state, int changed_body);
   std::vector<std::shared_ptr<const BodyModel>> models_;
+  std::vector<ProxySurface> body_surfaces_;  ///< per body, in its own node numbers
   std::unique_ptr<ProxySurface> surface_;
   std::vector<int> face_body_, face_first_;  ///< per global face: body; per body: first face
   std::vector<int> surface_nodes_;

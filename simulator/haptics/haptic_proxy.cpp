@@ -41,6 +41,25 @@ ProxySurface::ProxySurface(std::vector<core::Triangle> faces) : faces_(std::move
   }
 }
 
+ProxySurface ProxySurface::joined(std::span<const ProxySurface> parts,
+                                  std::span<const int> vertex_offsets) {
+  ProxySurface out;
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    const int face_offset = static_cast<int>(out.faces_.size());
+    for (std::size_t t = 0; t < parts[k].faces_.size(); ++t) {
+      core::Triangle f = parts[k].faces_[t];
+      std::array<int, 3> across = parts[k].neighbours_[t];
+      for (int e = 0; e < 3; ++e) {
+        f[e] += vertex_offsets[k];
+        if (across[e] >= 0) across[e] += face_offset;
+      }
+      out.faces_.push_back(f);
+      out.neighbours_.push_back(across);
+    }
+  }
+  return out;
+}
+
 core::Vec3 closest_point_on_triangle(const core::Vec3& p, const core::Vec3& a, const core::Vec3& b,
                                      const core::Vec3& c, std::array<double, 3>& w) {
   const core::Vec3 ab = b - a, ac = c - a, ap = p - a;

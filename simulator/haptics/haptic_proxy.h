@@ -18,12 +18,18 @@ class ProxySurface {
  public:
   /// `faces` outward; keeps a copy of the connectivity, reads positions on every update.
   explicit ProxySurface(std::vector<core::Triangle> faces);
+  /// The surfaces `parts` side by side: part k's vertices shifted by vertex_offsets[k], its
+  /// triangles by the faces before it (no edge joins two parts). Their adjacency is copied,
+  /// not searched again.
+  static ProxySurface joined(std::span<const ProxySurface> parts,
+                             std::span<const int> vertex_offsets);
 
   const std::vector<core::Triangle>& faces() const { return faces_; }
   /// The triangle across edge e (vertices e, e+1) of triangle t, or −1 on a border.
   int neighbour(int t, int e) const { return neighbours_[static_cast<std::size_t>(t)][e]; }
 
  private:
+  ProxySurface() = default;
   std::vector<core::Triangle> faces_;
   std::vector<std::array<int, 3>> neighbours_;
 };

@@ -2,9 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
 
 #include "simulator/dynamics/backward_euler.h"
+#include "simulator/dynamics/body_edges.h"
 #include "simulator/dynamics/kismo_spring_term.h"
 #include "simulator/dynamics/tissue_tearing.h"
 #include "tests/simulator/authored_term_fixtures.h"
@@ -26,6 +28,56 @@ TEST(PlasticFlow, rest_lengths_follow_stretch_only_past_the_yield_and_stop_at_th
   EXPECT_DOUBLE_EQ(rest[2], 1.0);        // compressed 40 %: only stretch flows
   EXPECT_DOUBLE_EQ(rest[3], 1.0);        // no yield: never flows
   EXPECT_DOUBLE_EQ(rest[4], 2.0);        // 3 would be 2.5, but it tore at 2
+}
+
+TEST(BodyEdges, an_edge_takes_the_weakest_limit_of_the_layers_that_share_it) {
+  // A 4 × 1 × 1 bar: tets left of x = 1 cm are the weak layer (yield 0.1), the rest strong (0.3).
+  SimulationState state;
+  const std::vector<core::Vec3> one_node = {core::Vec3::Zero()};
+  const std::vector<double> one_mass = {1.0};
+  const std::vector<std::uint8_t> not_fixed = {0};
+  state.add_body("before", one_node, one_mass, not_fixed);  // the bar's nodes start at 1
+  core::Material weak = testing::soft_test_material(200.0), strong = weak;
+  weak.plastic_yield = 0.1;
+  strong.plastic_yield = 0.3;
+  const auto model = testing::add_tet_body(state, "bar", testing::tet_block(4, 1, 1, 0.005), strong,
+                                           [](const core::Vec3&) { return false; });
+  model->materials = {weak, strong};
+  const auto& mesh = model->mesh;
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+    double x = 0.0;
+    for (const int v : mesh.tets[t])
+      x += 0.25 * mesh.nodes[static_cast<std::size_t>(v)].x();
+    model->tet_material[t] = x < 0.01 ? 0 : 1;
+  }
+  TeschnerDistanceTerm distance(model, state);
+  const BodyEdges edges(distance);
+  const int first = state.body(model->body).first;
+  ASSERT_EQ(first, 1);
+  const auto yield = edges.material_limit(&core::Material::plastic_yield, first);
+  ASSERT_EQ(yield.size(), edges.edges().size());
+  int weak_edges = 0, strong_edges = 0;
+  for (std::size_t e = 0; e < yield.size(); ++e) {
+    const auto [a, b] = edges.edges()[e];
+    // Which layers hold the edge, from the tets that have both its nodes.
+    bool in_weak = false, in_strong = false;
+    for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+      const auto& tet = mesh.tets[t];
+      const bool has_a = std::find(tet.begin(), tet.end(), a - first) != tet.end();
+      const bool has_b = std::find(tet.begin(), tet.end(), b - first) != tet.end();
+      if (!has_a || !has_b) continue;
+      (model->tet_material[t] == 0 ? in_weak : in_strong) = true;
+    }
+    ASSERT_TRUE(in_weak || in_strong);
+    EXPECT_DOUBLE_EQ(yield[e], in_weak ? 0.1 : 0.3);
+    (in_weak ? weak_edges : strong_edges) += 1;
+  }
+  EXPECT_GT(weak_edges, 10);
+  EXPECT_GT(strong_edges, 10);
+  // One layer: every edge has its value.
+  model->materials = {strong, strong};
+  for (const double y : edges.material_limit(&core::Material::plastic_yield, first))
+    EXPECT_DOUBLE_EQ(y, 0.3);
 }
 
 /// An 8 × 1 × 1 bar of 5 mm cubes along x, held at x = 0; its x = 4 cm face is pulled out by

@@ -79,3 +79,32 @@ void HybridCutLoopSweepThroughBall(benchmark::State& state) {
 BENCHMARK(HybridCutLoopSweepThroughBall)->Unit(benchmark::kMillisecond);
 
 }  // namespace
+
+namespace {
+
+// A polyp-sized cut: a 6 mm ball of a few hundred tets with a finer visual surface, cut by a
+// plane through its middle — the scale of a session's loop cut (issue 17: a session's cut
+// ≤ 2 ms, of which this is the mesh part; the world's rebuild is BM_WorldRebuildAfterCut).
+void HybridCutPlanarThroughSmallBall(benchmark::State& state) {
+  static const Ball small = [] {
+    Ball out;
+    out.body = core::mesh_closed_surface(core::make_icosphere(0.006, 2));
+    out.body.node_mass = core::lumped_node_masses(out.body, 1000.0);
+    out.visual = core::make_icosphere(0.00598, 3);
+    out.embedding = core::embed_points(out.visual.vertices, out.body);
+    return out;
+  }();
+  const auto plane = sim::cutting::planar_cut_surface(core::Vec3(0.0002, 0.0004, 0.0001),
+                                                      core::Vec3(0.2, 1.0, 0.1),
+                                                      core::Vec3::UnitX(), 0.015, 0.015, 8);
+  sim::cutting::TopologyChange change;
+  for (auto _ : state) {
+    change = sim::cutting::hybrid_cut(small.body, small.body.nodes, plane, small.visual,
+                                      small.embedding);
+    benchmark::DoNotOptimize(change.mesh.tets.data());
+  }
+  report(state, change);
+}
+BENCHMARK(HybridCutPlanarThroughSmallBall)->Unit(benchmark::kMillisecond);
+
+}  // namespace

@@ -40,6 +40,28 @@ TEST(ProxySurface, finds_the_triangle_across_every_edge_and_none_across_a_border
   EXPECT_EQ(border, 80);
 }
 
+TEST(ProxySurface, joined_parts_keep_their_adjacency_in_global_numbers) {
+  // A sheet (441 vertices) then a sphere numbered after it: the joined surface's adjacency is
+  // what a search over all its faces finds.
+  const viscera::testing::Sheet sheet = make_sheet();
+  const core::SurfaceMesh sphere = core::make_icosphere(0.02, 1);
+  const std::vector<ProxySurface> parts = {ProxySurface(sheet.faces),
+                                           ProxySurface(sphere.triangles)};
+  const std::vector<int> offsets = {0, static_cast<int>(sheet.positions.size())};
+  const ProxySurface joined = ProxySurface::joined(parts, offsets);
+  std::vector<core::Triangle> all = sheet.faces;
+  for (core::Triangle f : sphere.triangles) {
+    for (int& v : f)
+      v += offsets[1];
+    all.push_back(f);
+  }
+  const ProxySurface searched(all);
+  ASSERT_EQ(joined.faces(), searched.faces());
+  for (int t = 0; t < static_cast<int>(all.size()); ++t)
+    for (int e = 0; e < 3; ++e)
+      EXPECT_EQ(joined.neighbour(t, e), searched.neighbour(t, e));
+}
+
 TEST(HapticProxy, stays_on_the_surface_above_the_tip_with_a_spring_force) {
   const viscera::testing::Sheet sheet = make_sheet();
   const ProxySurface surface(sheet.faces);

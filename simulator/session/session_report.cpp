@@ -294,6 +294,7 @@ nlohmann::json report_to_json(const SessionReport& r) {
           {"wall_time", r.wall_time},
           {"time_step", r.time_step},
           {"substeps", r.substeps},
+          {"settling", {{"steps", r.settle_steps}, {"at_rest", r.settled_at_rest}}},
           {"time_limit", r.time_limit},
           {"force_warning", r.force_warning},
           {"real_time_factor", r.wall_time > 0.0 ? r.simulated_time / r.wall_time : 0.0},

@@ -161,6 +161,10 @@ struct SessionReport {
   double wall_time = 0.0;       ///< s
   double time_step = 0.0;       ///< s
   int substeps = 1;
+  /// Settling to the static equilibrium before the clock starts (World::settle): steps taken
+  /// (0: not settled) and whether it came to rest.
+  int settle_steps = 0;
+  bool settled_at_rest = false;
   double time_limit = 0.0;     ///< s
   double force_warning = 0.0;  ///< N
   std::vector<EnergySample> samples;

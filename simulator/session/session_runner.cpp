@@ -117,6 +117,11 @@ SessionRunner::SessionRunner(const core::Scenario& scenario, const HeadlessRunOp
     }
     if (fluid_) start_cavity_flow(scenario);
   }
+  if (options.settle) {
+    const World::Settling settling = world_.settle();
+    report_.settle_steps = settling.steps;
+    report_.settled_at_rest = settling.at_rest;
+  }
 
   // The camera observes the surface the instrument works in, restricted to the region the
   // first inspect-surface task on it names.

@@ -48,8 +48,14 @@ struct HeadlessRunOptions {
   double perforation_depth = 0.0;
   double force_warning = 0.0;
   bool end_when_complete = true;  ///< end once every step of the procedure is done
-  /// m per sub-step below which a calm world goes to sleep until touched (World); 0: never.
-  double sleep_threshold = 1e-10;
+  /// m per step below which a calm world goes to sleep until touched (World); 0: never. At
+  /// 1e-7 m per 1 ms step (0.1 mm/s) it lies above the creep the implicit solver's residual
+  /// tolerance leaves (a step whose residual is below 1 µN keeps its velocity: ~10⁻⁸–10⁻⁷ m
+  /// per step on the wall's nodes), which a smaller threshold would never see end.
+  double sleep_threshold = 1e-7;
+  /// Start from the patient's static equilibrium (World::settle) rather than the authored rest
+  /// shape sagging into it during the session.
+  bool settle = true;
 };
 
 /// A session in progress.

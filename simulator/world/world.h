@@ -119,6 +119,22 @@ class World {
   /// Energies at the current state.
   BodyEnergies energies() const;
 
+  /// Brings a scene authored at rest to its static equilibrium under its terms before a session
+  /// starts — the wall's sag under gravity, a pathology hanging on its wall, bodies pressed
+  /// together — so the trainee does not watch the patient sag into place. Backward Euler steps
+  /// of `h` s with the velocities zeroed after each (a damped Newton descent on the potential
+  /// energy, each step regularised by M/h²) until no node moves more than `tolerance` m in a
+  /// step, or `max_steps`; the scene then starts there at rest and the clock stays at zero.
+  /// Only with the implicit integrator and only when every body is held — a fixed node, or an
+  /// attachment or connection to another body: a free body has no rest to settle to — and
+  /// without motility or a pulse, whose driven motion has none either.
+  struct Settling {
+    int steps = 0;           ///< settle steps taken (0: not settled at all)
+    bool at_rest = false;    ///< the last step moved no node more than the tolerance
+    double last_move = 0.0;  ///< m, the largest node move of the last step
+  };
+  Settling settle(double h = 0.05, int max_steps = 30, double tolerance = 1e-7);
+
   /// Sleeping (the deactivation of rigid-body engines): once no node has moved more than
   /// `threshold` m per step for kCalmStepsToSleep steps and the instrument touches nothing, the
   /// world stops integrating (velocities set to zero) until the proxy meets a surface again.

@@ -128,8 +128,10 @@ ScoopRun run(const core::Scenario& scenario, const nlohmann::json& script) {
   return r;
 }
 
+/// The polyp where a session finds it at its start: settled on its wall (World::settle).
 PolypFrame frame_of(const core::Scenario& scenario) {
-  const World world(scenario);
+  World world(scenario);
+  world.settle();
   return polyp_frame(world);
 }
 

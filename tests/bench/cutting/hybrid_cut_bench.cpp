@@ -18,15 +18,19 @@ struct Ball {
   core::SurfaceEmbedding embedding;
 };
 
+/// A gmsh ball of `radius` m from an icosphere of `level` subdivisions, with a visual surface
+/// one level finer just inside it, embedded in its tets.
+Ball make_ball(double radius, int level) {
+  Ball out;
+  out.body = core::mesh_closed_surface(core::make_icosphere(radius, level));
+  out.body.node_mass = core::lumped_node_masses(out.body, 1000.0);
+  out.visual = core::make_icosphere(radius * (1.0 - 1.0 / 300.0), level + 1);
+  out.embedding = core::embed_points(out.visual.vertices, out.body);
+  return out;
+}
+
 const Ball& ball() {
-  static const Ball b = [] {
-    Ball out;
-    out.body = core::mesh_closed_surface(core::make_icosphere(0.03, 4));
-    out.body.node_mass = core::lumped_node_masses(out.body, 1000.0);
-    out.visual = core::make_icosphere(0.0299, 5);
-    out.embedding = core::embed_points(out.visual.vertices, out.body);
-    return out;
-  }();
+  static const Ball b = make_ball(0.03, 4);
   return b;
 }
 
@@ -86,14 +90,7 @@ namespace {
 // plane through its middle — the scale of a session's loop cut (issue 17: a session's cut
 // ≤ 2 ms, of which this is the mesh part; the world's rebuild is BM_WorldRebuildAfterCut).
 void HybridCutPlanarThroughSmallBall(benchmark::State& state) {
-  static const Ball small = [] {
-    Ball out;
-    out.body = core::mesh_closed_surface(core::make_icosphere(0.006, 2));
-    out.body.node_mass = core::lumped_node_masses(out.body, 1000.0);
-    out.visual = core::make_icosphere(0.00598, 3);
-    out.embedding = core::embed_points(out.visual.vertices, out.body);
-    return out;
-  }();
+  static const Ball small = make_ball(0.006, 2);
   const auto plane = sim::cutting::planar_cut_surface(core::Vec3(0.0002, 0.0004, 0.0001),
                                                       core::Vec3(0.2, 1.0, 0.1),
                                                       core::Vec3::UnitX(), 0.015, 0.015, 8);

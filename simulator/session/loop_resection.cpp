@@ -9,8 +9,8 @@
 
 #include "core/error.h"
 #include "simulator/cutting/fragments.h"
-#include "simulator/dynamics/attachment_term.h"
 #include "simulator/session/cut_topology.h"
+#include "simulator/session/severed_pieces.h"
 
 namespace viscera::sim {
 
@@ -92,21 +92,6 @@ void LoopResection::follow(const InstrumentState& state, World& world, double ti
   sweep_.clear();
 }
 
-std::vector<std::uint8_t> LoopResection::anchored_nodes(const World& world, int body) const {
-  const auto inverse = world.state().range(world.state().inverse_masses, body);
-  std::vector<std::uint8_t> anchored(inverse.size(), 0);
-  for (std::size_t i = 0; i < inverse.size(); ++i)
-    anchored[i] = inverse[i] == 0.0 ? 1 : 0;
-  for (const auto& term : world.terms()) {
-    const auto* attachments = dynamic_cast<const AttachmentTerm*>(term.get());
-    if (attachments == nullptr) continue;
-    for (const Attachment& a : attachments->attachments())
-      if (a.body == body && a.node >= 0 && static_cast<std::size_t>(a.node) < anchored.size())
-        anchored[static_cast<std::size_t>(a.node)] = 1;
-  }
-  return anchored;
-}
-
 void LoopResection::cut(World& world, double time, CuttingSummary& summary,
                         std::vector<SessionEvent>& events) {
   cutting::CutSurface surface;
@@ -158,7 +143,7 @@ void LoopResection::cut(World& world, double time, CuttingSummary& summary,
 
     // Chips: fragments without an anchor. A body that never had one keeps its largest piece.
     const core::TetMesh& cut_mesh = world.models()[static_cast<std::size_t>(b)]->mesh;
-    const auto fragments = cutting::body_fragments(cut_mesh, anchored_nodes(world, b));
+    const auto fragments = cutting::body_fragments(cut_mesh, held_nodes(world, b));
     const bool any_anchor =
         std::any_of(fragments.begin(), fragments.end(), [](const auto& f) { return f.anchored; });
     std::size_t largest = 0;

@@ -75,8 +75,6 @@ class LoopResection {
  private:
   void cut(World& world, double time, CuttingSummary& summary, std::vector<SessionEvent>& events);
   void record_pose(const InstrumentState& state);
-  /// Nodes of `body` that hold it in place: fixed nodes and nodes bound to another body.
-  std::vector<std::uint8_t> anchored_nodes(const World& world, int body) const;
 
   std::vector<int> bodies_;
   std::vector<double> initial_volume_;  ///< m³ rest volume of each cuttable body at the start

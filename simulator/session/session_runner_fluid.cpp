@@ -13,6 +13,7 @@
 #include "simulator/dynamics/pulse_waves.h"
 #include "simulator/session/chip_drift.h"
 #include "simulator/session/session_runner.h"
+#include "simulator/session/severed_pieces.h"
 
 namespace viscera::sim {
 
@@ -51,14 +52,9 @@ void SessionRunner::start_bleeding_sources(const core::Scenario& scenario) {
 }
 
 void SessionRunner::start_bleeding(int body, const cutting::TopologyChange& change, double time) {
-  // Blood comes from the side still fed by the patient: a chip's cut faces do not bleed.
-  std::vector<std::uint8_t> excised(change.mesh.nodes.size(), 0);
-  if (resection_) {
-    for (const Chip& chip : resection_->chips())
-      if (chip.body == body)
-        for (const int n : chip.nodes)
-          excised[static_cast<std::size_t>(n)] = 1;
-  }
+  // Blood comes from the side still fed by the patient: the cut faces of a piece cut off from
+  // every hold (a loop's chip, a scissors' free fragment) do not bleed.
+  const std::vector<std::uint8_t> excised = severed_nodes(change.mesh, held_nodes(world_, body));
   std::vector<core::Triangle> cut_triangles;
   cut_triangles.reserve(change.cut_surface_faces.size());
   for (const int f : change.cut_surface_faces) {

@@ -141,23 +141,16 @@ void LoopResection::cut(World& world, double time, CuttingSummary& summary,
         std::min(summary.min_dihedral_after_degrees, s.min_dihedral_after_degrees);
     summary.volume_after += s.rest_volume_after - s.rest_volume_before;
 
-    // Chips: fragments without an anchor. A body that never had one keeps its largest piece.
+    // Chips: the pieces cut off from every hold (severed_pieces.h).
     const core::TetMesh& cut_mesh = world.models()[static_cast<std::size_t>(b)]->mesh;
-    const auto fragments = cutting::body_fragments(cut_mesh, held_nodes(world, b));
-    const bool any_anchor =
-        std::any_of(fragments.begin(), fragments.end(), [](const auto& f) { return f.anchored; });
-    std::size_t largest = 0;
-    for (std::size_t f = 1; f < fragments.size(); ++f)
-      if (fragments[f].rest_volume > fragments[largest].rest_volume) largest = f;
     BodyResection& resection = summary.bodies[k];
     resection.resected_volume = 0.0;
     resection.chips = 0;
     std::erase_if(chips_, [b](const Chip& chip) { return chip.body == b; });
-    for (std::size_t f = 0; f < fragments.size(); ++f) {
-      if (fragments[f].anchored || (!any_anchor && f == largest)) continue;
-      resection.resected_volume += fragments[f].rest_volume;
+    for (const cutting::Fragment& chip : severed_fragments(cut_mesh, world.held_nodes(b))) {
+      resection.resected_volume += chip.rest_volume;
       ++resection.chips;
-      chips_.push_back({b, fragments[f].nodes, fragments[f].rest_volume});
+      chips_.push_back({b, chip.nodes, chip.rest_volume});
     }
     if (observer_) observer_(b, change, time);  // the chips of this cut are known
     events.push_back({time, "cut",

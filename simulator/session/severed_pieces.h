@@ -6,17 +6,17 @@
 #include <vector>
 
 #include "core/mesh/tet_mesh.h"
-#include "simulator/world/world.h"
+#include "simulator/cutting/fragments.h"
 
 namespace viscera::sim {
 
-/// Per node of `body`, 1 for a node that holds it in place: a fixed node, a node attached to
-/// another body's tets (a pathology on its wall), or a node of a connection spring to another
-/// body.
-std::vector<std::uint8_t> held_nodes(const World& world, int body);
+/// The pieces (connected components, in cutting::body_fragments order) of `mesh` with no node
+/// flagged in `held` (World::held_nodes). A body held nowhere keeps its largest piece (by rest
+/// volume) as the patient's.
+std::vector<cutting::Fragment> severed_fragments(const core::TetMesh& mesh,
+                                                 const std::vector<std::uint8_t>& held);
 
-/// Per node of `mesh`, 1 for a node of a piece (a connected component) with no held node. A
-/// body held nowhere keeps its largest piece (by rest volume) as the patient's.
+/// Per node of `mesh`, 1 for a node of a severed piece (severed_fragments).
 std::vector<std::uint8_t> severed_nodes(const core::TetMesh& mesh,
                                         const std::vector<std::uint8_t>& held);
 

@@ -4,6 +4,7 @@
 /// from the scenario, and one integrator. Single-threaded and in a fixed order, so the same
 /// scenario gives the same state bit for bit (the deterministic mode of sessions and replays).
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -128,6 +129,11 @@ class World {
   /// Only with the implicit integrator and only when every body is held — a fixed node, or an
   /// attachment or connection to another body: a free body has no rest to settle to — and
   /// without motility or a pulse, whose driven motion has none either.
+  /// Per node of `body`, 1 for a node that holds it in place: a fixed node, a node attached to
+  /// another body's tets (a pathology on its wall), or a node of a connection spring to another
+  /// body. What settle() requires of every body, and what a cut piece needs to stay the
+  /// patient's (severed_pieces.h).
+  std::vector<std::uint8_t> held_nodes(int body) const;
   struct Settling {
     int steps = 0;           ///< settle steps taken (0: not settled at all)
     bool at_rest = false;    ///< the last step moved no node more than the tolerance

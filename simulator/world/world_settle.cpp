@@ -8,40 +8,37 @@
 #include "simulator/world/world.h"
 
 namespace viscera::sim {
-namespace {
-
-/// Whether every body has a fixed node or is tied to another body by an attachment or a
-/// connection spring.
-bool every_body_held(const SimulationState& state,
-                     const std::vector<std::unique_ptr<ForceTerm>>& terms) {
-  const int bodies = static_cast<int>(state.bodies().size());
-  std::vector<char> held(static_cast<std::size_t>(bodies), 0);
-  for (int b = 0; b < bodies; ++b) {
-    const auto inverse = state.range(state.inverse_masses, b);
-    held[static_cast<std::size_t>(b)] =
-        std::any_of(inverse.begin(), inverse.end(), [](double w) { return w == 0.0; });
-  }
-  for (const auto& term : terms) {
-    if (const auto* a = dynamic_cast<const AttachmentTerm*>(term.get())) {
-      for (const Attachment& attachment : a->attachments())
-        if (attachment.host != attachment.body) held[static_cast<std::size_t>(attachment.body)] = 1;
-    } else if (const auto* c = dynamic_cast<const ConnectionSpringTerm*>(term.get())) {
-      for (const ConnectionSpring& spring : c->springs()) {
-        if (spring.body_a == spring.body_b) continue;
-        held[static_cast<std::size_t>(spring.body_a)] = 1;
-        held[static_cast<std::size_t>(spring.body_b)] = 1;
+std::vector<std::uint8_t> World::held_nodes(int body) const {
+  const auto inverse = state_.range(state_.inverse_masses, body);
+  std::vector<std::uint8_t> held(inverse.size(), 0);
+  for (std::size_t i = 0; i < inverse.size(); ++i)
+    held[i] = inverse[i] == 0.0 ? 1 : 0;
+  const auto hold = [&](int node) {
+    if (node >= 0 && static_cast<std::size_t>(node) < held.size())
+      held[static_cast<std::size_t>(node)] = 1;
+  };
+  for (const auto& term : terms_) {
+    if (const auto* attachments = dynamic_cast<const AttachmentTerm*>(term.get())) {
+      for (const Attachment& a : attachments->attachments())
+        if (a.body == body && a.host != body) hold(a.node);
+    } else if (const auto* springs = dynamic_cast<const ConnectionSpringTerm*>(term.get())) {
+      for (const ConnectionSpring& s : springs->springs()) {
+        if (s.body_a == body && s.body_b != body) hold(s.node_a);
+        if (s.body_b == body && s.body_a != body) hold(s.node_b);
       }
     }
   }
-  return std::all_of(held.begin(), held.end(), [](char h) { return h != 0; });
+  return held;
 }
-
-}  // namespace
 
 World::Settling World::settle(double h, int max_steps, double tolerance) {
   Settling result;
   if (dynamic_cast<const BackwardEuler*>(integrator_.get()) == nullptr) return result;
-  if (state_.node_count() == 0 || !every_body_held(state_, terms_)) return result;
+  if (state_.node_count() == 0) return result;
+  for (int b = 0; b < static_cast<int>(state_.bodies().size()); ++b) {
+    const auto held = held_nodes(b);
+    if (std::find(held.begin(), held.end(), std::uint8_t{1}) == held.end()) return result;
+  }
   if (drives_bodies(terms_)) return result;  // motility or a pulse: no rest to settle to
   const double clock = state_.time;
   const std::vector<ForceTerm*> terms = term_pointers();

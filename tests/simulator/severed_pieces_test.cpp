@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "simulator/world/world.h"
 #include "templates/template_catalog.h"
 #include "tests/simulator/sim_fixtures.h"
 
@@ -51,17 +52,17 @@ TEST(SeveredPieces, a_pathology_is_held_by_its_attachments_and_the_wall_by_its_f
   };
   // The wall: exactly its fixed nodes.
   const int uterus = world.body_index("uterus");
-  const auto wall = held_nodes(world, uterus);
+  const auto wall = world.held_nodes(uterus);
   const auto inverse = world.state().range(world.state().inverse_masses, uterus);
   EXPECT_EQ(count(wall), std::count(inverse.begin(), inverse.end(), 0.0));
   EXPECT_GT(count(wall), 0);
   // The polyp: its base nodes attached in the wall's tets, not its free head.
   const int polyp = world.body_index("polyp-1");
-  const auto base = held_nodes(world, polyp);
+  const auto base = world.held_nodes(polyp);
   EXPECT_GT(count(base), 0);
   EXPECT_LT(count(base), static_cast<long>(base.size()) / 2);
   // The myoma: the nodes of its connection springs to the wall.
-  const auto myoma = held_nodes(world, world.body_index("myoma-1"));
+  const auto myoma = world.held_nodes(world.body_index("myoma-1"));
   EXPECT_GT(count(myoma), 0);
   // Uncut, nothing is severed.
   const auto& polyp_mesh = world.models()[static_cast<std::size_t>(polyp)]->mesh;

@@ -76,11 +76,17 @@ nlohmann::json resolve_script_landmarks(const nlohmann::json& script,
         p += place.value("along_normal", 0.0) * from.normal;
         if (place.contains("offset")) p += place["offset"].get<core::Vec3>();
         if (place.contains("frame")) p += frame_offset(from, place["frame"]);
+        // A tip that follows the tissue is anchored where its landmark lies.
+        if (key == std::string("tip") && place.value("follow", false)) {
+          out["waypoints"][i]["tip_anchor"] = from.position;
+          if (!from.object.empty()) out["waypoints"][i]["tip_anchor_body"] = from.object;
+        }
         place = p;
       } catch (const nlohmann::json::exception& e) {
         throw core::InputError(std::string("a landmark place needs \"landmark\" and optional "
                                            "\"towards\", \"fraction\", \"along_normal\", "
-                                           "\"offset\" [x, y, z], \"frame\" [a, b, c]: ") +
+                                           "\"offset\" [x, y, z], \"frame\" [a, b, c], "
+                                           "\"follow\" true|false: ") +
                                    e.what(),
                                {file, pointer, ""});
       }
@@ -172,6 +178,10 @@ ScriptedTrajectory ScriptedTrajectory::from_json(const nlohmann::json& json,
         s.irrigating = valve == 1;
       }
       s.loop_extension = w.value("loop_extension", s.loop_extension);
+      // A tip anchored on the tissue follows it; a tip without an anchor does not.
+      s.follow = w.contains("tip_anchor") ? 1.0 : 0.0;
+      s.anchor = s.follow > 0.0 ? w["tip_anchor"].get<core::Vec3>() : core::Vec3::Zero();
+      s.anchor_body = s.follow > 0.0 ? w.value("tip_anchor_body", std::string()) : std::string();
       if (w.contains("look_at")) {
         const InstrumentState looking =
             look_at(s.tip, w["look_at"].get<core::Vec3>(), s.axis, optics_angle);
@@ -185,6 +195,7 @@ ScriptedTrajectory ScriptedTrajectory::from_json(const nlohmann::json& json,
               "waypoint needs \"t\" (s) and \"tip\" [x, y, z] (m), optional vectors and valves: ") +
               e.what());
     }
+    if (!s.anchor.allFinite()) fail(pointer + "/tip_anchor", "the tip's anchor must be finite");
     if ((i == 0 && t != 0.0) || (i > 0 && !(t > script.times_.back())) || !s.tip.allFinite() ||
         !s.axis.allFinite() || s.axis.norm() == 0.0) {
       fail(pointer, "waypoint times must start at 0 and increase, tips and axes must be finite");

@@ -21,11 +21,15 @@ namespace viscera::sim {
 ///
 /// the place is  L + fraction · (T − L) + along_normal · n_L + offset + a u + b v + c n_L,
 /// with L and n_L the position and unit normal of "landmark" (the normal points away from the
-/// tissue; a pathology's runs from its base to its apex), T the position of "towards" (optional,
+/// tissue; a pathology's apex landmark's runs from its base to its apex, its base landmark's is
+/// the wall's), T the position of "towards" (optional,
 /// as are the others; lengths in m), and (u, v, n_L) the landmark's frame: u = n_L × ẑ made unit
 /// (n_L × x̂ when n_L is vertical), v = n_L × u. A waypoint's "axis" or "up" may likewise be
-/// {"landmark": id, "frame": [a, b, c]}, the direction a u + b v + c n_L. Throws core::InputError
-/// naming `file` and the JSON pointer of a place whose landmark the scenario lacks.
+/// {"landmark": id, "frame": [a, b, c]}, the direction a u + b v + c n_L. A tip place with
+/// "follow": true also sets the waypoint's "tip_anchor" to L and its "tip_anchor_body" to the
+/// landmark's object: the tip then moves with that tissue there (InstrumentState::follow). Throws
+/// core::InputError naming `file` and the JSON pointer of a place whose landmark the scenario
+/// lacks.
 nlohmann::json resolve_script_landmarks(const nlohmann::json& script,
                                         const std::vector<core::Landmark>& landmarks,
                                         const std::string& file);
@@ -52,7 +56,9 @@ class InstrumentInput {
 /// t in s, positions in m, stiffness in N/m, optics angle in degrees. Version 1 scripts carry
 /// only "tip"; "axis" (default: the previous waypoint's, or +z) and "up" set the shaft and the
 /// roll of the optics, or "look_at" points the angled optics at a point (the shaft stays on the
-/// side of the previous axis). Valve openings are in [0, 1] and hold until changed; so does
+/// side of the previous axis). "tip_anchor" [x, y, z] (m, a rest position on the body
+/// "tip_anchor_body", default the tool's) makes the waypoint's tip follow the tissue there
+/// (InstrumentState::follow). Valve openings are in [0, 1] and hold until changed; so does
 /// "activate", the cutting pedal (0 or 1), which switches at its waypoint, and
 /// "loop_extension", the resection loop's travel in front of the sheath (m, 0 … 0.02). "body"
 /// names the object the tool touches (optional: the first simulated body). "tip" and "look_at"

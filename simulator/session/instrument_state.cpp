@@ -72,6 +72,18 @@ InstrumentState blend(const InstrumentState& a, const InstrumentState& b, double
   s.jaws_closed = f >= 1.0 ? b.jaws_closed : a.jaws_closed;
   s.irrigating = f >= 1.0 ? b.irrigating : a.irrigating;
   s.loop_extension = (1.0 - f) * a.loop_extension + f * b.loop_extension;
+  // The displacement field is smooth, so blending the anchors blends the offsets; a state that
+  // does not follow lends the other its anchor.
+  s.follow = (1.0 - f) * a.follow + f * b.follow;
+  // Between two bodies the tip follows the nearer waypoint's.
+  if (a.follow > 0.0 && b.follow > 0.0 && a.anchor_body == b.anchor_body) {
+    s.anchor = (1.0 - f) * a.anchor + f * b.anchor;
+    s.anchor_body = a.anchor_body;
+  } else {
+    const bool from_a = b.follow > 0.0 ? a.follow > 0.0 && f < 0.5 : true;
+    s.anchor = from_a ? a.anchor : b.anchor;
+    s.anchor_body = from_a ? a.anchor_body : b.anchor_body;
+  }
   orthonormalise(s);
   return s;
 }

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <string_view>
 
 #include "core/math_types.h"
@@ -63,6 +64,14 @@ struct InstrumentState {
   /// The irrigation valve of the suction–irrigation cannula is open (its second trumpet
   /// valve): the jet leaves the tip while the cannula is in the port (irrigation_jet.h).
   bool irrigating = false;
+  /// How much the tip follows the tissue, 0 … 1 (a script place with "follow": a trainee who
+  /// keeps the tool on what he sees, where the tissue is now): the tip is offset by
+  /// `follow` × the displacement (current − rest, m) of the nodes of body `anchor_body` (empty:
+  /// the instrument's) nearest `anchor`, a rest position in m. Distension moves the wall a
+  /// millimetre in a few seconds, as much as a polyp's stalk is high.
+  double follow = 0.0;
+  core::Vec3 anchor = core::Vec3::Zero();
+  std::string anchor_body = {};
 
   bool operator==(const InstrumentState&) const = default;
 };

@@ -12,6 +12,7 @@
 #include "core/scenario/scenario_json.h"
 #include "core/sha256.h"
 #include "simulator/session/simulation_check.h"
+#include "simulator/session/tissue_follow.h"
 #include "simulator/session/urethra_tissue.h"
 #include "simulator/session/world_tissue.h"
 
@@ -103,7 +104,7 @@ SessionRunner::SessionRunner(const core::Scenario& scenario, const HeadlessRunOp
 
   std::string surface_object;
   if (options.instrument != nullptr) {
-    state_ = options.instrument->state(0, 0.0);
+    state_ = input_ = options.instrument->state(0, 0.0);
     tissue_ = make_tissue(scenario, world_, options, state_, perforation_depth_);
     if (options.record_inputs) report_.inputs.emplace_back(0, state_);
     report_.metrics.start_at(state_.tip);
@@ -304,10 +305,11 @@ void SessionRunner::step(const InstrumentState& input) {
   if (finished_) return;
   const bool has_instrument = options_.instrument != nullptr;
   if (has_instrument) {
-    if (options_.record_inputs && !(input == state_))
+    if (options_.record_inputs && !(input == input_))
       report_.inputs.emplace_back(world_.steps() + 1, input);
-    if (!(input == state_)) instrument_moved_ = true;
-    state_ = input;
+    if (!(input == input_)) instrument_moved_ = true;
+    input_ = input;
+    state_ = followed(input, world_.bodies(), tissue_->body());
     move_tissue();
   }
   step_world();

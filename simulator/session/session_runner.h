@@ -127,7 +127,8 @@ class SessionRunner {
   World world_;
   core::InstrumentSpec instrument_;
   SessionReport report_;
-  InstrumentState state_;
+  InstrumentState input_;  ///< the input as given
+  InstrumentState state_;  ///< the input with its tip where the tissue it follows is now
   std::unique_ptr<InstrumentTissue> tissue_;
   std::unique_ptr<SurfaceCoverage> coverage_;
   /// The resection loop, with a "resectoscope" instrument: it cuts the pathology bodies.

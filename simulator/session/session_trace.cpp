@@ -37,7 +37,10 @@ nlohmann::json state_to_json(long long step, const InstrumentState& s) {
           s.coagulation,
           std::string(tool_name(s.tool)),
           s.jaws_closed,
-          s.irrigating};
+          s.irrigating,
+          s.follow,
+          s.anchor,
+          s.anchor_body};
 }
 
 std::pair<long long, InstrumentState> state_from_json(const nlohmann::json& j) {
@@ -59,6 +62,11 @@ std::pair<long long, InstrumentState> state_from_json(const nlohmann::json& j) {
     j.at(11).get_to(s.jaws_closed);
   }
   if (j.size() > 12) j.at(12).get_to(s.irrigating);  // since the suction–irrigation cannula
+  if (j.size() > 15) {                               // since tips that follow the tissue
+    j.at(13).get_to(s.follow);
+    j.at(14).get_to(s.anchor);
+    j.at(15).get_to(s.anchor_body);
+  }
   return {core::whole_number<long long>(j.at(0), "", ""), s};
 }
 

@@ -249,9 +249,11 @@ core::Scenario HysteroscopyTemplate::build(const ParameterValues& p, std::uint64
   // sit in front of the smooth funnel's apex, so the landmarks move onto the mesh (a camera
   // centring one sees it, not the facet in front of it).
   scenario.landmarks = shape.landmarks;
-  // Each pathology in the cavity is a landmark at its apex and one ("ID-base") at the centre of
-  // its base on the wall, both with the normal from base to apex: scripts and centring tasks
-  // find it, and script places take offsets in its frame (resolve_script_landmarks).
+  // Each pathology in the cavity is a landmark at its apex, with the normal from base to apex,
+  // and one ("ID-base") at the centre of its base on the wall, with the wall's normal there (a
+  // place offset along it in the base's frame lies at a height above the wall, whichever way
+  // a stalk leans): scripts and centring tasks find them, and script places take offsets in
+  // their frames (resolve_script_landmarks).
   for (const auto& pathology : pathologies) {
     if (pathology.in_wall || pathology.record.kind == "adhesion") continue;
     const auto& v = pathology.surface.vertices;
@@ -266,8 +268,10 @@ core::Scenario HysteroscopyTemplate::build(const ParameterValues& p, std::uint64
     const core::Vec3 axis = (apex - base).normalized();
     scenario.landmarks.push_back(
         {pathology.record.id, "apex of " + pathology.record.id, pathology.record.id, apex, axis});
+    const core::Vec3 wall =
+        pathology.wall_normal.norm() > 0.0 ? core::Vec3(pathology.wall_normal.normalized()) : axis;
     scenario.landmarks.push_back({pathology.record.id + "-base", "base of " + pathology.record.id,
-                                  pathology.record.id, base, axis});
+                                  pathology.record.id, base, wall});
     // A polyp's vascular stalk, a myoma's feeding vessel: one artery hosted by the pathology
     // from the centre of its base to nine tenths of the way to its apex.
     if (const double radius = p.at("pathology_artery_radius"); radius > 0.0) {

@@ -233,6 +233,7 @@ class Placer {
     p.record.size = 2.0 * r;
     p.axis_start = p.axis_end = centre;
     p.capsule_radius = 1.1 * r;
+    p.wall_normal = site.normal;
     return p;
   }
 
@@ -305,6 +306,7 @@ class Placer {
     p.record.position = site.position;
     p.record.size = 2.0 * r;
     p.axis_start = site.position;
+    p.wall_normal = site.normal;
     p.axis_end = site.position + (stalk + r) * u;
     p.capsule_radius = 1.05 * r;
     return p;
@@ -329,6 +331,7 @@ class Placer {
     p.record.position = site.position;
     p.record.size = length;
     p.axis_start = site.position;
+    p.wall_normal = site.normal;
     p.axis_end = site.position + length * u;
     p.capsule_radius = 0.5 * w;
     return p;

@@ -39,6 +39,9 @@ struct PlacedPathology {
   bool in_wall = false;   ///< intramural: a hole in the uterus body, not in the cavity
   std::vector<int> base;  ///< surface vertices that rest on the wall (seated) or line the hole
   core::Vec3 axis_start = core::Vec3::Zero(), axis_end = core::Vec3::Zero();  ///< bounding capsule
+  /// Unit normal of the wall at the base, into the cavity (the direction a stalk leaves the
+  /// wall); zero for an intramural myoma and an adhesion.
+  core::Vec3 wall_normal = core::Vec3::Zero();
   double capsule_radius = 0.0;
 };
 

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/error.h"
 #include "core/json_text.h"
@@ -57,6 +58,25 @@ TEST(PolypectomySession, the_template_gives_a_resectoscope_a_polyp_and_its_landm
   EXPECT_TRUE(has("polyp-1") && has("polyp-1-base"));
 }
 
+TEST(PolypectomySession, the_base_landmark_carries_the_wall_normal_so_its_frame_is_level) {
+  const core::Scenario& s = patient();
+  const auto mark = [&](const std::string& id) {
+    return *std::find_if(s.landmarks.begin(), s.landmarks.end(),
+                         [&](const auto& l) { return l.id == id; });
+  };
+  const core::Landmark base = mark("polyp-1-base"), apex = mark("polyp-1");
+  // The stalk leans 0.35–1 rad from the wall normal, so the apex's axis is not the base's.
+  EXPECT_LT(base.normal.dot(apex.normal), std::cos(0.2));
+  // The flat base lies on the wall: no node of the polyp lies more than 0.1 mm below the
+  // base's plane (along the apex's axis they reach 10 % of the length below it).
+  const core::SceneObject* polyp = s.find_object("polyp-1");
+  ASSERT_NE(polyp, nullptr);
+  double lowest = 0.0;
+  for (const auto& p : polyp->body.nodes)
+    lowest = std::min(lowest, (p - base.position).dot(base.normal));
+  EXPECT_GT(lowest, -1e-4);
+}
+
 TEST(PolypectomySession,
      the_expert_takes_off_more_of_the_polyp_than_the_novice_and_both_stay_sound) {
   const SessionReport expert = run_script("expert"), novice = run_script("novice");
@@ -65,6 +85,8 @@ TEST(PolypectomySession,
   EXPECT_EQ(expert.cutting->released_in_tissue, 0);
   EXPECT_EQ(novice.cutting->released_in_tissue, 1);
   EXPECT_GE(polyp_of(expert).chips, 1);
+  // Issue 17's bar: the expert takes off at least 90 % of the polyp.
+  EXPECT_GE(polyp_of(expert).resected_fraction(), 0.9);
   EXPECT_GT(polyp_of(expert).resected_fraction(), polyp_of(novice).resected_fraction() + 0.15);
   for (const SessionReport* r : {&expert, &novice}) {
     EXPECT_NEAR(r->cutting->volume_after, r->cutting->volume_before,

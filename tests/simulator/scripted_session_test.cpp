@@ -174,6 +174,9 @@ TEST(SessionTrace, round_trips_through_json_exactly) {
   b.tool = LaparoscopicTool::Suction;
   b.jaws_closed = true;
   b.irrigating = true;
+  b.follow = 0.25;
+  b.anchor = {0.01, -0.02, 0.030000000000000002};
+  b.anchor_body = "polyp-1";
   trace.inputs = {{0, a}, {17, b}};
   trace.checkpoints = {{100, "x"}, {200, "y"}};
   trace.final_state_hash = "z";
@@ -190,6 +193,11 @@ TEST(SessionTrace, round_trips_through_json_exactly) {
   const SessionTrace old_back = trace_from_json(older, "t.json");
   EXPECT_FALSE(old_back.inputs[1].second.irrigating);
   EXPECT_TRUE(old_back.inputs[1].second.jaws_closed);
+  // One from before tips followed the tissue (13 members) reads with a tip that does not.
+  nlohmann::json unfollowed = trace_to_json(trace);
+  for (int k = 0; k < 3; ++k)
+    unfollowed["inputs"][1].erase(13);
+  EXPECT_EQ(trace_from_json(unfollowed, "t.json").inputs[1].second.follow, 0.0);
   nlohmann::json broken = trace_to_json(trace);
   broken.erase("inputs");
   EXPECT_THROW(trace_from_json(broken, "t.json"), core::ValidationError);

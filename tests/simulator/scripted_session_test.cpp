@@ -189,13 +189,14 @@ TEST(SessionTrace, round_trips_through_json_exactly) {
   EXPECT_EQ(back.manifest_sha256, trace.manifest_sha256);
   // A trace from before the irrigation valve (12 members per input) reads with the valve shut.
   nlohmann::json older = trace_to_json(trace);
-  older["inputs"][1].erase(12);
+  while (older["inputs"][1].size() > 12)
+    older["inputs"][1].erase(12);
   const SessionTrace old_back = trace_from_json(older, "t.json");
   EXPECT_FALSE(old_back.inputs[1].second.irrigating);
   EXPECT_TRUE(old_back.inputs[1].second.jaws_closed);
   // One from before tips followed the tissue (13 members) reads with a tip that does not.
   nlohmann::json unfollowed = trace_to_json(trace);
-  for (int k = 0; k < 3; ++k)
+  while (unfollowed["inputs"][1].size() > 13)
     unfollowed["inputs"][1].erase(13);
   EXPECT_EQ(trace_from_json(unfollowed, "t.json").inputs[1].second.follow, 0.0);
   nlohmann::json broken = trace_to_json(trace);

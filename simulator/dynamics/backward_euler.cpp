@@ -11,12 +11,14 @@ void BackwardEuler::topology_changed(const SimulationState& state,
 }
 
 void BackwardEuler::declare(const SimulationState& state, std::span<ForceTerm* const> terms) {
-  BlockPattern pattern(state.node_count());
-  pattern.reserve(declared_pairs_ + declared_pairs_ / 4);
+  // The pattern keeps its pair list's room from the last declaration (a cut adds a few).
+  pattern_.reset(state.node_count());
+  if (pattern_.pairs().capacity() < declared_pairs_ + declared_pairs_ / 4)
+    pattern_.reserve(declared_pairs_ + declared_pairs_ / 4);
   for (ForceTerm* t : terms)
-    t->declare_blocks(pattern);
-  declared_pairs_ = pattern.pairs().size();
-  system_.set_pattern(pattern);
+    t->declare_blocks(pattern_);
+  declared_pairs_ = pattern_.pairs().size();
+  system_.set_pattern(pattern_);
   damping_.set_structure_of(system_);
   const std::size_t n = state.node_count();
   for (auto* v : {&predicted_, &gradient_, &direction_, &trial_, &forces_, &warm_, &zero_, &cg_r_,

@@ -45,6 +45,7 @@ class BackwardEuler : public Integrator {
   NewtonSettings settings_;
   bool declared_ = false;
   std::size_t declared_pairs_ = 0;  ///< pairs the last pattern declared: the next one's room
+  BlockPattern pattern_;            ///< the last declaration, its room kept
   BlockSparseMatrix system_, damping_;
   std::vector<Vec3> predicted_, gradient_, direction_, trial_, forces_, warm_, zero_;
   std::vector<Vec3> cg_r_, cg_z_, cg_p_, cg_q_;

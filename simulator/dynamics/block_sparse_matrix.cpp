@@ -8,9 +8,27 @@
 
 namespace viscera::sim {
 
-BlockPattern::BlockPattern(std::size_t nodes) : nodes_(nodes) {
+namespace {
+
+std::uint64_t next_pattern_id() {
   static std::atomic<std::uint64_t> next{1};
-  id_ = next.fetch_add(1);
+  return next.fetch_add(1);
+}
+
+/// Makes room for `size` elements with a quarter to spare when `v` must grow.
+template <typename T>
+void reserve_with_room(std::vector<T>& v, std::size_t size) {
+  if (v.capacity() < size) v.reserve(size + size / 4);
+}
+
+}  // namespace
+
+BlockPattern::BlockPattern(std::size_t nodes) : nodes_(nodes), id_(next_pattern_id()) {}
+
+void BlockPattern::reset(std::size_t nodes) {
+  nodes_ = nodes;
+  id_ = next_pattern_id();
+  pairs_.clear();
 }
 
 void BlockPattern::add(int i, int j) {
@@ -31,34 +49,38 @@ void BlockSparseMatrix::set_pattern(const BlockPattern& pattern) {
   const std::size_t n = pattern.node_count();
   pattern_id_ = pattern.id();
   const auto& pairs = pattern.pairs();
-  std::vector<int> start(n + 1, 0);
-  for (std::size_t i = 0; i < n; ++i)
-    start[i + 1] = 1;  // the diagonal
+  // Row starts of the listed neighbours (fill_ counts, then starts), diagonal included.
+  reserve_with_room(fill_, n + 1);
+  fill_.assign(n + 1, 1);
+  fill_[0] = 0;
   for (const auto& [i, j] : pairs) {
-    ++start[static_cast<std::size_t>(i) + 1];
-    ++start[static_cast<std::size_t>(j) + 1];
+    ++fill_[static_cast<std::size_t>(i) + 1];
+    ++fill_[static_cast<std::size_t>(j) + 1];
   }
   for (std::size_t i = 0; i < n; ++i)
-    start[i + 1] += start[i];
-  // Neighbours listed by row: (row, column) in row order, through a counting pass.
-  std::vector<int> listed(static_cast<std::size_t>(start[n]));
-  std::vector<int> fill(start.begin(), start.end() - 1);
+    fill_[i + 1] += fill_[i];
+  // Neighbours listed by row: (row, column) in row order, through a counting pass; after it
+  // fill_[i] is where row i's listing ends (and row i + 1's begins).
+  reserve_with_room(listed_, static_cast<std::size_t>(fill_[n]));
+  listed_.resize(static_cast<std::size_t>(fill_[n]));
   for (std::size_t i = 0; i < n; ++i)
-    listed[static_cast<std::size_t>(fill[i]++)] = static_cast<int>(i);
+    listed_[static_cast<std::size_t>(fill_[i]++)] = static_cast<int>(i);
   for (const auto& [i, j] : pairs) {
-    listed[static_cast<std::size_t>(fill[static_cast<std::size_t>(i)]++)] = j;
-    listed[static_cast<std::size_t>(fill[static_cast<std::size_t>(j)]++)] = i;
+    listed_[static_cast<std::size_t>(fill_[static_cast<std::size_t>(i)]++)] = j;
+    listed_[static_cast<std::size_t>(fill_[static_cast<std::size_t>(j)]++)] = i;
   }
+  reserve_with_room(row_start_, n + 1);
   row_start_.assign(n + 1, 0);
   columns_.clear();
-  columns_.reserve(listed.size() / 2);
-  std::vector<int> seen_in_row(n, -1);
+  reserve_with_room(columns_, listed_.size() / 2);
+  reserve_with_room(seen_in_row_, n);
+  seen_in_row_.assign(n, -1);
   for (std::size_t i = 0; i < n; ++i) {
     const auto row_begin = static_cast<std::ptrdiff_t>(columns_.size());
-    for (int k = start[i]; k < start[i + 1]; ++k) {
-      const int column = listed[static_cast<std::size_t>(k)];
-      if (seen_in_row[static_cast<std::size_t>(column)] == static_cast<int>(i)) continue;
-      seen_in_row[static_cast<std::size_t>(column)] = static_cast<int>(i);
+    for (int k = i == 0 ? 0 : fill_[i - 1]; k < fill_[i]; ++k) {
+      const int column = listed_[static_cast<std::size_t>(k)];
+      if (seen_in_row_[static_cast<std::size_t>(column)] == static_cast<int>(i)) continue;
+      seen_in_row_[static_cast<std::size_t>(column)] = static_cast<int>(i);
       columns_.push_back(column);
     }
     // A row holds a few dozen columns: insertion sort, no introsort set-up per row.
@@ -67,17 +89,25 @@ void BlockSparseMatrix::set_pattern(const BlockPattern& pattern) {
         std::iter_swap(at - 1, at);
     row_start_[i + 1] = static_cast<int>(columns_.size());
   }
+  reserve_with_room(diagonal_, n);
   diagonal_.assign(n, 0);
   for (std::size_t i = 0; i < n; ++i)
     diagonal_[i] = slot(static_cast<int>(i), static_cast<int>(i));
+  reserve_with_room(blocks_, columns_.size());
   blocks_.assign(columns_.size(), Mat3::Zero());
 }
 
 void BlockSparseMatrix::set_structure_of(const BlockSparseMatrix& other) {
-  row_start_ = other.row_start_;
-  columns_ = other.columns_;
-  diagonal_ = other.diagonal_;
+  // Copies into kept room, like set_pattern.
+  const auto copy = [](const std::vector<int>& from, std::vector<int>& to) {
+    reserve_with_room(to, from.size());
+    to.assign(from.begin(), from.end());
+  };
+  copy(other.row_start_, row_start_);
+  copy(other.columns_, columns_);
+  copy(other.diagonal_, diagonal_);
   pattern_id_ = other.pattern_id_;
+  reserve_with_room(blocks_, columns_.size());
   blocks_.assign(columns_.size(), Mat3::Zero());
 }
 

@@ -21,6 +21,9 @@ class BlockPattern {
  public:
   /// Every pattern gets a process-wide unique id, which the matrices set from it carry.
   explicit BlockPattern(std::size_t nodes = 0);
+  /// Empties the pattern for `nodes` nodes under a new id, keeping the room of its pair list (a
+  /// solver re-declaring after a cut allocates nothing).
+  void reset(std::size_t nodes);
   std::uint64_t id() const { return id_; }
   std::size_t node_count() const { return nodes_; }
   /// Room for `pairs` declarations (a solver re-declaring a scene knows about how many).
@@ -41,6 +44,9 @@ class BlockPattern {
 /// sorted, the diagonal among them.
 class BlockSparseMatrix {
  public:
+  /// Sets the blocks from `pattern`, all zero. The arrays keep their room between patterns and
+  /// grow with a quarter to spare, so a cut's new pattern neither allocates nor touches fresh
+  /// pages (which cost more than the pass itself, 0.3–0.7 ms for a 1,000-node scene).
   void set_pattern(const BlockPattern& pattern);
   /// The same blocks as `other` (set from one pattern: the same slots), all zero; a copy, not a
   /// second pass over the pattern.
@@ -71,6 +77,7 @@ class BlockSparseMatrix {
   std::vector<int> row_start_, columns_, diagonal_;
   std::vector<Mat3> blocks_;
   std::uint64_t pattern_id_ = 0;
+  std::vector<int> listed_, fill_, seen_in_row_;  ///< set_pattern's work arrays, kept
 };
 
 }  // namespace viscera::sim

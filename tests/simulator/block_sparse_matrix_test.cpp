@@ -1,13 +1,15 @@
 // The implicit solver's block-sparse matrix (simulator/dynamics/block_sparse_matrix.h): a pattern
 // with repeated pairs (elements sharing an edge) gives each row its columns once, sorted, with
 // the diagonal; a matrix given another's structure has the same slots; products match a dense
-// matrix.
+// matrix; a matrix and a pattern reused for the next topology (their room kept) give what fresh
+// ones give.
 
 #include "simulator/dynamics/block_sparse_matrix.h"
 
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <utility>
 #include <vector>
 
 namespace viscera::sim {
@@ -71,6 +73,48 @@ TEST(BlockSparseMatrix, a_pattern_with_repeated_pairs_gives_sorted_unique_rows_a
     EXPECT_EQ(std::vector<int>(c.begin(), c.end()), std::vector<int>(d.begin(), d.end()));
     for (const int j : c)
       EXPECT_EQ(twin.block(twin.slot(i, j)), Mat3::Zero());
+  }
+}
+
+/// A chain of `nodes` nodes with neighbours `reach` apart, declared in `pattern`.
+void declare_chain(BlockPattern& pattern, int nodes, int reach) {
+  for (int i = 0; i + reach < nodes; ++i)
+    for (int r = 1; r <= reach; ++r)
+      pattern.add(i, i + r);
+}
+
+TEST(BlockSparseMatrix, a_reused_matrix_and_pattern_equal_fresh_ones_for_each_new_topology) {
+  BlockSparseMatrix reused, reused_twin;
+  BlockPattern kept;
+  // Big, then smaller, then bigger than ever (the arrays grow), as cuts and rebuilds go.
+  for (const auto& [nodes, reach] : {std::pair{40, 3}, std::pair{12, 2}, std::pair{90, 4}}) {
+    const std::uint64_t last_id = kept.id();
+    kept.reset(static_cast<std::size_t>(nodes));
+    EXPECT_NE(kept.id(), last_id);
+    declare_chain(kept, nodes, reach);
+    reused.set_pattern(kept);
+    reused_twin.set_structure_of(reused);
+    BlockPattern fresh_pattern(static_cast<std::size_t>(nodes));
+    declare_chain(fresh_pattern, nodes, reach);
+    BlockSparseMatrix fresh;
+    fresh.set_pattern(fresh_pattern);
+    ASSERT_EQ(reused.node_count(), fresh.node_count());
+    ASSERT_EQ(reused.block_count(), fresh.block_count());
+    ASSERT_EQ(reused_twin.block_count(), fresh.block_count());
+    EXPECT_EQ(reused.pattern_id(), kept.id());
+    for (int i = 0; i < nodes; ++i) {
+      const auto r = reused.row_columns(i), f = fresh.row_columns(i);
+      EXPECT_EQ(std::vector<int>(r.begin(), r.end()), std::vector<int>(f.begin(), f.end()))
+          << nodes << " nodes, row " << i;
+      EXPECT_EQ(reused_twin.diagonal_slot(i), fresh.diagonal_slot(i));
+      for (const int j : r) {
+        EXPECT_EQ(reused.block(reused.slot(i, j)), Mat3::Zero());
+        EXPECT_EQ(reused_twin.block(reused_twin.slot(i, j)), Mat3::Zero());
+      }
+    }
+    // Dirty both for the next round.
+    reused.block(reused.diagonal_slot(0)) = Mat3::Identity();
+    reused_twin.block(reused_twin.diagonal_slot(0)) = Mat3::Identity();
   }
 }
 

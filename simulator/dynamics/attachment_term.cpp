@@ -65,6 +65,13 @@ void AttachmentTerm::resolve(const SimulationState& state) {
   }
 }
 
+void AttachmentTerm::release(int body, std::span<const std::uint8_t> released) {
+  std::erase_if(attachments_, [&](const Attachment& a) {
+    return a.body == body && a.node >= 0 && static_cast<std::size_t>(a.node) < released.size() &&
+           released[static_cast<std::size_t>(a.node)] != 0;
+  });
+}
+
 void AttachmentTerm::topology_changed(const SimulationState& state, int body) {
   std::vector<Attachment> kept;
   for (Attachment a : attachments_) {

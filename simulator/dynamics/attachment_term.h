@@ -44,6 +44,9 @@ class AttachmentTerm : public ForceTerm {
   /// A re-meshed host: every attachment on it is located anew from its host_rest point in the
   /// host's new rest mesh; a re-meshed attached body keeps nodes that still exist.
   void topology_changed(const SimulationState& state, int body) override;
+  /// Drops the attachments of the nodes of `body` flagged in `released` (BodyTopology), before
+  /// the topology change that renumbers nothing below their count.
+  void release(int body, std::span<const std::uint8_t> released);
   const std::vector<Attachment>& attachments() const { return attachments_; }
 
  private:

@@ -3,6 +3,7 @@
 /// World::topology_changed consumes it.
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include "core/mesh/tet_mesh.h"
@@ -21,6 +22,10 @@ struct BodyTopology {
   std::vector<core::Vec3> positions;  ///< current positions of the new nodes, m
   std::vector<NodeOrigin> origin;     ///< per new node: how to carry per-node arrays
   std::vector<int> tet_parent;        ///< per new tet: the old tet it came from
+  /// Per new node, 1 where the change cut the node loose from the other bodies (a loop drawn
+  /// through a polyp's base nodes takes the polyp off the wall): its attachments and connection
+  /// springs go. Empty: none.
+  std::vector<std::uint8_t> released;
 };
 
 }  // namespace viscera::sim

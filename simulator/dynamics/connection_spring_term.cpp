@@ -17,6 +17,16 @@ void ConnectionSpringTerm::resolve(const SimulationState& state) {
         {state.body(s.body_a).first + s.node_a, state.body(s.body_b).first + s.node_b});
 }
 
+void ConnectionSpringTerm::release(int body, std::span<const std::uint8_t> released) {
+  const auto loose = [&](int b, int node) {
+    return b == body && node >= 0 && static_cast<std::size_t>(node) < released.size() &&
+           released[static_cast<std::size_t>(node)] != 0;
+  };
+  std::erase_if(springs_, [&](const ConnectionSpring& s) {
+    return loose(s.body_a, s.node_a) || loose(s.body_b, s.node_b);
+  });
+}
+
 void ConnectionSpringTerm::topology_changed(const SimulationState& state, int body) {
   std::vector<ConnectionSpring> kept;
   for (const ConnectionSpring& s : springs_) {

@@ -35,6 +35,8 @@ class ConnectionSpringTerm : public ForceTerm {
   /// Re-reads node offsets; springs at nodes of a re-meshed body keep their node when it still
   /// exists (new nodes are appended by cutting), else they are dropped.
   void topology_changed(const SimulationState& state, int body) override;
+  /// Drops the springs at the nodes of `body` flagged in `released` (BodyTopology).
+  void release(int body, std::span<const std::uint8_t> released);
   const std::vector<ConnectionSpring>& springs() const { return springs_; }
 
  private:

@@ -341,7 +341,7 @@ void LaparoscopicTools::cut(const InstrumentState& state, World& world, double t
         {time, "cut-missed", "the scissors closed on " + model.name + " but cut no tet"});
     return;
   }
-  world.topology_changed(body, topology_of_cut(change));
+  world.topology_changed(body, topology_of_cut(change, world.held_nodes(body)));
   record.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   record.tets_traversed = change.statistics.tets_traversed;
   record.pieces_after = piece_count(world, body);

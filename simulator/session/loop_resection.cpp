@@ -127,7 +127,7 @@ void LoopResection::cut(World& world, double time, CuttingSummary& summary,
         visible_ != nullptr ? visible_->cut(b, model.mesh, current, surface, options_)
                             : cutting::hybrid_cut(model.mesh, current, surface, options_);
     if (!change.changed) continue;
-    world.topology_changed(b, topology_of_cut(change));
+    world.topology_changed(b, topology_of_cut(change, world.held_nodes(b)));
     summary.cut_seconds.push_back(
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
 

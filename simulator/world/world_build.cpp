@@ -168,6 +168,17 @@ void World::topology_changed(int body, const BodyTopology& topology) {
   model.surface = mesh.surface_faces.empty() ? core::boundary_faces(mesh.tets) : mesh.surface_faces;
   model.tet_material = std::move(tet_material);
   state_.replace_body_nodes(body, data);
+  if (!topology.released.empty()) {
+    if (topology.released.size() != n)
+      throw core::InputError("new topology's released flags do not match its mesh",
+                             {"", "", "body " + model.name});
+    for (const auto& term : terms_) {
+      if (auto* attachments = dynamic_cast<AttachmentTerm*>(term.get()))
+        attachments->release(body, topology.released);
+      else if (auto* springs = dynamic_cast<ConnectionSpringTerm*>(term.get()))
+        springs->release(body, topology.released);
+    }
+  }
   for (const auto& term : terms_)
     term->topology_changed(state_, body);
   integrator_->topology_changed(state_, term_pointers());

@@ -10,6 +10,7 @@
 
 #include "core/error.h"
 #include "core/json_text.h"
+#include "simulator/dynamics/hydrometra_sweep.h"
 #include "simulator/session/headless_session.h"
 #include "simulator/session/instrument_input.h"
 #include "templates/template_catalog.h"
@@ -18,21 +19,29 @@
 namespace viscera::sim {
 namespace {
 
-const core::Scenario& patient() {
-  static const core::Scenario s = templates::build_from_template("hysteroscopy-polypectomy", {}, 1);
+/// The patient `viscera new --template hysteroscopy-polypectomy --seed N` writes: the template's
+/// scenario with the cavity's pressure states.
+core::Scenario patient_of_seed(std::uint64_t seed) {
+  core::Scenario s = templates::build_from_template("hysteroscopy-polypectomy", {}, seed);
+  add_hydrometra_states(s);
   return s;
 }
 
-SessionReport run_script(const std::string& who) {
+const core::Scenario& patient() {
+  static const core::Scenario s = patient_of_seed(1);
+  return s;
+}
+
+SessionReport run_script(const std::string& who, const core::Scenario& on = patient()) {
   const std::string file =
       (testing::source_dir() / ("data/scripts/hysteroscopy-polypectomy-" + who + ".json")).string();
-  const auto json = resolve_script_landmarks(core::read_json_file(file), patient().landmarks, file);
+  const auto json = resolve_script_landmarks(core::read_json_file(file), on.landmarks, file);
   const auto input = ScriptedTrajectory::from_json(json, file, 12.0);
   HeadlessRunOptions options;
   options.duration = input.duration();
   options.instrument = &input;
   options.instrument_body = "uterus";
-  return run_headless(patient(), options);
+  return run_headless(on, options);
 }
 
 const BodyResection& polyp_of(const SessionReport& r) {
@@ -97,6 +106,16 @@ TEST(PolypectomySession,
     EXPECT_EQ(task_status(*r, "resect-polyp-1"),
               polyp_of(*r).resected_fraction() >= 0.9 ? "completed" : "not-completed");
   }
+}
+
+TEST(PolypectomySession, a_sweep_through_the_base_nodes_still_takes_the_polyp_off_the_wall) {
+  // On seed 8 the expert's cut snaps three of the polyp's base nodes, which hold it on the wall:
+  // the piece that keeps them is held only where the loop passed, so it comes off (it stayed
+  // on the wall, 0 % resected, while their attachments outlived the cut).
+  const SessionReport r = run_script("expert", patient_of_seed(8));
+  ASSERT_TRUE(r.cutting);
+  EXPECT_GE(polyp_of(r).chips, 1);
+  EXPECT_GE(polyp_of(r).resected_fraction(), 0.9);
 }
 
 TEST(PolypectomySession, script_pedal_and_loop_values_out_of_range_are_refused_with_their_place) {

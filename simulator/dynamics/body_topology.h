@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "core/mesh/tet_mesh.h"
@@ -27,5 +28,22 @@ struct BodyTopology {
   /// springs go. Empty: none.
   std::vector<std::uint8_t> released;
 };
+
+/// The topology a body already has: `mesh` at `positions`, every node and tet its own origin
+/// (a change that changes nothing, which costs the world's rebuild what a new one does).
+inline BodyTopology unchanged_topology(const core::TetMesh& mesh,
+                                       std::span<const core::Vec3> positions) {
+  BodyTopology topology;
+  topology.rest_mesh = mesh;
+  topology.positions.assign(positions.begin(), positions.end());
+  topology.origin.resize(positions.size());
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    topology.origin[i].node[0] = static_cast<int>(i);
+    topology.origin[i].weight[0] = 1.0;
+  }
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t)
+    topology.tet_parent.push_back(static_cast<int>(t));
+  return topology;
+}
 
 }  // namespace viscera::sim

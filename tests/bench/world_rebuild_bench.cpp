@@ -12,6 +12,7 @@
 namespace {
 
 using viscera::sim::BodyTopology;
+using viscera::sim::unchanged_topology;
 using viscera::sim::World;
 
 void BM_WorldRebuildAfterCut(benchmark::State& state) {
@@ -20,17 +21,8 @@ void BM_WorldRebuildAfterCut(benchmark::State& state) {
   const int polyp = world.body_index("polyp-1");
   world.attach_instrument(world.body_index("uterus"), 200.0, {0.0, 0.0, -1.0});
   const auto& model = *world.models()[static_cast<std::size_t>(polyp)];
-  BodyTopology topology;
-  topology.rest_mesh = model.mesh;
-  const auto positions = world.state().range(world.state().positions, polyp);
-  topology.positions.assign(positions.begin(), positions.end());
-  topology.origin.resize(positions.size());
-  for (std::size_t i = 0; i < positions.size(); ++i) {
-    topology.origin[i].node[0] = static_cast<int>(i);
-    topology.origin[i].weight[0] = 1.0;
-  }
-  for (std::size_t t = 0; t < model.mesh.tets.size(); ++t)
-    topology.tet_parent.push_back(static_cast<int>(t));
+  const BodyTopology topology =
+      unchanged_topology(model.mesh, world.state().range(world.state().positions, polyp));
   for (auto _ : state)
     world.topology_changed(polyp, topology);
   state.counters["nodes"] = static_cast<double>(world.state().node_count());

@@ -45,17 +45,8 @@ TEST(CutTopology, released_nodes_lose_their_attachments_and_their_piece_comes_of
   ASSERT_GT(std::count(held.begin(), held.end(), std::uint8_t{1}), 0);
   // The same topology, every base node released.
   const auto& model = *world.models()[static_cast<std::size_t>(polyp)];
-  BodyTopology topology;
-  topology.rest_mesh = model.mesh;
-  const auto positions = world.state().range(world.state().positions, polyp);
-  topology.positions.assign(positions.begin(), positions.end());
-  topology.origin.resize(positions.size());
-  for (std::size_t i = 0; i < positions.size(); ++i) {
-    topology.origin[i].node[0] = static_cast<int>(i);
-    topology.origin[i].weight[0] = 1.0;
-  }
-  for (std::size_t t = 0; t < model.mesh.tets.size(); ++t)
-    topology.tet_parent.push_back(static_cast<int>(t));
+  BodyTopology topology =
+      unchanged_topology(model.mesh, world.state().range(world.state().positions, polyp));
   topology.released = held;
   world.topology_changed(polyp, topology);
   const auto after = world.held_nodes(polyp);

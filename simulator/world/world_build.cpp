@@ -116,7 +116,8 @@ void World::topology_changed(int body, const BodyTopology& topology) {
   core::check_tet_mesh(mesh, "body " + model.name);
   const std::size_t n = mesh.nodes.size();
   if (topology.positions.size() != n || topology.origin.size() != n ||
-      topology.tet_parent.size() != mesh.tets.size())
+      topology.tet_parent.size() != mesh.tets.size() ||
+      (!topology.released.empty() && topology.released.size() != n))
     throw core::InputError("new topology's arrays do not match its mesh",
                            {"", "", "body " + model.name});
   // Per-tet materials follow the parent tets.
@@ -169,9 +170,6 @@ void World::topology_changed(int body, const BodyTopology& topology) {
   model.tet_material = std::move(tet_material);
   state_.replace_body_nodes(body, data);
   if (!topology.released.empty()) {
-    if (topology.released.size() != n)
-      throw core::InputError("new topology's released flags do not match its mesh",
-                             {"", "", "body " + model.name});
     for (const auto& term : terms_) {
       if (auto* attachments = dynamic_cast<AttachmentTerm*>(term.get()))
         attachments->release(body, topology.released);

@@ -13,8 +13,7 @@ void BackwardEuler::topology_changed(const SimulationState& state,
 void BackwardEuler::declare(const SimulationState& state, std::span<ForceTerm* const> terms) {
   // The pattern keeps its pair list's room from the last declaration (a cut adds a few).
   pattern_.reset(state.node_count());
-  if (pattern_.pairs().capacity() < declared_pairs_ + declared_pairs_ / 4)
-    pattern_.reserve(declared_pairs_ + declared_pairs_ / 4);
+  pattern_.reserve(declared_pairs_ + declared_pairs_ / 4);
   for (ForceTerm* t : terms)
     t->declare_blocks(pattern_);
   declared_pairs_ = pattern_.pairs().size();

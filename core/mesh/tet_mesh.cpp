@@ -68,15 +68,17 @@ void check_tet_mesh(const TetMesh& mesh, const std::string& what) {
       throw InputError("node coordinate is not finite", {what, "", "node " + std::to_string(i)});
     }
   }
-  const auto check_index = [&](int v, const std::string& element) {
+  // The element's name is only spelled out for the error (a string per tet costs more than
+  // the whole check).
+  const auto check_index = [&](int v, const char* element, std::size_t index) {
     if (v < 0 || v >= n) {
       throw InputError("refers to node " + std::to_string(v) + " of " + std::to_string(n),
-                       {what, "", element});
+                       {what, "", element + std::to_string(index)});
     }
   };
   for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
     for (const int v : mesh.tets[t])
-      check_index(v, "tet " + std::to_string(t));
+      check_index(v, "tet ", t);
     if (!(signed_volume(mesh, static_cast<int>(t)) > 0.0)) {
       throw InputError("tetrahedron is degenerate or inverted",
                        {what, "", "tet " + std::to_string(t)});
@@ -84,7 +86,7 @@ void check_tet_mesh(const TetMesh& mesh, const std::string& what) {
   }
   for (std::size_t f = 0; f < mesh.surface_faces.size(); ++f) {
     for (const int v : mesh.surface_faces[f])
-      check_index(v, "surface face " + std::to_string(f));
+      check_index(v, "surface face ", f);
   }
   if (!mesh.node_mass.empty() && mesh.node_mass.size() != mesh.nodes.size()) {
     throw InputError("node mass array length differs from node count", {what, "", ""});

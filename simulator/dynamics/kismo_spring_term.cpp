@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 
 #include "simulator/dynamics/spring_hessian.h"
+#include "simulator/dynamics/tet_edge_groups.h"
 
 namespace viscera::sim {
 
@@ -17,41 +17,43 @@ KismoSpringTerm::KismoSpringTerm(std::shared_ptr<const BodyModel> model,
 void KismoSpringTerm::build(const SimulationState& state, int first) {
   const BodyModel& m = model();
   const std::span<const Vec3> rest = state.range(state.rest_positions, m.body);
-  // Per edge: its volume share, and the share-weighted coefficients of the tets around it.
-  struct EdgeSum {
+  // Per edge: the share-weighted coefficients of the tets around it, summed in tet order over
+  // edges in sorted order.
+  struct TetShare {
     double share = 0.0, damping = 0.0;
-    std::array<double, 3> stress{};  ///< Σ share × (c1, c2, c3) in Pa·m³
+    std::array<double, 3> c{};  ///< (c1, c2, c3) in Pa
   };
-  std::map<std::array<int, 2>, EdgeSum> edges;
+  std::vector<TetShare> per_tet(m.mesh.tets.size());
   for (std::size_t t = 0; t < m.mesh.tets.size(); ++t) {
     const auto& tet = m.mesh.tets[t];
-    const double share =
-        core::signed_volume(rest[tet[0]], rest[tet[1]], rest[tet[2]], rest[tet[3]]) / 6.0;
     const core::Material& material = m.material_of(static_cast<int>(t));
     const bool cubic = material.stress_strain && material.stress_strain->cubic.size() == 4;
-    const std::array<double, 3> c =
-        cubic ? std::array<double, 3>{material.stress_strain->cubic[1],
-                                      material.stress_strain->cubic[2],
-                                      material.stress_strain->cubic[3]}
-              : std::array<double, 3>{material.distance_stiffness, 0.0, 0.0};
-    for (int a = 0; a < 4; ++a) {
-      for (int b = a + 1; b < 4; ++b) {
-        EdgeSum& e = edges[{std::min(tet[a], tet[b]), std::max(tet[a], tet[b])}];
-        e.share += share;
-        e.damping += material.distance_damping * share;
-        for (int k = 0; k < 3; ++k)
-          e.stress[k] += c[k] * share;
-      }
-    }
+    per_tet[t].share =
+        core::signed_volume(rest[tet[0]], rest[tet[1]], rest[tet[2]], rest[tet[3]]) / 6.0;
+    per_tet[t].damping = material.distance_damping;
+    per_tet[t].c = cubic ? std::array<double, 3>{material.stress_strain->cubic[1],
+                                                 material.stress_strain->cubic[2],
+                                                 material.stress_strain->cubic[3]}
+                         : std::array<double, 3>{material.distance_stiffness, 0.0, 0.0};
   }
+  const TetEdgeGroups groups = tet_edge_groups(m.mesh.tets, static_cast<int>(rest.size()));
   springs_ = {};
-  for (const auto& [edge, sum] : edges) {
+  for (std::size_t e = 0; e < groups.edges.size(); ++e) {
+    const auto edge = groups.edges[e];
+    double damping = 0.0;
+    std::array<double, 3> stress{};  // Σ share × (c1, c2, c3) in Pa·m³
+    for (int k = groups.first[e]; k < groups.first[e + 1]; ++k) {
+      const TetShare& s = per_tet[groups.tets[k]];
+      damping += s.damping * s.share;
+      for (int n = 0; n < 3; ++n)
+        stress[n] += s.c[n] * s.share;
+    }
     const double l0 = (rest[edge[1]] - rest[edge[0]]).norm();
     // k_n = c_n × cross-section, cross-section = share / l0 (seed 001 §3.2).
     springs_.knots.push_back({first + edge[0], first + edge[1]});
     springs_.rest_length.push_back(l0);
-    springs_.coefficients.push_back({sum.stress[0] / l0, sum.stress[1] / l0, sum.stress[2] / l0});
-    springs_.damping.push_back(sum.damping / (l0 * l0));
+    springs_.coefficients.push_back({stress[0] / l0, stress[1] / l0, stress[2] / l0});
+    springs_.damping.push_back(damping / (l0 * l0));
   }
 }
 

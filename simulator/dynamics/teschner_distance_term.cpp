@@ -1,8 +1,8 @@
 #include <algorithm>
-#include <map>
 
 #include "simulator/dynamics/spring_hessian.h"
 #include "simulator/dynamics/teschner_terms.h"
+#include "simulator/dynamics/tet_edge_groups.h"
 
 namespace viscera::sim {
 
@@ -15,29 +15,30 @@ TeschnerDistanceTerm::TeschnerDistanceTerm(std::shared_ptr<const BodyModel> mode
 void TeschnerDistanceTerm::build(const SimulationState& state, int first) {
   const BodyModel& m = model();
   const std::span<const Vec3> rest = state.range(state.rest_positions, m.body);
-  // Edges in sorted order (std::map) so the force sum runs the same way on every machine; each
-  // edge collects the stiffness and damping of the tets around it, each tet with its material.
-  std::map<std::array<int, 2>, std::array<double, 2>> edge;
+  // Edges in sorted order, each summing the stiffness and damping of its tets in tet order
+  // (each tet with its material), so the force sum runs the same way on every machine.
+  std::vector<double> share(m.mesh.tets.size());
   for (std::size_t t = 0; t < m.mesh.tets.size(); ++t) {
     const auto& tet = m.mesh.tets[t];
-    const double share =
-        core::signed_volume(rest[tet[0]], rest[tet[1]], rest[tet[2]], rest[tet[3]]) / 6.0;
-    const core::Material& material = m.material_of(static_cast<int>(t));
-    for (int a = 0; a < 4; ++a) {
-      for (int b = a + 1; b < 4; ++b) {
-        auto& k = edge[{std::min(tet[a], tet[b]), std::max(tet[a], tet[b])}];
-        k[0] += material.distance_stiffness * share;
-        k[1] += material.distance_damping * share;
-      }
-    }
+    share[t] = core::signed_volume(rest[tet[0]], rest[tet[1]], rest[tet[2]], rest[tet[3]]) / 6.0;
   }
+  const TetEdgeGroups groups = tet_edge_groups(m.mesh.tets, static_cast<int>(rest.size()));
   terms_ = {};
   slots_for_ = 0;
-  for (const auto& [e, k] : edge) {
-    terms_.edges.push_back({first + e[0], first + e[1]});
-    terms_.rest_length.push_back((rest[e[1]] - rest[e[0]]).norm());
-    terms_.stiffness.push_back(k[0]);
-    terms_.damping.push_back(k[1]);
+  terms_.edges.reserve(groups.edges.size());
+  for (std::size_t e = 0; e < groups.edges.size(); ++e) {
+    const auto [a, b] = groups.edges[e];
+    double stiffness = 0.0, damping = 0.0;
+    for (int k = groups.first[e]; k < groups.first[e + 1]; ++k) {
+      const int t = groups.tets[k];
+      const core::Material& material = m.material_of(t);
+      stiffness += material.distance_stiffness * share[t];
+      damping += material.distance_damping * share[t];
+    }
+    terms_.edges.push_back({first + a, first + b});
+    terms_.rest_length.push_back((rest[b] - rest[a]).norm());
+    terms_.stiffness.push_back(stiffness);
+    terms_.damping.push_back(damping);
   }
 }
 

@@ -34,22 +34,70 @@ class Classifier {
   }
 
  private:
+  // Tets whose box of grid cells holds a triangle of the cut surface. A tet with all corners
+  // beyond one face of the surface's box (per-node outcodes, Cohen–Sutherland) is out at once;
+  // for the others each node's cell is found once and a tet's cells span its corners' cells.
   void find_candidates() {
-    const core::BoundingBox reach = index_.bounds();
+    const std::size_t n = body_.nodes.size();
+    std::vector<std::uint8_t> outcode(n, 0);
+    std::vector<std::array<int, 3>> cell(n);
+    for (std::size_t v = 0; v < n; ++v) {
+      outcode[v] = index_.outcode(x_[v]);
+      cell[v] = index_.cell_of(x_[v]);
+    }
     double edge_sum = 0.0;
     for (int t = 0; t < static_cast<int>(body_.tets.size()); ++t) {
-      core::BoundingBox box;
-      for (int n : body_.tets[t])
-        box.add(x_[n]);
-      if ((box.max.array() < reach.min.array()).any() ||
-          (box.min.array() > reach.max.array()).any()) {
-        continue;
+      const Tetrahedron& tet = body_.tets[t];
+      if (outcode[tet[0]] & outcode[tet[1]] & outcode[tet[2]] & outcode[tet[3]]) continue;
+      std::array<int, 3> lo = cell[tet[0]], hi = lo;
+      for (int k = 1; k < 4; ++k) {
+        for (int d = 0; d < 3; ++d) {
+          lo[d] = std::min(lo[d], cell[tet[k]][d]);
+          hi[d] = std::max(hi[d], cell[tet[k]][d]);
+        }
       }
-      if (!index_.may_touch(box)) continue;
+      if (!index_.cells_hold_triangle(lo, hi)) continue;
       candidates_.push_back(t);
+      core::BoundingBox box;
+      for (int v : tet)
+        box.add(x_[v]);
       edge_sum += box.size().norm();
+      if (index_.triangle_may_meet(lo, hi, box)) met_.push_back(t);
     }
     if (!candidates_.empty()) search_radius_ = 2.0 * edge_sum / candidates_.size();
+  }
+
+  // The edges of the candidate tets the surface may meet, each once, in key order: grouped by
+  // their lower node (a counting sort), then sorted within the group. An edge of other tets
+  // only lies in boxes no triangle meets, so it cannot cross.
+  std::vector<std::uint64_t> candidate_edges() const {
+    const std::size_t n = body_.nodes.size();
+    std::vector<int> offset(n + 1, 0);
+    for (int t : met_) {
+      const Tetrahedron& tet = body_.tets[t];
+      for (const auto& e : kTetEdges)
+        ++offset[std::min(tet[e[0]], tet[e[1]]) + 1];
+    }
+    for (std::size_t v = 0; v < n; ++v)
+      offset[v + 1] += offset[v];
+    std::vector<int> upper(offset[n]), fill(offset.begin(), offset.end() - 1);
+    for (int t : met_) {
+      const Tetrahedron& tet = body_.tets[t];
+      for (const auto& e : kTetEdges) {
+        const int a = std::min(tet[e[0]], tet[e[1]]), b = std::max(tet[e[0]], tet[e[1]]);
+        upper[fill[a]++] = b;
+      }
+    }
+    std::vector<std::uint64_t> edges;
+    edges.reserve(upper.size() / 2);
+    for (std::size_t a = 0; a < n; ++a) {
+      const auto begin = upper.begin() + offset[a], end = upper.begin() + offset[a + 1];
+      std::sort(begin, end);
+      for (auto it = begin; it != end; ++it) {
+        if (it == begin || *it != *(it - 1)) edges.push_back(edge_key(static_cast<int>(a), *it));
+      }
+    }
+    return edges;
   }
 
   void find_crossings() {
@@ -57,23 +105,13 @@ class Classifier {
     c_.side.assign(n, kUnknownSide);
     distance_.assign(n, std::numeric_limits<double>::quiet_NaN());
     std::vector<std::uint8_t> plus(n, 0), minus(n, 0), snapped(n, 0);
-    std::unordered_map<std::uint64_t, std::optional<SegmentCrossing>> seen;
-    seen.reserve(candidates_.size() * 4);
-    std::vector<std::uint64_t> crossed;
-    for (int t : candidates_) {
-      const Tetrahedron& tet = body_.tets[t];
-      for (const auto& e : kTetEdges) {
-        const int a = std::min(tet[e[0]], tet[e[1]]), b = std::max(tet[e[0]], tet[e[1]]);
-        auto [it, inserted] = seen.try_emplace(edge_key(a, b));
-        if (!inserted) continue;
-        it->second = index_.crossing(x_[a], x_[b]);
-        if (it->second) crossed.push_back(it->first);
-      }
+    std::vector<std::pair<std::uint64_t, SegmentCrossing>> crossed;
+    for (std::uint64_t key : candidate_edges()) {
+      const int a = static_cast<int>(key >> 32), b = static_cast<int>(key & 0xffffffffu);
+      if (const auto hit = index_.crossing(x_[a], x_[b])) crossed.emplace_back(key, *hit);
     }
-    std::sort(crossed.begin(), crossed.end());
     const double snap = options_.snap_fraction;
-    for (std::uint64_t key : crossed) {
-      const SegmentCrossing& hit = *seen[key];
+    for (const auto& [key, hit] : crossed) {
       const int a = static_cast<int>(key >> 32), b = static_cast<int>(key & 0xffffffffu);
       const auto vote = [&](int node, int s) { (s > 0 ? plus : minus)[node] = 1; };
       if (hit.t < snap) {
@@ -243,6 +281,7 @@ class Classifier {
   double max_cos_ = 1.0;
   double search_radius_ = 0.0;
   std::vector<int> candidates_;
+  std::vector<int> met_;  ///< candidates a triangle may meet
   std::vector<double> distance_;
   std::vector<int> newly_snapped_;
   bool checked_once_ = false;
@@ -296,19 +335,29 @@ bool tet_is_fit(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d,
   return true;
 }
 
-double min_dihedral_degrees(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-  if (core::signed_volume(a, b, c, d) <= 0.0) return 0.0;
+double max_cos_dihedral(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  if (core::signed_volume(a, b, c, d) <= 0.0) return 1.0;
   const Vec3 n[4] = {(c - b).cross(d - b), (d - a).cross(c - a), (b - a).cross(d - a),
                      (c - a).cross(b - a)};
+  double length[4];
+  for (int i = 0; i < 4; ++i) {
+    length[i] = n[i].norm();
+    if (!(length[i] > 0.0)) return 1.0;
+  }
   double max_cos = -1.0;
   for (int i = 0; i < 4; ++i) {
-    for (int j = i + 1; j < 4; ++j) {
-      const double denom = n[i].norm() * n[j].norm();
-      if (!(denom > 0.0)) return 0.0;
-      max_cos = std::max(max_cos, -n[i].dot(n[j]) / denom);
-    }
+    for (int j = i + 1; j < 4; ++j)
+      max_cos = std::max(max_cos, -n[i].dot(n[j]) / (length[i] * length[j]));
   }
-  return std::acos(std::clamp(max_cos, -1.0, 1.0)) * 180.0 / M_PI;
+  return std::min(max_cos, 1.0);
+}
+
+double dihedral_degrees(double cos_dihedral) {
+  return std::acos(std::clamp(cos_dihedral, -1.0, 1.0)) * 180.0 / M_PI;
+}
+
+double min_dihedral_degrees(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  return dihedral_degrees(max_cos_dihedral(a, b, c, d));
 }
 
 CutClassification classify_cut(const core::TetMesh& body, const std::vector<Vec3>& current,

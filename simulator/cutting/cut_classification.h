@@ -56,6 +56,14 @@ core::Vec3 edge_point(const CutClassification& c, const std::vector<core::Vec3>&
 bool tet_is_fit(const core::Vec3& a, const core::Vec3& b, const core::Vec3& c, const core::Vec3& d,
                 double max_cos_dihedral);
 
+/// Cosine of the smallest dihedral angle of a tet (1 for a flat or inverted one): the largest
+/// cosine over its six edges, so the smallest angle of many tets is one arc cosine.
+double max_cos_dihedral(const core::Vec3& a, const core::Vec3& b, const core::Vec3& c,
+                        const core::Vec3& d);
+
+/// An angle in degrees from its cosine.
+double dihedral_degrees(double cos_dihedral);
+
 /// Smallest dihedral angle of a tet in degrees (0 for a flat or inverted one).
 double min_dihedral_degrees(const core::Vec3& a, const core::Vec3& b, const core::Vec3& c,
                             const core::Vec3& d);

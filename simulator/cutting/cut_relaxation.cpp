@@ -6,6 +6,7 @@
 
 #include "core/mesh/surface_embedding.h"
 #include "core/mesh/tet_mesh.h"
+#include "simulator/cutting/cut_classification.h"
 
 namespace viscera::sim::cutting {
 namespace {
@@ -15,17 +16,7 @@ using core::Vec3;
 // Largest cosine of the six dihedral angles (1 for a flat tet), or 2 for an inverted one.
 double worst_cos(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   if (core::signed_volume(a, b, c, d) <= 0.0) return 2.0;
-  const Vec3 n[4] = {(c - b).cross(d - b), (d - a).cross(c - a), (b - a).cross(d - a),
-                     (c - a).cross(b - a)};
-  double len[4];
-  for (int i = 0; i < 4; ++i)
-    len[i] = n[i].norm();
-  double worst = -1.0;
-  for (int i = 0; i < 4; ++i) {
-    for (int j = i + 1; j < 4; ++j)
-      worst = std::max(worst, -n[i].dot(n[j]) / (len[i] * len[j]));
-  }
-  return worst;
+  return max_cos_dihedral(a, b, c, d);
 }
 
 // Largest worst_cos over the star of `node`, with per-tet values cached (NaN = not known).

@@ -38,7 +38,11 @@ CutSurfaceIndex::CutSurfaceIndex(CutSurface surface, double cell_size)
   for (const Vec3& v : surface_.vertices)
     bounds_.add(v);
   normals_.reserve(surface_.triangles.size());
-  for (const auto& t : surface_.triangles) {
+  boxes_.resize(surface_.triangles.size());
+  for (std::size_t i = 0; i < surface_.triangles.size(); ++i) {
+    const auto& t = surface_.triangles[i];
+    for (int k : t)
+      boxes_[i].add(surface_.vertices[k]);
     const Vec3& a = surface_.vertices[t[0]];
     const Vec3 n = (surface_.vertices[t[1]] - a).cross(surface_.vertices[t[2]] - a);
     normals_.push_back(n.norm() > 0 ? Vec3(n.normalized()) : Vec3::Zero());
@@ -59,6 +63,8 @@ CutSurfaceIndex::CutSurfaceIndex(CutSurface surface, double cell_size)
     cell_ *= 1.01 * std::cbrt(cells / double(1 << 18));
   }
   inverse_cell_ = 1.0 / cell_;
+  outer_.add(bounds_.min - Vec3::Constant(1e-9 * cell_));
+  outer_.add(bounds_.max + Vec3::Constant(1e-9 * cell_));
   for (int t = 0; t < static_cast<int>(surface_.triangles.size()); ++t) {
     core::BoundingBox box;
     for (int k : surface_.triangles[t])
@@ -125,15 +131,32 @@ void CutSurfaceIndex::for_triangles_in(const core::BoundingBox& box, Visit&& vis
   }
 }
 
-bool CutSurfaceIndex::may_touch(const core::BoundingBox& box) const {
-  if (box.empty()) return false;
-  for (int d = 0; d < 3; ++d) {
-    if (box.max[d] < bounds_.min[d] - cell_ || box.min[d] > bounds_.max[d] + cell_) return false;
-  }
-  const auto lo = cell_of(box.min), hi = cell_of(box.max);
+bool CutSurfaceIndex::cells_hold_triangle(const std::array<int, 3>& lo,
+                                          const std::array<int, 3>& hi) const {
   for (int i = lo[0]; i <= hi[0]; ++i) {
     for (int j = lo[1]; j <= hi[1]; ++j) {
       if (first_[key(i, j, lo[2])] != first_[key(i, j, hi[2]) + 1]) return true;
+    }
+  }
+  return false;
+}
+
+bool CutSurfaceIndex::triangle_may_meet(const std::array<int, 3>& lo, const std::array<int, 3>& hi,
+                                        const core::BoundingBox& box) const {
+  const Vec3 slack = Vec3::Constant(1e-9 * cell_);
+  const Vec3 low = box.min - slack, high = box.max + slack;
+  const Vec3 centre = 0.5 * (low + high), half = 0.5 * (high - low);
+  for (int i = lo[0]; i <= hi[0]; ++i) {
+    for (int j = lo[1]; j <= hi[1]; ++j) {
+      const int begin = first_[key(i, j, lo[2])], end = first_[key(i, j, hi[2]) + 1];
+      for (int e = begin; e < end; ++e) {
+        const int tri = cells_[e].second;
+        const core::BoundingBox& b = boxes_[tri];
+        if ((b.max.array() < low.array()).any() || (b.min.array() > high.array()).any()) continue;
+        const Vec3& n = normals_[tri];
+        const Vec3& p0 = surface_.vertices[surface_.triangles[tri][0]];
+        if (std::abs(n.dot(centre - p0)) <= half.dot(n.cwiseAbs())) return true;
+      }
     }
   }
   return false;

@@ -42,20 +42,43 @@ class CutSurfaceIndex {
   /// The nearest surface point within `radius` m of p, or nullopt.
   std::optional<NearestPoint> nearest(const core::Vec3& p, double radius) const;
 
-  /// True when a box (m) overlaps a grid cell holding a triangle.
-  bool may_touch(const core::BoundingBox& box) const;
+  /// The grid cell of point p (m), clamped to the grid; points beyond it land in its empty
+  /// margin cells, so a box of cells found from clamped corners never misses a triangle.
+  std::array<int, 3> cell_of(const core::Vec3& p) const;
+
+  /// Six bits, one per face of the surface's box (grown by 1e-9 of a cell), set when p (m)
+  /// lies beyond it (Cohen–Sutherland). Points whose codes share a bit lie beyond one face
+  /// together: no segment or box between them reaches the surface.
+  std::uint8_t outcode(const core::Vec3& p) const {
+    std::uint8_t code = 0;
+    for (int d = 0; d < 3; ++d) {
+      code |= static_cast<std::uint8_t>((p[d] < outer_.min[d] ? 1 : 0) << (2 * d));
+      code |= static_cast<std::uint8_t>((p[d] > outer_.max[d] ? 1 : 0) << (2 * d + 1));
+    }
+    return code;
+  }
+
+  /// True when a grid cell in the box of cells [lo, hi] (from cell_of) holds a triangle.
+  bool cells_hold_triangle(const std::array<int, 3>& lo, const std::array<int, 3>& hi) const;
+
+  /// True when a triangle of the cells [lo, hi] may meet `box` (m): their boxes overlap and the
+  /// triangle's plane passes through the box. False means no segment inside the box crosses
+  /// the surface (the box grows by 1e-9 of a cell for the crossing test's tolerance).
+  bool triangle_may_meet(const std::array<int, 3>& lo, const std::array<int, 3>& hi,
+                         const core::BoundingBox& box) const;
 
  private:
   std::int64_t key(int i, int j, int k) const;
-  std::array<int, 3> cell_of(const core::Vec3& p) const;
   template <typename Visit>
   void for_triangles_in(const core::BoundingBox& box, Visit&& visit) const;
 
   CutSurface surface_;
   std::vector<core::Vec3> normals_;
+  std::vector<core::BoundingBox> boxes_;  ///< per triangle
   double cell_ = 0.0;
   double inverse_cell_ = 0.0;  ///< 1 / cell_: a cell lookup multiplies
   core::BoundingBox bounds_;
+  core::BoundingBox outer_;  ///< bounds_ grown by 1e-9 of a cell, for outcode
   core::Vec3 origin_ = core::Vec3::Zero();
   std::array<int, 3> dims_{1, 1, 1};
   std::vector<std::pair<std::int64_t, int>> cells_;  ///< sorted (cell key, triangle)

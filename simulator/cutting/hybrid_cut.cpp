@@ -98,12 +98,12 @@ std::vector<int> decompose_traversed(const core::TetMesh& body, const CutClassif
                                      CutWork& w, double& min_dihedral_before) {
   const int n = static_cast<int>(body.nodes.size());
   std::vector<int> children_of_cut;
-  min_dihedral_before = 180.0;
+  double max_cos_before = -1.0;
   for (int t : c.traversed) {
     const Tetrahedron& tet = body.tets[t];
-    min_dihedral_before =
-        std::min(min_dihedral_before, min_dihedral_degrees(w.current[tet[0]], w.current[tet[1]],
-                                                           w.current[tet[2]], w.current[tet[3]]));
+    max_cos_before =
+        std::max(max_cos_before, max_cos_dihedral(w.current[tet[0]], w.current[tet[1]],
+                                                  w.current[tet[2]], w.current[tet[3]]));
     const TetCutPattern pattern = pattern_of(c, tet, n);
     const auto children = decompose(pattern);
     if (children.empty()) continue;
@@ -133,6 +133,7 @@ std::vector<int> decompose_traversed(const core::TetMesh& body, const CutClassif
       }
     }
   }
+  min_dihedral_before = c.traversed.empty() ? 180.0 : dihedral_degrees(max_cos_before);
   return children_of_cut;
 }
 
@@ -323,15 +324,16 @@ TopologyChange cut_body(const core::TetMesh& body, const std::vector<Vec3>& curr
   s.cut_faces = change.cut_surface_faces.size();
   s.rest_volume_after = volume_of(change.mesh.tets, change.mesh.nodes);
   s.current_volume_after = volume_of(change.mesh.tets, change.current);
-  s.min_dihedral_after_degrees = 180.0;
+  double max_cos_after = -1.0;
   for (int t : separation.affected) {
     const Tetrahedron& q = change.mesh.tets[t];
     for (const auto* x : {&change.current, &change.mesh.nodes}) {
-      s.min_dihedral_after_degrees =
-          std::min(s.min_dihedral_after_degrees,
-                   min_dihedral_degrees((*x)[q[0]], (*x)[q[1]], (*x)[q[2]], (*x)[q[3]]));
+      max_cos_after =
+          std::max(max_cos_after, max_cos_dihedral((*x)[q[0]], (*x)[q[1]], (*x)[q[2]], (*x)[q[3]]));
     }
   }
+  s.min_dihedral_after_degrees =
+      separation.affected.empty() ? 180.0 : dihedral_degrees(max_cos_after);
   if (visual) cut_visual_surface(*visual, *embedding, body, current, index, change);
   return change;
 }

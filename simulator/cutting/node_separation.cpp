@@ -18,9 +18,42 @@ struct FaceKey {
 };
 
 FaceKey key_of(int a, int b, int c) {
-  FaceKey k{{a, b, c}};
-  std::sort(k.n.begin(), k.n.end());
-  return k;
+  const int lo = std::min({a, b, c}), hi = std::max({a, b, c});
+  return FaceKey{{lo, std::max(std::min(a, b), std::min(std::max(a, b), c)), hi}};
+}
+
+// One stable counting-sort pass of faces by a node id below node_count.
+template <typename Face, typename NodeOf>
+void counting_pass(std::vector<Face>& faces, std::vector<Face>& out, int node_count,
+                   NodeOf node_of) {
+  std::vector<int> offset(static_cast<std::size_t>(node_count) + 1, 0);
+  for (const Face& f : faces)
+    ++offset[node_of(f) + 1];
+  for (int v = 0; v < node_count; ++v)
+    offset[v + 1] += offset[v];
+  out.resize(faces.size());
+  for (const Face& f : faces)
+    out[offset[node_of(f)]++] = f;
+  faces.swap(out);
+}
+
+// Sorts faces keyed by (lowest node << 32 | middle node, highest node): a radix sort, one
+// counting pass on the middle node and one on the lowest, then a sort of each run of faces
+// sharing both (a handful). Linear in the faces and nodes where a comparison sort is not.
+template <typename Face>
+void sort_by_lowest_node(std::vector<Face>& faces, int node_count) {
+  std::vector<Face> buffer;
+  counting_pass(faces, buffer, node_count,
+                [](const Face& f) { return static_cast<int>(f.ab & 0xffffffffu); });
+  counting_pass(faces, buffer, node_count,
+                [](const Face& f) { return static_cast<int>(f.ab >> 32); });
+  for (std::size_t i = 0; i < faces.size();) {
+    std::size_t j = i + 1;
+    while (j < faces.size() && faces[j].ab == faces[i].ab)
+      ++j;
+    if (j - i > 1) std::sort(faces.begin() + i, faces.begin() + j);
+    i = j;
+  }
 }
 
 int find(std::vector<int>& up, int i) {
@@ -50,64 +83,46 @@ void build_stars(CutWork& w) {
 SeparationResult separate_cut_nodes(CutWork& w, const std::vector<std::int8_t>& tet_side) {
   SeparationResult result;
   const int first_new = static_cast<int>(w.rest.size());
-  std::vector<std::uint8_t> in_affected(w.tets.size(), 0);
+  std::vector<int> slot_of(w.tets.size(), -1);
   for (int v = 0; v < first_new; ++v) {
     if (!w.on_cut[v]) continue;
-    for (int k = w.star_offset[v]; k < w.star_offset[v + 1]; ++k) {
-      in_affected[w.star_tets[k]] = 1;
-    }
+    for (int k = w.star_offset[v]; k < w.star_offset[v + 1]; ++k)
+      slot_of[w.star_tets[k]] = 0;
   }
   for (int t = 0; t < static_cast<int>(w.tets.size()); ++t) {
-    if (in_affected[t]) result.affected.push_back(t);
-  }
-  for (int t : result.affected)
+    if (slot_of[t] < 0) continue;
+    slot_of[t] = static_cast<int>(result.affected.size());
+    result.affected.push_back(t);
     result.conforming.push_back(w.tets[t]);
-  // Copies map back to the node they were made from, so face keys use the conforming ids.
-  std::vector<int> original;
-  const auto conforming_id = [&](int u) { return u < first_new ? u : original[u - first_new]; };
-  struct Entry {
-    std::uint64_t key;
-    int local;
-    bool operator<(const Entry& o) const {
-      return key < o.key || (key == o.key && local < o.local);
-    }
-  };
-  std::vector<Entry> entries;
-  std::vector<int> up;
+  }
+  result.neighbour = face_neighbours(result.conforming, w.on_cut);
+  std::vector<int> up, local_of(w.tets.size(), -1), copy_of_root;
   for (int v = 0; v < first_new; ++v) {
     if (!w.on_cut[v]) continue;
     const int begin = w.star_offset[v], end = w.star_offset[v + 1];
     const int size = end - begin;
-    entries.clear();
-    for (int i = 0; i < size; ++i) {
-      const Tetrahedron& t = w.tets[w.star_tets[begin + i]];
-      int others[3], count = 0;
-      for (int u : t) {
-        if (u != v) others[count++] = conforming_id(u);
-      }
-      // The three faces through v: v with each pair of the other corners.
-      for (int a = 0; a < 3; ++a) {
-        for (int b = a + 1; b < 3; ++b) {
-          const auto lo = static_cast<std::uint64_t>(std::min(others[a], others[b]));
-          const auto hi = static_cast<std::uint64_t>(std::max(others[a], others[b]));
-          entries.push_back({(lo << 32) | hi, i});
-        }
-      }
-    }
-    std::sort(entries.begin(), entries.end());
     up.resize(size);
     std::iota(up.begin(), up.end(), 0);
-    for (std::size_t e = 0; e + 1 < entries.size(); ++e) {
-      if (entries[e].key != entries[e + 1].key) continue;
-      const int ta = w.star_tets[begin + entries[e].local];
-      const int tb = w.star_tets[begin + entries[e + 1].local];
-      const int x = static_cast<int>(entries[e].key >> 32);
-      const int y = static_cast<int>(entries[e].key & 0xffffffffu);
-      const bool cut_face = w.on_cut[x] && w.on_cut[y] && tet_side[ta] * tet_side[tb] == -1;
-      if (!cut_face) up[find(up, entries[e].local)] = find(up, entries[e + 1].local);
+    for (int i = 0; i < size; ++i)
+      local_of[w.star_tets[begin + i]] = i;
+    // Tets of the star stay together across each face through v that is not a cut face.
+    for (int i = 0; i < size; ++i) {
+      const int t = w.star_tets[begin + i];
+      const int slot = slot_of[t];
+      const Tetrahedron& c = result.conforming[slot];
+      for (int f = 0; f < 4; ++f) {
+        if (c[f] == v) continue;  // face f is opposite corner f
+        const int across = result.neighbour[4 * slot + f];
+        if (across < 0) continue;
+        const int u = result.affected[across / 4];
+        const auto& k = kFaces[f];
+        const bool cut_face = w.on_cut[c[k[0]]] && w.on_cut[c[k[1]]] && w.on_cut[c[k[2]]] &&
+                              tet_side[t] * tet_side[u] == -1;
+        if (!cut_face) up[find(up, i)] = find(up, local_of[u]);
+      }
     }
     // The group of the lowest tet keeps v; every other group gets a copy.
-    std::vector<int> copy_of_root(size, -1);
+    copy_of_root.assign(size, -1);
     const int keeper = find(up, 0);
     for (int i = 0; i < size; ++i) {
       const int root = find(up, i);
@@ -119,7 +134,6 @@ SeparationResult separate_cut_nodes(CutWork& w, const std::vector<std::int8_t>& 
         // A copy has the sources of its original (an old node is its own source).
         w.origin.push_back(w.origin[v].empty() ? std::vector<NodeSource>{{v, 1.0}} : w.origin[v]);
         w.on_cut.push_back(1);
-        original.push_back(v);
         ++result.duplicated;
       }
       for (int& u : w.tets[w.star_tets[begin + i]]) {
@@ -130,12 +144,57 @@ SeparationResult separate_cut_nodes(CutWork& w, const std::vector<std::int8_t>& 
   return result;
 }
 
+std::vector<int> face_neighbours(const std::vector<Tetrahedron>& tets,
+                                 const std::vector<std::uint8_t>& on_cut) {
+  struct Face {
+    std::uint64_t ab;
+    int c;
+    int slot;  // 4 · tet + face
+    bool operator<(const Face& o) const { return ab < o.ab || (ab == o.ab && c < o.c); }
+    bool same(const Face& o) const { return ab == o.ab && c == o.c; }
+  };
+  std::vector<Face> faces;
+  faces.reserve(4 * tets.size());
+  int node_count = 0;
+  for (std::size_t i = 0; i < tets.size(); ++i) {
+    const Tetrahedron& t = tets[i];
+    for (int f = 0; f < 4; ++f) {
+      const auto& k = kFaces[f];
+      if (!(on_cut[t[k[0]]] || on_cut[t[k[1]]] || on_cut[t[k[2]]])) continue;
+      const FaceKey key = key_of(t[k[0]], t[k[1]], t[k[2]]);
+      faces.push_back(
+          {(static_cast<std::uint64_t>(key.n[0]) << 32) | static_cast<std::uint32_t>(key.n[1]),
+           key.n[2], static_cast<int>(4 * i + f)});
+      node_count = std::max(node_count, key.n[2] + 1);
+    }
+  }
+  sort_by_lowest_node(faces, node_count);
+  std::vector<int> neighbour(4 * tets.size(), -1);
+  for (std::size_t i = 0; i < faces.size();) {
+    std::size_t j = i + 1;
+    while (j < faces.size() && faces[j].same(faces[i]))
+      ++j;
+    if (j - i == 2) {
+      neighbour[faces[i].slot] = faces[i + 1].slot;
+      neighbour[faces[i + 1].slot] = faces[i].slot;
+    }
+    i = j;
+  }
+  return neighbour;
+}
+
 std::vector<Triangle> rebuild_surface(const std::vector<Triangle>& old_surface,
                                       const std::vector<Tetrahedron>& old_tets, const CutWork& w,
                                       const SeparationResult& separation,
                                       std::vector<int>& cut_faces,
                                       std::vector<int>& cut_face_tets) {
-  // The old surface faces of the tets the cut affects are replaced by their new versions.
+  // The old surface faces of the tets the cut affects are replaced by their new versions. Only
+  // faces with all three nodes on the old surface can be such faces.
+  std::vector<std::uint8_t> on_surface(w.on_cut.size(), 0);
+  for (const Triangle& f : old_surface) {
+    for (int v : f)
+      on_surface[v] = 1;
+  }
   std::vector<std::uint8_t> parent_affected(old_tets.size(), 0);
   std::vector<std::array<int, 3>> parent_faces;
   for (int t : separation.affected) {
@@ -143,13 +202,27 @@ std::vector<Triangle> rebuild_surface(const std::vector<Triangle>& old_surface,
     if (parent_affected[p]) continue;
     parent_affected[p] = 1;
     const Tetrahedron& o = old_tets[p];
-    for (const auto& f : kFaces)
-      parent_faces.push_back(key_of(o[f[0]], o[f[1]], o[f[2]]).n);
+    for (const auto& f : kFaces) {
+      if (on_surface[o[f[0]]] && on_surface[o[f[1]]] && on_surface[o[f[2]]]) {
+        parent_faces.push_back(key_of(o[f[0]], o[f[1]], o[f[2]]).n);
+      }
+    }
   }
   std::sort(parent_faces.begin(), parent_faces.end());
+  // Nodes of the affected parents' surface faces: a face without one of them stays.
+  std::vector<std::uint8_t> near_cut(on_surface.size(), 0);
+  for (const auto& f : parent_faces) {
+    for (int v : f)
+      near_cut[v] = 1;
+  }
   std::vector<Triangle> surface;
+  surface.reserve(old_surface.size() + 4 * separation.affected.size());
   std::vector<std::array<int, 3>> removed;
   for (const Triangle& f : old_surface) {
+    if (!(near_cut[f[0]] && near_cut[f[1]] && near_cut[f[2]])) {
+      surface.push_back(f);
+      continue;
+    }
     const auto k = key_of(f[0], f[1], f[2]).n;
     if (std::binary_search(parent_faces.begin(), parent_faces.end(), k)) {
       removed.push_back(k);
@@ -158,58 +231,35 @@ std::vector<Triangle> rebuild_surface(const std::vector<Triangle>& old_surface,
     }
   }
   std::sort(removed.begin(), removed.end());
-  // Boundary faces of the affected tets after separation: a face seen once among them. Faces
-  // without a node on the cut keep their ids, so only faces with one take part in the sort;
-  // those with all three nodes on the cut are also compared before separation (cut faces).
-  struct Face {
-    std::uint64_t ab;
-    int c;
-    int slot;  // 4 · (index in affected) + face
-    bool operator<(const Face& o) const { return ab < o.ab || (ab == o.ab && c < o.c); }
-    bool same(const Face& o) const { return ab == o.ab && c == o.c; }
-  };
-  const auto face_of = [](int x, int y, int z, int slot) {
-    const FaceKey k = key_of(x, y, z);
-    return Face{(static_cast<std::uint64_t>(k.n[0]) << 32) | static_cast<std::uint32_t>(k.n[1]),
-                k.n[2], slot};
-  };
+  // Boundary faces of the affected tets after separation. A face with a node on the cut had
+  // its neighbour found before separation: it is on the boundary when it had none (old
+  // surface) or when separation gave the two tets different copies of one of its nodes; a cut
+  // face had a neighbour before. Faces without nodes on the cut keep their ids: they are on
+  // the boundary exactly when they were old surface.
   const std::size_t count = separation.affected.size();
-  std::vector<Face> before, after;
-  after.reserve(4 * count);
+  std::vector<std::uint8_t> shared_before(4 * count, 0), boundary_after(4 * count, 0);
   for (std::size_t i = 0; i < count; ++i) {
     const Tetrahedron& c = separation.conforming[i];
     const Tetrahedron& t = w.tets[separation.affected[i]];
     for (int f = 0; f < 4; ++f) {
       const auto& k = kFaces[f];
-      const int cut_nodes = w.on_cut[c[k[0]]] + w.on_cut[c[k[1]]] + w.on_cut[c[k[2]]];
-      if (cut_nodes == 0) continue;
       const int slot = static_cast<int>(4 * i + f);
-      after.push_back(face_of(t[k[0]], t[k[1]], t[k[2]], slot));
-      if (cut_nodes == 3) before.push_back(face_of(c[k[0]], c[k[1]], c[k[2]], slot));
-    }
-  }
-  std::sort(before.begin(), before.end());
-  std::sort(after.begin(), after.end());
-  std::vector<std::uint8_t> shared_before(4 * count, 0), boundary_after(4 * count, 0);
-  for (std::size_t i = 0; i + 1 < before.size(); ++i) {
-    if (before[i].same(before[i + 1]))
-      shared_before[before[i].slot] = shared_before[before[i + 1].slot] = 1;
-  }
-  for (std::size_t i = 0; i < after.size();) {
-    std::size_t j = i + 1;
-    while (j < after.size() && after[j].same(after[i]))
-      ++j;
-    if (j - i == 1) boundary_after[after[i].slot] = 1;
-    i = j;
-  }
-  // Faces without nodes on the cut are on the boundary exactly when they were old surface.
-  for (std::size_t i = 0; i < count; ++i) {
-    const Tetrahedron& c = separation.conforming[i];
-    for (int f = 0; f < 4; ++f) {
-      const auto& k = kFaces[f];
-      if (w.on_cut[c[k[0]]] || w.on_cut[c[k[1]]] || w.on_cut[c[k[2]]]) continue;
-      boundary_after[4 * i + f] =
-          std::binary_search(removed.begin(), removed.end(), key_of(c[k[0]], c[k[1]], c[k[2]]).n);
+      const int cut_nodes = w.on_cut[c[k[0]]] + w.on_cut[c[k[1]]] + w.on_cut[c[k[2]]];
+      if (cut_nodes == 0) {
+        boundary_after[slot] =
+            std::binary_search(removed.begin(), removed.end(), key_of(c[k[0]], c[k[1]], c[k[2]]).n);
+        continue;
+      }
+      const int across = separation.neighbour[slot];
+      if (across < 0) {
+        boundary_after[slot] = 1;
+        continue;
+      }
+      shared_before[slot] = cut_nodes == 3;
+      const Tetrahedron& u = w.tets[separation.affected[across / 4]];
+      const auto& m = kFaces[across % 4];
+      boundary_after[slot] =
+          !(key_of(t[k[0]], t[k[1]], t[k[2]]) == key_of(u[m[0]], u[m[1]], u[m[2]]));
     }
   }
   for (std::size_t i = 0; i < count; ++i) {

@@ -25,6 +25,10 @@ void build_stars(CutWork& w);
 struct SeparationResult {
   std::vector<int> affected;                  ///< sorted tets around nodes on the cut
   std::vector<core::Tetrahedron> conforming;  ///< the affected tets before separation
+  /// Per affected tet and face (4 · index in affected + face, the face opposite that corner):
+  /// the slot of the face across it before separation, for faces with a node on the cut;
+  /// −1 for the others and for faces on the surface.
+  std::vector<int> neighbour;
   std::size_t duplicated = 0;
 };
 
@@ -32,6 +36,12 @@ struct SeparationResult {
 /// that are not cut faces. A face is a cut face when its three nodes are on the cut and the
 /// tets on its two sides lie on opposite sides (tet_side −1 / +1; 0 = undecided, never cut).
 SeparationResult separate_cut_nodes(CutWork& w, const std::vector<std::int8_t>& tet_side);
+
+/// For faces with a node on the cut (on_cut, per node) of positively oriented tets: the slot
+/// (4 · tet + face) of the same face in another tet, or −1. Faces are matched by their nodes
+/// after a counting sort on their lowest node.
+std::vector<int> face_neighbours(const std::vector<core::Tetrahedron>& tets,
+                                 const std::vector<std::uint8_t>& on_cut);
 
 /// The surface faces after separation: the old ones that no affected tet touches, then the
 /// boundary faces of the affected tets. cut_faces receives the indices of faces on the cut and

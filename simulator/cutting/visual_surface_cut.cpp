@@ -1,6 +1,8 @@
 #include "simulator/cutting/visual_surface_cut.h"
 
 #include <algorithm>
+#include <optional>
+#include <span>
 #include <unordered_map>
 
 namespace viscera::sim::cutting {
@@ -16,7 +18,7 @@ struct Embedded {
 
 // The barycentric embedding of rest point p among candidate tets: the one holding it, or the
 // one whose smallest weight is largest.
-Embedded embed_among(const Vec3& p, const std::vector<int>& candidates, const core::TetMesh& mesh) {
+Embedded embed_among(const Vec3& p, std::span<const int> candidates, const core::TetMesh& mesh) {
   Embedded best{candidates.front(), {0.25, 0.25, 0.25, 0.25}};
   double best_low = -1e300;
   for (int t : candidates) {
@@ -37,10 +39,16 @@ class VisualCutter {
       : in_(visual), emb_(embedding), body_(body), old_x_(old_current), index_(index), c_(change) {}
 
   void run() {
-    pieces_.resize(body_.tets.size());
-    for (int t = 0; t < static_cast<int>(c_.tet_parent.size()); ++t) {
-      pieces_[c_.tet_parent[t]].push_back(t);
-    }
+    // The new tets of each old tet (CSR: piece_offset_ per old tet into pieces_).
+    piece_offset_.assign(body_.tets.size() + 1, 0);
+    for (int p : c_.tet_parent)
+      ++piece_offset_[p + 1];
+    for (std::size_t t = 0; t < body_.tets.size(); ++t)
+      piece_offset_[t + 1] += piece_offset_[t];
+    pieces_.resize(c_.tet_parent.size());
+    std::vector<int> fill(piece_offset_.begin(), piece_offset_.end() - 1);
+    for (int t = 0; t < static_cast<int>(c_.tet_parent.size()); ++t)
+      pieces_[fill[c_.tet_parent[t]]++] = t;
     out_ = in_;
     out_.triangles.clear();
     const std::size_t n = in_.vertices.size();
@@ -53,6 +61,7 @@ class VisualCutter {
     }
     material_.resize(n);
     current_.resize(n);
+    outcode_.resize(n);
     c_.visual_embedding.tet.resize(n);
     c_.visual_embedding.weights.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
@@ -63,7 +72,9 @@ class VisualCutter {
         material_[i] += emb_.weights[i][k] * body_.nodes[q[k]];
         current_[i] += emb_.weights[i][k] * old_x_[q[k]];
       }
-      const auto& candidates = pieces_[emb_.tet[i]];
+      outcode_[i] = index_.outcode(current_[i]);
+      const std::span<const int> candidates(pieces_.data() + piece_offset_[emb_.tet[i]],
+                                            pieces_.data() + piece_offset_[emb_.tet[i] + 1]);
       const auto& now = c_.mesh.tets[emb_.tet[i]];
       const bool same =
           candidates.size() == 1 && now == q && c_.mesh.nodes[q[0]] == body_.nodes[q[0]] &&
@@ -92,7 +103,8 @@ class VisualCutter {
     if (const auto it = crossing_.find(k); it != crossing_.end()) return it->second;
     const int v = add_vertex_between(a, b, t);
     // The crossing point lies on the cut at the border of a's piece: it follows that piece.
-    const Embedded e = embed_among(material_[v], {c_.visual_embedding.tet[a]}, c_.mesh);
+    const int host = c_.visual_embedding.tet[a];
+    const Embedded e = embed_among(material_[v], std::span<const int>(&host, 1), c_.mesh);
     c_.visual_embedding.tet.push_back(e.tet);
     c_.visual_embedding.weights.push_back(e.weights);
     crossing_.emplace(k, v);
@@ -121,7 +133,9 @@ class VisualCutter {
     double t[3];
     int crossed = 0, lone = -1;
     for (int e = 0; e < 3; ++e) {
-      const auto hit = index_.crossing(current_[tri[e]], current_[tri[(e + 1) % 3]]);
+      const int a = tri[e], b = tri[(e + 1) % 3];
+      const auto hit =
+          (outcode_[a] & outcode_[b]) ? std::nullopt : index_.crossing(current_[a], current_[b]);
       t[e] = hit ? hit->t : -1.0;
       crossed += hit ? 1 : 0;
     }
@@ -217,7 +231,8 @@ class VisualCutter {
   const CutSurfaceIndex& index_;
   TopologyChange& c_;
   core::SurfaceMesh out_;
-  std::vector<std::vector<int>> pieces_;
+  std::vector<int> piece_offset_, pieces_;
+  std::vector<std::uint8_t> outcode_;  ///< per input vertex, of its current place
   std::vector<Vec3> material_, current_;
   std::vector<std::uint8_t> cut_flag_;
   std::unordered_map<std::uint64_t, int> crossing_;

@@ -10,15 +10,11 @@
 ///   arrives as a burst of `burst_count` bubbles; while it runs, one more bubble every
 ///   `inflow_per_bubble` m³ delivered. Radii are uniform in [min_radius, max_radius] from the
 ///   session's seeded generator. Bubbles are born at the inflow, spread over a cell.
-/// - Motion: each bubble moves with the flow plus its buoyant rise along `up` (against
-///   gravity) at the terminal speed of a small sphere in water, Stokes' 2Δρ g r²/(9µ), capped at
-///   `max_rise_speed` (millimetre bubbles rise at 0.2–0.3 m/s; Clift, Grace & Weber 1978).
-///   Explicit sub-steps of at most half a cell.
-/// - Walls: a step that would end in solid tissue is tried with the flow alone (the bubble
-///   slides along the wall); if that also ends in tissue the bubble stays, clinging under the
-///   wall, as bubbles gather under the fundus and the anterior wall, until the flow carries it
-///   away. A bubble that reaches an outflow (open) cell is flushed out; one that a moving wall
-///   closes over moves to an open neighbouring cell or is lost with the fluid absorbed there.
+/// - Motion (suspended_particles.h): each bubble moves with the flow plus its buoyant rise
+///   along `up` at the terminal speed of a small sphere in water, Stokes' 2Δρ g r²/(9µ), capped
+///   at `max_rise_speed` (millimetre bubbles rise at 0.2–0.3 m/s; Clift, Grace & Weber 1978);
+///   it clings under walls (the fundus, the anterior wall) until the flow carries it away, and
+///   an outflow flushes it.
 /// - At most `capacity` bubbles at once; air past it is not admitted.
 ///
 /// Deterministic: bubbles are kept in birth order and moved one after the other.
@@ -29,6 +25,7 @@
 #include "core/math_types.h"
 #include "core/random.h"
 #include "simulator/fluid/flow_grid.h"
+#include "simulator/fluid/suspended_particles.h"
 
 namespace viscera::sim::fluid {
 
@@ -60,29 +57,23 @@ class AirBubbles {
   /// (zero: no buoyancy), and flushes those that reach an outflow.
   void advance(const FlowGrid& grid, const core::Vec3& up, double time_step);
 
-  std::size_t size() const { return positions_.size(); }
-  const std::vector<core::Vec3>& positions() const { return positions_; }  ///< m
-  const std::vector<double>& radii() const { return radii_; }              ///< m
+  std::size_t size() const { return bubbles_.size(); }
+  const std::vector<core::Vec3>& positions() const { return bubbles_.positions(); }  ///< m
+  const std::vector<double>& radii() const { return bubbles_.radii(); }              ///< m
   /// Whether bubble i clings under a wall (its last rise was blocked by tissue).
-  bool clinging(std::size_t i) const { return clinging_[i] != 0; }
-  long long admitted() const { return admitted_; }
-  long long flushed() const { return flushed_; }
-  long long lost() const { return lost_; }  ///< closed over by tissue or carried off the grid
+  bool clinging(std::size_t i) const { return bubbles_.resting(i); }
+  long long admitted() const { return bubbles_.admitted(); }
+  long long flushed() const { return bubbles_.flushed(); }
+  long long lost() const { return bubbles_.lost(); }  ///< closed over by tissue or off the grid
 
  private:
   void add(const core::Vec3& at, const FlowGrid& grid);
-  void remove(std::size_t i);
-  /// Moves bubble i to a non-solid neighbour of its cell; false when there is none.
-  bool free_from_tissue(std::size_t i, const FlowGrid& grid);
 
   AirBubbleSettings settings_;
   core::Rng rng_;
-  std::vector<core::Vec3> positions_;
-  std::vector<double> radii_;
-  std::vector<std::uint8_t> clinging_;
+  SuspendedParticles bubbles_;
   double idle_ = 1e9;  ///< s since the inflow last ran
   double inflow_since_bubble_ = 0.0;
-  long long admitted_ = 0, flushed_ = 0, lost_ = 0;
 };
 
 }  // namespace viscera::sim::fluid

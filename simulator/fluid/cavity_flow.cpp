@@ -54,6 +54,7 @@ CavityFlow::CavityFlow(std::span<const core::Vec3> wall,
       blood_(grid_),
       particles_(settings.particles, seed),
       bubbles_(settings.bubbles, seed ^ 0xb0bb1e5ull),
+      debris_(settings.debris),
       vortices_(settings.vortices, seed ^ 0x9e3779b97f4a7c15ull),
       wall_labelled_(wall.begin(), wall.end()) {
   if (settings.resolution < 4 || !(settings.interval > 0.0) || !(settings.relabel_motion > 0.0) ||
@@ -222,6 +223,20 @@ void CavityFlow::advance(double dt, const CavityInputs& inputs) {
     particles_.emit(birth, release.normal, release.speed, release.volume, grid_, blood_);
     released_ += release.volume;
   }
+  // Debris enters where it was cut off (in the open cell beside it when that lies in tissue).
+  for (const DebrisRelease& shred : inputs.debris) {
+    core::Vec3 at = shred.position;
+    const CellCoord c = grid_.cell_of(at);
+    if (grid_.cell_or_solid(c) == FlowCell::Solid) {
+      for (const auto& e : kNext) {
+        const CellCoord n{c.i + e[0], c.j + e[1], c.k + e[2]};
+        if (grid_.cell_or_solid(n) == FlowCell::Solid) continue;
+        at = grid_.origin() + h * core::Vec3(n.i + 0.5, n.j + 0.5, n.k + 0.5);
+        break;
+      }
+    }
+    debris_.add(at, shred.radius);
+  }
   // Air comes in with the pump's fluid once the sheath's inflow cells are in the cavity.
   if (inflow_cells_.empty()) {
     bubbles_.admit(0.0, dt, core::Vec3::Zero(), grid_);
@@ -254,6 +269,7 @@ void CavityFlow::advance(double dt, const CavityInputs& inputs) {
   blood_.advect(grid_, step);
   particles_.advance(grid_, &vortices_, blood_, step);
   bubbles_.advance(grid_, inputs.up, step);
+  debris_.advance(grid_, inputs.up, step);
   blood_.spill(grid_);
   ++flow_steps_;
 }

@@ -25,6 +25,10 @@
 ///   the flow, distends the cavity), so what the jet brings leaves there.
 /// - Air bubbles (air_bubbles.h) enter at the inflow cells while the pump delivers into the
 ///   cavity, are carried with each flow step and rise against gravity (CavityInputs::up).
+/// - Tissue debris (suspended_particles.h): shreds of a resection too small to be chips enter
+///   where the session cut them off, are carried with each flow step and settle against gravity
+///   (tissue, about 1050 kg/m³, is 50 kg/m³ denser than saline); the outflow holes draw them out
+///   through the sheath.
 /// - Clouding: Beer–Lambert along the line of sight, T = exp(−k ∫ c ds) over the first
 ///   `view_depth` m, c the blood fraction, k = `extinction`: 1 % of blood over 2 cm gives
 ///   T = e⁻¹. The view counts as obscured while T < `obscured_transmission`.
@@ -38,6 +42,7 @@
 #include "simulator/fluid/blood_particles.h"
 #include "simulator/fluid/concentration_field.h"
 #include "simulator/fluid/stable_fluids.h"
+#include "simulator/fluid/suspended_particles.h"
 
 namespace viscera::sim::fluid {
 
@@ -53,6 +58,8 @@ struct CavityFlowSettings {
   FlowSettings flow;                   ///< the solver's (its time step is `interval`)
   BloodParticleSettings particles;
   AirBubbleSettings bubbles;
+  /// Tissue debris: 50 kg/m³ denser than saline, at most 500 shreds at once.
+  SuspensionSettings debris{1.0e-3, -50.0, 9.81, 0.25, 500};
   VortexSettings vortices;
 };
 
@@ -70,6 +77,12 @@ struct BloodRelease {
   double volume = 0.0;                      ///< m³
 };
 
+/// A shred of tissue entering the cavity where a cut took it off.
+struct DebrisRelease {
+  core::Vec3 position = core::Vec3::Zero();  ///< m
+  double radius = 0.0;                       ///< m, of the sphere of its volume
+};
+
 /// What the session hands the flow at one physics step.
 struct CavityInputs {
   std::span<const core::Vec3> wall;  ///< the wall surface's current positions, m
@@ -82,6 +95,7 @@ struct CavityInputs {
   double inflow_rate = 0.0;               ///< m³/s the pump delivers this step
   core::Vec3 up = core::Vec3::Zero();     ///< unit, against gravity (zero: bubbles do not rise)
   std::vector<BloodRelease> blood;
+  std::vector<DebrisRelease> debris;
 };
 
 class CavityFlow {
@@ -111,6 +125,7 @@ class CavityFlow {
   const ConcentrationField& blood() const { return blood_; }
   const BloodParticles& particles() const { return particles_; }
   const AirBubbles& bubbles() const { return bubbles_; }
+  const SuspendedParticles& debris() const { return debris_; }
   const ArtificialVortices& vortices() const { return vortices_; }
   const CavityFlowSettings& settings() const { return settings_; }
   /// Blood released so far, m³: in particles, in the field, drained or lost; equals the sum of
@@ -139,6 +154,7 @@ class CavityFlow {
   ConcentrationField blood_;
   BloodParticles particles_;
   AirBubbles bubbles_;
+  SuspendedParticles debris_;
   ArtificialVortices vortices_;
   /// Positions at the last labelling, to measure motion against.
   std::vector<core::Vec3> wall_labelled_;

@@ -10,6 +10,7 @@
 #include "core/error.h"
 #include "simulator/cutting/fragments.h"
 #include "simulator/session/cut_topology.h"
+#include "simulator/session/retired_tissue.h"
 #include "simulator/session/severed_pieces.h"
 
 namespace viscera::sim {
@@ -59,6 +60,7 @@ LoopResection::LoopResection(const World& world, std::vector<int> bodies,
   for (const int b : bodies_)
     initial_volume_.push_back(
         core::total_volume(world.models()[static_cast<std::size_t>(b)]->mesh));
+  shed_volume_.assign(bodies_.size(), 0.0);
 }
 
 void LoopResection::record_pose(const InstrumentState& state) {
@@ -147,18 +149,38 @@ void LoopResection::cut(World& world, double time, CuttingSummary& summary,
     resection.resected_volume = 0.0;
     resection.chips = 0;
     std::erase_if(chips_, [b](const Chip& chip) { return chip.body == b; });
-    for (const cutting::Fragment& chip : severed_fragments(cut_mesh, world.held_nodes(b))) {
+    std::vector<cutting::Fragment> shreds;
+    for (cutting::Fragment& chip : severed_fragments(cut_mesh, world.held_nodes(b))) {
       resection.resected_volume += chip.rest_volume;
+      if (debris_sink_ && chip.rest_volume < debris_volume_) {
+        shreds.push_back(std::move(chip));
+        continue;
+      }
       ++resection.chips;
       chips_.push_back({b, chip.nodes, chip.rest_volume});
     }
-    if (observer_) observer_(b, change, time);  // the chips of this cut are known
+    resection.resected_volume += shed_volume_[k];  // the debris of earlier cuts
+    if (observer_) observer_(b, change, time);     // the chips of this cut are known
+    if (!shreds.empty()) shed(world, b, k, shreds, resection);
     events.push_back({time, "cut",
                       "the loop cut " + model.name + ": " + std::to_string(s.tets_traversed) +
                           " tets traversed, " + std::to_string(resection.chips) + " chip(s), " +
                           std::to_string(std::lround(100.0 * resection.resected_fraction())) +
                           " % resected"});
   }
+}
+
+void LoopResection::shed(World& world, int body, std::size_t k,
+                         const std::vector<cutting::Fragment>& shreds, BodyResection& resection) {
+  const auto positions = world.state().range(world.state().positions, body);
+  for (const cutting::Fragment& shred : shreds) {
+    debris_sink_(fragment_centre(shred, positions), equivalent_radius(shred.rest_volume));
+    shed_volume_[k] += shred.rest_volume;
+    ++resection.debris;
+  }
+  const BodyTopology topology = topology_without(world, body, shreds);
+  if (visible_ != nullptr) visible_->retire(body, topology);
+  world.topology_changed(body, topology);
 }
 
 void LoopResection::begin(const World& world, CuttingSummary& summary) const {

@@ -10,7 +10,8 @@
 /// fragments that lost every anchor — the nodes bound to the wall, or held fixed — are chips:
 /// excised tissue that moves freely, falls and meets the wall through body contact. A sweep
 /// released with the loop still inside a body does not cut that body (the seed's rule); the
-/// report counts it.
+/// report counts it. Pieces cut off below a volume bound are not chips but debris: they leave
+/// the body (retired_tissue.h) and the distension flow carries them as particles.
 ///
 /// Decisions where the seed is silent: the loop hangs from the tip on the side the angled optics
 /// look towards (InstrumentState::up), in the plane across the shaft, so it is in view; the cut
@@ -22,6 +23,7 @@
 #include <vector>
 
 #include "simulator/cutting/cut_surface.h"
+#include "simulator/cutting/fragments.h"
 #include "simulator/cutting/hybrid_cut.h"
 #include "simulator/session/instrument_state.h"
 #include "simulator/session/session_report.h"
@@ -29,6 +31,10 @@
 #include "simulator/world/world.h"
 
 namespace viscera::sim {
+
+/// Pieces cut off below 1 mm³ (a sphere of 1.24 mm) are debris, not chips: a few tets at most,
+/// too small to be simulated as bodies of their own or to be seen as more than a shred.
+inline constexpr double kDebrisVolume = 1e-9;  ///< m³
 
 /// The loop of a standard 26 Fr resectoscope: a half ring of 2.5 mm radius (a 5 mm wide cut).
 cutting::LoopElectrode standard_resection_loop();
@@ -63,6 +69,15 @@ class LoopResection {
   using CutObserver =
       std::function<void(int body, const cutting::TopologyChange& change, double time)>;
   void on_cut(CutObserver observer) { observer_ = std::move(observer); }
+  /// Where a debris shred goes: its centre (m) and the radius of the sphere of its volume (m).
+  using DebrisSink = std::function<void(const core::Vec3& centre, double radius)>;
+  /// Pieces cut off with a rest volume below `volume` m³ become debris: they leave their body
+  /// after the cut observer has seen the cut, and `sink` receives each. Without a sink (no flow
+  /// to carry them) every piece cut off stays a chip.
+  void shed_debris_below(double volume, DebrisSink sink) {
+    debris_volume_ = volume;
+    debris_sink_ = std::move(sink);
+  }
   /// Cuts go through `surfaces` (null: the tets alone), so the bodies' visible surfaces follow.
   void cut_visible_surfaces(VisibleSurfaces* surfaces) { visible_ = surfaces; }
 
@@ -75,14 +90,20 @@ class LoopResection {
  private:
   void cut(World& world, double time, CuttingSummary& summary, std::vector<SessionEvent>& events);
   void record_pose(const InstrumentState& state);
+  /// Retires `shreds` (fragments of body `body`, cuttable body `k`) as debris.
+  void shed(World& world, int body, std::size_t k, const std::vector<cutting::Fragment>& shreds,
+            BodyResection& resection);
 
   std::vector<int> bodies_;
   std::vector<double> initial_volume_;  ///< m³ rest volume of each cuttable body at the start
+  std::vector<double> shed_volume_;     ///< m³ of each cuttable body shed as debris so far
   cutting::LoopElectrode loop_;
   cutting::HybridCutOptions options_;
   bool sweeping_ = false;
   std::vector<cutting::LoopPose> sweep_;
   CutObserver observer_;
+  double debris_volume_ = 0.0;
+  DebrisSink debris_sink_;
   VisibleSurfaces* visible_ = nullptr;
   std::vector<Chip> chips_;
 };

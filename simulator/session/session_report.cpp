@@ -106,7 +106,8 @@ nlohmann::json cutting_json(const SessionReport& r) {
                       {"initial_volume", b.initial_volume},
                       {"resected_volume", b.resected_volume},
                       {"resected_fraction", b.resected_fraction()},
-                      {"chips", b.chips}});
+                      {"chips", b.chips},
+                      {"debris", b.debris}});
   }
   const auto angle = [&](double degrees) -> nlohmann::json {
     return c.cuts > 0 ? nlohmann::json(degrees) : nlohmann::json(nullptr);
@@ -214,7 +215,10 @@ nlohmann::json cavity_flow_json(const SessionReport& r) {
           {"particles", f.particles},
           {"air_bubbles_admitted", f.air_bubbles_admitted},
           {"air_bubbles_flushed", f.air_bubbles_flushed},
-          {"air_bubbles_at_end", f.air_bubbles_at_end}};
+          {"air_bubbles_at_end", f.air_bubbles_at_end},
+          {"debris_released", f.debris_released},
+          {"debris_flushed", f.debris_flushed},
+          {"debris_at_end", f.debris_at_end}};
 }
 
 /// How a threaded session kept time, or null for a headless one.

@@ -101,8 +101,9 @@ struct RealtimeStats {
 struct BodyResection {
   std::string body;
   double initial_volume = 0.0;   ///< m³, rest volume at the start of the session
-  double resected_volume = 0.0;  ///< m³, rest volume of its chips (fragments without anchor)
+  double resected_volume = 0.0;  ///< m³, rest volume of its chips and debris (cut off)
   int chips = 0;
+  int debris = 0;  ///< shreds too small to be chips, handed to the flow as debris particles
   double resected_fraction() const {
     return initial_volume > 0.0 ? std::min(1.0, resected_volume / initial_volume) : 0.0;
   }
@@ -149,6 +150,9 @@ struct CavityFlowSummary {
   long long air_bubbles_admitted = 0;  ///< air bubbles the inflow brought in
   long long air_bubbles_flushed = 0;   ///< carried out through the outflow
   int air_bubbles_at_end = 0;          ///< in the cavity at the end
+  long long debris_released = 0;       ///< resection shreds the flow took as debris particles
+  long long debris_flushed = 0;        ///< carried out through the sheath's outflow
+  int debris_at_end = 0;               ///< in the cavity at the end
 };
 
 /// The result of a session.

@@ -554,6 +554,9 @@ SessionReport SessionRunner::finish() {
     f.air_bubbles_admitted = cavity_->bubbles().admitted();
     f.air_bubbles_flushed = cavity_->bubbles().flushed();
     f.air_bubbles_at_end = static_cast<int>(cavity_->bubbles().size());
+    f.debris_released = cavity_->debris().admitted();
+    f.debris_flushed = cavity_->debris().flushed();
+    f.debris_at_end = static_cast<int>(cavity_->debris().size());
   }
   report_.max_penetration = world_.max_penetration();
   report_.contact_stiffness =

@@ -199,7 +199,8 @@ class SessionRunner {
   const core::SceneObject* cavity_object_ = nullptr;
   std::vector<double> bled_seen_;  ///< per bleeding source, m³ already handed to the flow
   bool cut_since_flow_ = false;    ///< a pathology was cut since the last flow step
-  double inflow_rate_ = 0.0;       ///< m³/s the pump delivered in the last step
+  std::vector<fluid::DebrisRelease> pending_debris_;  ///< shreds cut off since the last step
+  double inflow_rate_ = 0.0;                          ///< m³/s the pump delivered in the last step
   long long pressure_iterations_ = 0;
   void start_cavity_flow(const core::Scenario& scenario);
   /// Hands the step's pump inflow, blood and surfaces to the flow; books the clouded view.

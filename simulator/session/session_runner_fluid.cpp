@@ -186,10 +186,13 @@ void SessionRunner::start_cavity_flow(const core::Scenario& scenario) {
           summary.fluid_cells += cavity_->grid().cell(i, j, k) == fluid::FlowCell::Fluid;
     summary.obscured_threshold = settings.obscured_transmission;
     if (resection_) {
-      // The loop's chips drift with the flow (chip_drift.h).
+      // The loop's chips drift with the flow (chip_drift.h); its shreds become debris.
       auto drag = std::make_unique<FluidDrag>();
       chip_drag_ = drag.get();
       world_.add_term(std::move(drag));
+      resection_->shed_debris_below(kDebrisVolume, [this](const core::Vec3& centre, double radius) {
+        pending_debris_.push_back({centre, radius});
+      });
     }
     return;
   }
@@ -250,6 +253,7 @@ void SessionRunner::flow_cavity(double dt) {
     inputs.obstacles_cut = cut_since_flow_;
     cut_since_flow_ = false;
   }
+  inputs.debris.swap(pending_debris_);
   const long long before = cavity_->flow_steps();
   cavity_->advance(dt, inputs);
   if (cavity_->flow_steps() == before) return;

@@ -11,6 +11,7 @@
 #include "core/scenario/scenario.h"
 #include "simulator/cutting/cut_surface.h"
 #include "simulator/cutting/hybrid_cut.h"
+#include "simulator/dynamics/body_topology.h"
 #include "simulator/world/world.h"
 
 namespace viscera::sim {
@@ -45,6 +46,12 @@ class VisibleSurfaces {
                               const std::vector<core::Vec3>& current,
                               const cutting::CutSurface& surface,
                               const cutting::HybridCutOptions& options);
+
+  /// Body `body` lost tets (retired_tissue.h): `topology` keeps the others, in their order, and
+  /// names each one's old index in tet_parent. The triangles of the cut surface with a vertex in
+  /// a lost tet go with them; the rest keep their places, embedded in the kept tets' new
+  /// indices. A body with no cut surface yet is left alone (only cuts make fragments).
+  void retire(int body, const BodyTopology& topology);
 
  private:
   std::vector<const core::SceneObject*> objects_;  ///< per body, null: no embedded surface

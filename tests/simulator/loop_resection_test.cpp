@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <numbers>
 
 #include "core/json_schema/json_schema_validator.h"
 #include "core/mesh/surface_embedding.h"
@@ -397,6 +398,109 @@ TEST(LoopResection, the_cut_polyp_shows_its_inside_on_its_visible_surface) {
   EXPECT_EQ(
       snapshot.bodies[static_cast<std::size_t>(runner.world().body_index("uterus"))].cut_surface,
       nullptr);
+}
+
+/// A scoop of the polyp's apex cut by a LoopResection on a bare world (no session), with pieces
+/// below `debris_volume` m³ shed as debris into `shreds` (no sink when the bound is 0).
+struct BareScoop {
+  CuttingSummary summary;
+  std::vector<std::pair<core::Vec3, double>> shreds;
+  std::vector<Chip> chips;
+  int polyp_tets_after = 0;
+  std::size_t polyp_nodes_after = 0;
+  std::vector<core::Vec3> shed_nodes_at_cut, shed_nodes_later;
+  std::shared_ptr<const CutVisibleSurface> surface;  ///< the polyp's, at the end
+  std::vector<core::Tetrahedron> polyp_tets;         ///< at the end
+};
+
+BareScoop bare_scoop(double debris_volume) {
+  const core::Scenario scenario = resectoscope_patient();
+  World world(scenario);
+  world.settle();
+  const int polyp = world.body_index("polyp-1");
+  const auto input =
+      ScriptedTrajectory::from_json(scoop_script(polyp_frame(world), 2.0e-3), "scoop", 30.0);
+  LoopResection resection(world, {polyp}, standard_resection_loop());
+  VisibleSurfaces visible(scenario, world);
+  resection.cut_visible_surfaces(&visible);
+  BareScoop r;
+  if (debris_volume > 0.0)
+    resection.shed_debris_below(debris_volume, [&](const core::Vec3& centre, double radius) {
+      r.shreds.emplace_back(centre, radius);
+    });
+  resection.begin(world, r.summary);
+  std::vector<SessionEvent> events;
+  std::vector<int> shed_nodes;
+  for (int step = 1; step <= 1200; ++step) {
+    world.step();
+    const int cuts = r.summary.cuts;
+    resection.follow(input.state(step, world.time()), world, world.time(), r.summary, events);
+    if (r.summary.cuts == cuts || r.shreds.empty()) continue;
+    // The shed nodes: those of the cut mesh that no tet holds any more.
+    const core::TetMesh& mesh = world.models()[static_cast<std::size_t>(polyp)]->mesh;
+    std::vector<std::uint8_t> in_tet(mesh.nodes.size(), 0);
+    for (const auto& t : mesh.tets)
+      for (const int v : t)
+        in_tet[static_cast<std::size_t>(v)] = 1;
+    const auto x = world.state().range(world.state().positions, polyp);
+    for (std::size_t v = 0; v < mesh.nodes.size(); ++v)
+      if (!in_tet[v]) {
+        shed_nodes.push_back(static_cast<int>(v));
+        r.shed_nodes_at_cut.push_back(x[v]);
+      }
+  }
+  const auto x = world.state().range(world.state().positions, polyp);
+  for (const int v : shed_nodes)
+    r.shed_nodes_later.push_back(x[static_cast<std::size_t>(v)]);
+  const core::TetMesh& mesh_after = world.models()[static_cast<std::size_t>(polyp)]->mesh;
+  r.polyp_tets_after = static_cast<int>(mesh_after.tets.size());
+  r.polyp_nodes_after = mesh_after.nodes.size();
+  r.chips = resection.chips();
+  r.surface = visible.cut_surface(polyp);
+  r.polyp_tets = mesh_after.tets;
+  return r;
+}
+
+TEST(LoopResection, pieces_below_the_debris_bound_leave_the_body_as_debris_shreds) {
+  // Issue 17 §3: with every piece below the bound (1 m³), the scoop's chip is shed as debris.
+  // The same cut without a bound keeps it as a chip: same resected volume, same pieces.
+  const BareScoop chip = bare_scoop(0.0), shed = bare_scoop(1.0);
+  ASSERT_EQ(chip.summary.cuts, 1);
+  ASSERT_EQ(shed.summary.cuts, 1);
+  const BodyResection& kept = chip.summary.bodies[0];
+  const BodyResection& gone = shed.summary.bodies[0];
+  ASSERT_GE(kept.chips, 1);
+  EXPECT_EQ(kept.debris, 0);
+  EXPECT_TRUE(chip.shreds.empty());
+  EXPECT_EQ(gone.chips, 0);
+  EXPECT_EQ(gone.debris, kept.chips);
+  EXPECT_TRUE(shed.chips.empty());
+  EXPECT_NEAR(gone.resected_volume, kept.resected_volume, 1e-12 * kept.resected_volume);
+  // One shred per chip, the radius of the sphere of its volume: the radii's cubes add up to it.
+  ASSERT_EQ(static_cast<int>(shed.shreds.size()), kept.chips);
+  double volume = 0.0;
+  for (const auto& [centre, radius] : shed.shreds) {
+    EXPECT_TRUE(centre.allFinite());
+    volume += 4.0 / 3.0 * std::numbers::pi * radius * radius * radius;
+  }
+  EXPECT_NEAR(volume, kept.resected_volume, 1e-9 * kept.resected_volume);
+  // The chip's tets left the body; its nodes stay (every index holds) and no longer move.
+  EXPECT_LT(shed.polyp_tets_after, chip.polyp_tets_after);
+  EXPECT_EQ(shed.polyp_nodes_after, chip.polyp_nodes_after);
+  ASSERT_FALSE(shed.shed_nodes_at_cut.empty());
+  EXPECT_EQ(shed.shed_nodes_later, shed.shed_nodes_at_cut);
+  // The visible surface lost the chip's triangles and follows the kept tets.
+  ASSERT_NE(chip.surface, nullptr);
+  ASSERT_NE(shed.surface, nullptr);
+  EXPECT_EQ(shed.surface->tets, shed.polyp_tets);
+  EXPECT_LT(shed.surface->mesh.triangles.size(), chip.surface->mesh.triangles.size());
+  ASSERT_EQ(shed.surface->embedding.tet.size(), shed.surface->mesh.vertices.size());
+  for (const int t : shed.surface->embedding.tet) {
+    EXPECT_GE(t, 0);
+    EXPECT_LT(t, static_cast<int>(shed.polyp_tets.size()));
+  }
+  for (const auto& [name, values] : shed.surface->mesh.vertex_attributes)
+    EXPECT_EQ(values.size(), shed.surface->mesh.vertices.size()) << name;
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <numbers>
 
+#include "simulator/session/retired_tissue.h"
 #include "simulator/session/session_runner.h"
 
 namespace viscera::sim {
@@ -48,6 +49,8 @@ void capture_snapshot(const SessionRunner& runner, SessionSnapshot& out) {
   out.haze_density = 0.0;
   out.bubbles.clear();
   out.bubble_size.clear();
+  out.debris.clear();
+  out.debris_size.clear();
   out.irrigation_drops.clear();
   out.irrigation_drop_age.clear();
   if (const SuctionIrrigation* cannula = runner.irrigation()) {
@@ -92,6 +95,12 @@ void capture_snapshot(const SessionRunner& runner, SessionSnapshot& out) {
     for (std::size_t i = 0; i < bubbles.size(); ++i)
       out.bubble_size[i] =
           static_cast<float>(span > 0.0 ? (bubbles.radii()[i] - range.min_radius) / span : 0.0);
+    const fluid::SuspendedParticles& debris = flow->debris();
+    out.debris.assign(debris.positions().begin(), debris.positions().end());
+    const double largest = equivalent_radius(kDebrisVolume);
+    out.debris_size.resize(debris.size());
+    for (std::size_t i = 0; i < debris.size(); ++i)
+      out.debris_size[i] = static_cast<float>(std::min(1.0, debris.radii()[i] / largest));
     const double depth = flow->settings().view_depth;
     const double transmission = flow->view_transmission(
         out.instrument.tip, view_direction(out.instrument, out.optics_angle));

@@ -52,6 +52,10 @@ struct SessionSnapshot {
   /// bubbles' range (0 smallest … 1 largest).
   std::vector<core::Vec3> bubbles;
   std::vector<float> bubble_size;
+  /// Tissue debris of the resection in the cavity's flow: each shred's position (m) and its
+  /// radius over the debris bound's (0…1).
+  std::vector<core::Vec3> debris;
+  std::vector<float> debris_size;
   /// The irrigation jet's drops in flight (issue 19 §3): positions (m) and age over the
   /// longest flight (0…1).
   std::vector<core::Vec3> irrigation_drops;

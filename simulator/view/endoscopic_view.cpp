@@ -48,6 +48,7 @@ EndoscopicView::EndoscopicView(const core::Scenario& scenario, const std::filesy
   surfaces_->add_to(scene_);
   blood_ = std::make_unique<ParticleBillboards>(scene_, kBloodLook);
   bubbles_ = std::make_unique<ParticleBillboards>(scene_, kBubbleLook);
+  debris_ = std::make_unique<ParticleBillboards>(scene_, kDebrisLook);
   drops_ = std::make_unique<ParticleBillboards>(scene_, kDropLook);
   pool_ = std::make_unique<PoolSurface>(scene_);
   smoke_ = std::make_unique<SmokeBillboards>(scene_);
@@ -117,6 +118,7 @@ void EndoscopicView::update(const sim::SessionSnapshot& snapshot) {
   surfaces_->update(snapshot.bodies);
   blood_->update(snapshot.blood, snapshot.blood_stage);
   bubbles_->update(snapshot.bubbles, snapshot.bubble_size);
+  debris_->update(snapshot.debris, snapshot.debris_size);
   drops_->update(snapshot.irrigation_drops, snapshot.irrigation_drop_age);
   pool_->update(snapshot.pool_centre, snapshot.pool_up, snapshot.pool_radius,
                 snapshot.pool_blood_fraction);

@@ -86,6 +86,7 @@ class EndoscopicView {
   const SceneSurfaces& surfaces() const { return *surfaces_; }
   const ParticleBillboards& blood() const { return *blood_; }
   const ParticleBillboards& bubbles() const { return *bubbles_; }
+  const ParticleBillboards& debris() const { return *debris_; }
   const ParticleBillboards& irrigation_drops() const { return *drops_; }
   const PoolSurface& pool() const { return *pool_; }
   const SmokeBillboards& smoke() const { return *smoke_; }
@@ -103,7 +104,7 @@ class EndoscopicView {
   vtkSmartPointer<EndoscopeLensPass> lens_;
   std::unique_ptr<SceneSurfaces> surfaces_;
   std::unique_ptr<SessionOverlay> overlay_;
-  std::unique_ptr<ParticleBillboards> blood_, bubbles_, drops_;
+  std::unique_ptr<ParticleBillboards> blood_, bubbles_, debris_, drops_;
   std::unique_ptr<PoolSurface> pool_;
   std::unique_ptr<SmokeBillboards> smoke_;
   sim::SessionSnapshot captured_;  ///< reused by update(runner)

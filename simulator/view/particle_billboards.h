@@ -1,6 +1,6 @@
 #pragma once
-/// Blood and air bubbles in the endoscopic view as billboards (seed 000 §6.2 and §7: "the
-/// particles are rendered as billboards", textured by the stage of their life; "endometrial
+/// Blood, air bubbles and tissue debris in the endoscopic view as billboards (seed 000 §6.2 and §7:
+/// "the particles are rendered as billboards", textured by the stage of their life; "endometrial
 /// material, floating tissue fragments, and bubbles … are represented by billboards"): each
 /// particle of the cavity's flow is a small screen-aligned sprite (a point sprite of a few
 /// pixels, softened by the lens pass's resampling and blur), drawn opaque in the scene pass so
@@ -8,7 +8,8 @@
 /// between the two ends of a ParticleLook: for blood the age over life, from a small bright
 /// arterial-red drop to a larger dark venous-red one (the blood the particles release clouds
 /// the view as the lens pass's haze, from the concentration field); for bubbles the radius
-/// within its range, from a small to a large silvery one; for the irrigation jet's drops the
+/// within its range, from a small to a large silvery one; for debris its size, from a small
+/// pale shred to a larger flesh-coloured one; for the irrigation jet's drops the
 /// age over their longest flight. Sprites are sized in pixels, not
 /// metres, and square: blended world-size splats cost seconds a frame on a software rasteriser
 /// with 10,000 of them, sphere impostors 40 ms. Sizes and colours are stated choices; the seed
@@ -43,6 +44,9 @@ struct ParticleLook {
 inline constexpr ParticleLook kBloodLook{{0.72, 0.03, 0.03}, {0.32, 0.05, 0.05}, 6.0, 12.0, 0.35};
 /// Irrigation drops: 3 px to 5 px over their flight, pale blue-white saline.
 inline constexpr ParticleLook kDropLook{{0.78, 0.86, 0.95}, {0.70, 0.80, 0.92}, 3.0, 5.0, 0.6};
+/// Tissue debris: 4 px to 9 px from the smallest shred to one of the debris bound, pale pink
+/// (cut endometrium or myoma, bloodless) to a deeper flesh tone.
+inline constexpr ParticleLook kDebrisLook{{0.93, 0.80, 0.76}, {0.80, 0.55, 0.50}, 4.0, 9.0, 0.45};
 /// Air bubbles: 5 px to 12 px from the smallest radius to the largest, silvery and bright.
 inline constexpr ParticleLook kBubbleLook{
     {0.80, 0.86, 0.92}, {0.92, 0.95, 1.0}, 5.0, 12.0, 0.5, true};

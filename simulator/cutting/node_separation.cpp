@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <numeric>
 
+#include "core/mesh/counting_sort.h"
+
 namespace viscera::sim::cutting {
 namespace {
 
@@ -22,31 +24,16 @@ FaceKey key_of(int a, int b, int c) {
   return FaceKey{{lo, std::max(std::min(a, b), std::min(std::max(a, b), c)), hi}};
 }
 
-// One stable counting-sort pass of faces by a node id below node_count.
-template <typename Face, typename NodeOf>
-void counting_pass(std::vector<Face>& faces, std::vector<Face>& out, int node_count,
-                   NodeOf node_of) {
-  std::vector<int> offset(static_cast<std::size_t>(node_count) + 1, 0);
-  for (const Face& f : faces)
-    ++offset[node_of(f) + 1];
-  for (int v = 0; v < node_count; ++v)
-    offset[v + 1] += offset[v];
-  out.resize(faces.size());
-  for (const Face& f : faces)
-    out[offset[node_of(f)]++] = f;
-  faces.swap(out);
-}
-
 // Sorts faces keyed by (lowest node << 32 | middle node, highest node): a radix sort, one
 // counting pass on the middle node and one on the lowest, then a sort of each run of faces
 // sharing both (a handful). Linear in the faces and nodes where a comparison sort is not.
 template <typename Face>
 void sort_by_lowest_node(std::vector<Face>& faces, int node_count) {
   std::vector<Face> buffer;
-  counting_pass(faces, buffer, node_count,
-                [](const Face& f) { return static_cast<int>(f.ab & 0xffffffffu); });
-  counting_pass(faces, buffer, node_count,
-                [](const Face& f) { return static_cast<int>(f.ab >> 32); });
+  core::stable_counting_pass(faces, buffer, node_count,
+                             [](const Face& f) { return static_cast<int>(f.ab & 0xffffffffu); });
+  core::stable_counting_pass(faces, buffer, node_count,
+                             [](const Face& f) { return static_cast<int>(f.ab >> 32); });
   for (std::size_t i = 0; i < faces.size();) {
     std::size_t j = i + 1;
     while (j < faces.size() && faces[j].ab == faces[i].ab)

@@ -2,27 +2,14 @@
 
 #include <algorithm>
 
+#include "core/mesh/counting_sort.h"
+
 namespace viscera::sim {
 namespace {
 
 struct Entry {
   int lower, upper, tet;
 };
-
-// One stable counting-sort pass of the entries on a node id in [0, node_count).
-template <typename NodeOf>
-void counting_pass(std::vector<Entry>& entries, std::vector<Entry>& out, int node_count,
-                   NodeOf node_of) {
-  std::vector<int> offset(static_cast<std::size_t>(node_count) + 1, 0);
-  for (const Entry& e : entries)
-    ++offset[node_of(e) + 1];
-  for (int v = 0; v < node_count; ++v)
-    offset[v + 1] += offset[v];
-  out.resize(entries.size());
-  for (const Entry& e : entries)
-    out[offset[node_of(e)]++] = e;
-  entries.swap(out);
-}
 
 }  // namespace
 
@@ -37,8 +24,8 @@ TetEdgeGroups tet_edge_groups(const std::vector<core::Tetrahedron>& tets, int no
   }
   // Radix sort, least significant key first: entries made in tet order end sorted by (lower,
   // upper, tet).
-  counting_pass(entries, buffer, node_count, [](const Entry& e) { return e.upper; });
-  counting_pass(entries, buffer, node_count, [](const Entry& e) { return e.lower; });
+  core::stable_counting_pass(entries, buffer, node_count, [](const Entry& e) { return e.upper; });
+  core::stable_counting_pass(entries, buffer, node_count, [](const Entry& e) { return e.lower; });
   TetEdgeGroups groups;
   groups.tets.reserve(entries.size());
   for (std::size_t i = 0; i < entries.size(); ++i) {

@@ -96,6 +96,8 @@ class LaparoscopicTools {
   /// Per world body and node: 1 for a coagulated knot.
   const std::vector<std::vector<std::uint8_t>>& coagulated() const { return coagulated_; }
   const LaparoscopicToolOptions& options() const { return options_; }
+  /// The world bodies the tools act on.
+  const std::vector<int>& bodies() const { return bodies_; }
   /// The smoke of coagulation and the fog on the lens (at the instrument's tip).
   const SurgicalSmoke& smoke() const { return smoke_; }
 

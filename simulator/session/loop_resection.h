@@ -86,6 +86,8 @@ class LoopResection {
   /// True while the pedal is down.
   bool sweeping() const { return sweeping_; }
   const cutting::LoopElectrode& loop() const { return loop_; }
+  /// The world bodies the loop may cut.
+  const std::vector<int>& bodies() const { return bodies_; }
 
  private:
   void cut(World& world, double time, CuttingSummary& summary, std::vector<SessionEvent>& events);

@@ -117,6 +117,8 @@ SessionRunner::SessionRunner(const core::Scenario& scenario, const HeadlessRunOp
       irrigation_ = std::make_unique<SuctionIrrigation>(world_);
     }
     if (fluid_) start_cavity_flow(scenario);
+    if (resection_) start_tears(resection_->bodies());
+    if (tools_) start_tears(tools_->bodies());
   }
   if (options.settle) {
     const World::Settling settling = world_.settle();
@@ -319,6 +321,7 @@ void SessionRunner::step(const InstrumentState& input) {
     if (state_.coagulation) coagulate(now);
   }
   if (tools_) follow_tools(now);
+  if (tears_) tears_->follow(world_, now, report_.events);
   if (has_instrument) {
     const core::Vec3 force = instrument_force();
     const bool contact = tissue_->in_contact();

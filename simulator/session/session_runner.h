@@ -23,6 +23,7 @@
 #include "simulator/session/series_thinning.h"
 #include "simulator/session/session_report.h"
 #include "simulator/session/suction_irrigation.h"
+#include "simulator/session/tissue_tears.h"
 #include "simulator/world/world.h"
 
 namespace viscera::sim {
@@ -134,6 +135,7 @@ class SessionRunner {
   /// The resection loop, with a "resectoscope" instrument: it cuts the pathology bodies.
   std::unique_ptr<LoopResection> resection_;
   std::unique_ptr<VisibleSurfaces> visible_;  ///< made by the first cutting instrument
+  std::unique_ptr<TissueTears> tears_;        ///< with a cutting instrument
   std::vector<core::Vec3> coverage_rest_;     ///< visual vertices when the surface has no embedding
   std::vector<Monitor> monitors_;
   int current_ = -1;
@@ -173,6 +175,8 @@ class SessionRunner {
   /// Sets up the tools, their report block and what clips, coagulation and cuts do to the
   /// bleeding and the pulse waves.
   void start_tools(const core::Scenario& scenario);
+  /// Tears on `bodies` (those the instrument can cut) become cracks (tissue_tears.h).
+  void start_tears(std::vector<int> bodies);
   /// Moves the instrument's contact point to state_ (a tool's jaws touch with their hinge).
   void move_tissue();
   /// The jet, the pool and the suction of the suction–irrigation cannula (issue 19 §3).

@@ -32,6 +32,16 @@ void SessionRunner::move_tissue() {
   tissue_->move(touching, world_.time_step());
 }
 
+void SessionRunner::start_tears(std::vector<int> bodies) {
+  tears_ = std::make_unique<TissueTears>(world_, std::move(bodies));
+  tears_->cut_visible_surfaces(visible_.get());
+  tears_->on_crack([this](int body, const cutting::TopologyChange& change, double time) {
+    const std::size_t before = bleeding_->sources().size();
+    start_bleeding(body, change, time);
+    if (tools_) pulse_opened_arteries(before);
+  });
+}
+
 void SessionRunner::start_tools(const core::Scenario& scenario) {
   tools_ = std::make_unique<LaparoscopicTools>(world_);
   if (!visible_) visible_ = std::make_unique<VisibleSurfaces>(scenario, world_);

@@ -1,12 +1,13 @@
 // The laparoscopic tubal sterilisation (issue 19 §3, §6) on the left fallopian tube of the
 // laparoscopy-gyn template's patient, alone (the other 20 objects take no part in it and would
 // make every run minutes long): the shipped expert and novice scripts, the grasper pulling and
-// tearing, clips closing the tube, bipolar coagulation stopping ooze, the scissors dividing it,
-// and a replay.
+// tearing (a hard pull cracks the tube apart), clips closing the tube, bipolar coagulation stopping
+// ooze, the scissors dividing it, and a replay.
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 
 #include "core/json_schema/json_schema_validator.h"
@@ -106,6 +107,7 @@ TEST(Sterilisation, the_grasped_tube_follows_the_grasper) {
   EXPECT_GT(r.laparoscopy->max_grasp_force, 0.0);
   EXPECT_EQ(r.laparoscopy->knots_torn_out, 0);
   EXPECT_EQ(events(r, "tissue-tear"), 0) << events_text(r);
+  EXPECT_EQ(events(r, "tissue-torn-apart"), 0);
 }
 
 TEST(Sterilisation, a_hard_pull_tears_the_tube) {
@@ -119,6 +121,12 @@ TEST(Sterilisation, a_hard_pull_tears_the_tube) {
   w.erase(std::remove_if(w.begin(), w.end(), [](const auto& p) { return p["t"] > 8.0; }), w.end());
   const SessionReport r = run_json(script);
   EXPECT_GT(events(r, "tissue-tear") + r.laparoscopy->knots_torn_out, 0);
+  // Issue 17 §4 (seed 001 §4.1): the torn links crack the tube apart, knots duplicated, and
+  // the session goes on sound.
+  EXPECT_GT(events(r, "tissue-torn-apart"), 0) << events_text(r);
+  for (const auto& sample : r.samples)
+    EXPECT_TRUE(std::isfinite(sample.total()));
+  EXPECT_EQ(r.end_reason, "duration");
 }
 
 TEST(Sterilisation, coagulated_tissue_does_not_ooze_when_cut_but_raw_tissue_does) {

@@ -162,11 +162,13 @@ void LoopResection::cut(World& world, double time, CuttingSummary& summary,
     resection.resected_volume += shed_volume_[k];  // the debris of earlier cuts
     if (observer_) observer_(b, change, time);     // the chips of this cut are known
     if (!shreds.empty()) shed(world, b, k, shreds, resection);
-    events.push_back({time, "cut",
-                      "the loop cut " + model.name + ": " + std::to_string(s.tets_traversed) +
-                          " tets traversed, " + std::to_string(resection.chips) + " chip(s), " +
-                          std::to_string(std::lround(100.0 * resection.resected_fraction())) +
-                          " % resected"});
+    events.push_back(
+        {time, "cut",
+         "the loop cut " + model.name + ": " + std::to_string(s.tets_traversed) +
+             " tets traversed, " + std::to_string(resection.chips) + " chip(s), " +
+             (shreds.empty() ? std::string()
+                             : std::to_string(shreds.size()) + " shred(s) of debris, ") +
+             std::to_string(std::lround(100.0 * resection.resected_fraction())) + " % resected"});
   }
 }
 

@@ -411,6 +411,7 @@ struct BareScoop {
   std::vector<core::Vec3> shed_nodes_at_cut, shed_nodes_later;
   std::shared_ptr<const CutVisibleSurface> surface;  ///< the polyp's, at the end
   std::vector<core::Tetrahedron> polyp_tets;         ///< at the end
+  std::vector<SessionEvent> events;
 };
 
 BareScoop bare_scoop(double debris_volume) {
@@ -457,6 +458,7 @@ BareScoop bare_scoop(double debris_volume) {
   r.polyp_nodes_after = mesh_after.nodes.size();
   r.chips = resection.chips();
   r.surface = visible.cut_surface(polyp);
+  r.events = events;
   r.polyp_tets = mesh_after.tets;
   return r;
 }
@@ -484,6 +486,10 @@ TEST(LoopResection, pieces_below_the_debris_bound_leave_the_body_as_debris_shred
     volume += 4.0 / 3.0 * std::numbers::pi * radius * radius * radius;
   }
   EXPECT_NEAR(volume, kept.resected_volume, 1e-9 * kept.resected_volume);
+  const auto cut_event = std::find_if(shed.events.begin(), shed.events.end(),
+                                      [](const SessionEvent& e) { return e.kind == "cut"; });
+  ASSERT_NE(cut_event, shed.events.end());
+  EXPECT_NE(cut_event->message.find("shred(s) of debris"), std::string::npos) << cut_event->message;
   // The chip's tets left the body; its nodes stay (every index holds) and no longer move.
   EXPECT_LT(shed.polyp_tets_after, chip.polyp_tets_after);
   EXPECT_EQ(shed.polyp_nodes_after, chip.polyp_nodes_after);

@@ -139,6 +139,17 @@ bool drives_bodies(const std::vector<std::unique_ptr<ForceTerm>>& terms) {
   });
 }
 
+std::size_t tear_count(const std::vector<std::unique_ptr<ForceTerm>>& terms) {
+  std::size_t count = 0;
+  for (const auto& t : terms) {
+    if (const auto* edges = dynamic_cast<const TissueTearing*>(t.get()))
+      count += edges->tears().size();
+    else if (const auto* cells = dynamic_cast<const AgentTissueTerm*>(t.get()))
+      count += cells->tears().size();
+  }
+  return count;
+}
+
 std::vector<TearEvent> tears_of(const std::vector<std::unique_ptr<ForceTerm>>& terms) {
   std::vector<TearEvent> tears;
   for (const auto& t : terms) {

@@ -43,4 +43,8 @@ bool drives_bodies(const std::vector<std::unique_ptr<ForceTerm>>& terms);
 /// Every tear recorded by the tearing and cell-agent terms of `terms`, by time (stable).
 std::vector<TearEvent> tears_of(const std::vector<std::unique_ptr<ForceTerm>>& terms);
 
+/// How many tears tears_of would list, without copying or sorting them: what a caller checks
+/// after every step before it looks at new tears.
+std::size_t tear_count(const std::vector<std::unique_ptr<ForceTerm>>& terms);
+
 }  // namespace viscera::sim

@@ -13,7 +13,7 @@ namespace viscera::sim {
 
 TissueTears::TissueTears(const World& world, std::vector<int> bodies)
     : bodies_(std::move(bodies)), made_by_crack_(world.models().size()) {
-  seen_ = tears_of(world.terms()).size();
+  seen_ = tear_count(world.terms());
 }
 
 bool TissueTears::tears(int body) const {
@@ -21,8 +21,8 @@ bool TissueTears::tears(int body) const {
 }
 
 void TissueTears::follow(World& world, double time, std::vector<SessionEvent>& events) {
+  if (tear_count(world.terms()) <= seen_) return;
   const std::vector<TearEvent> all = tears_of(world.terms());
-  if (all.size() <= seen_) return;
   const std::vector<TearEvent> fresh(all.begin() + static_cast<std::ptrdiff_t>(seen_), all.end());
   for (const TearEvent& tear : fresh) {
     const int b = world.body_index(tear.body);
@@ -59,7 +59,6 @@ void TissueTears::follow(World& world, double time, std::vector<SessionEvent>& e
     made.resize(change.mesh.nodes.size(), 0);
     for (std::size_t v = before; v < made.size(); ++v)
       made[v] = 1;
-    ++cracks_;
     events.push_back({time, "tissue-torn-apart",
                       model.name + " tore apart between knots " + std::to_string(link.first) +
                           " and " + std::to_string(link.second) + " (" +
@@ -69,7 +68,7 @@ void TissueTears::follow(World& world, double time, std::vector<SessionEvent>& e
   }
   // A topology change recaptures the tearing terms: links still past their limit are recorded
   // again, and handled (or skipped) at the next call.
-  seen_ = tears_of(world.terms()).size();
+  seen_ = tear_count(world.terms());
 }
 
 }  // namespace viscera::sim

@@ -49,8 +49,6 @@ class TissueTears {
   /// is a "tissue-torn-apart" event.
   void follow(World& world, double time, std::vector<SessionEvent>& events);
 
-  int cracks() const { return cracks_; }
-
  private:
   bool tears(int body) const;
 
@@ -61,7 +59,6 @@ class TissueTears {
   std::set<std::pair<int, std::pair<int, int>>> split_;  ///< (body, link) already split
   VisibleSurfaces* visible_ = nullptr;
   CrackObserver observer_;
-  int cracks_ = 0;
 };
 
 }  // namespace viscera::sim

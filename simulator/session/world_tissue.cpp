@@ -36,8 +36,8 @@ void WorldTissue::move(const InstrumentState& state, double /*dt*/) {
 }
 
 std::vector<TissueEvent> WorldTissue::warnings() {
+  if (tear_count(world_.terms()) <= reported_tears_) return {};
   const std::vector<TearEvent> tears = tears_of(world_.terms());
-  if (tears.size() <= reported_tears_) return {};
   // One warning per body for the tears of this step.
   struct Torn {
     int count = 0;

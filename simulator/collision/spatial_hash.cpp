@@ -160,6 +160,10 @@ std::vector<VertexInTet> SpatialHash::detect(std::span<const CollisionBodyView> 
               const std::size_t h = hash(i, j, k);
               for (std::uint32_t e = bucket_start_[h]; e < bucket_start_[h + 1]; ++e) {
                 const auto [vb, v] = entries_[e];
+                // Without self-collisions a tet never holds its own body's vertices: they
+                // are left out here, where a tet next to its body's dense vertices would
+                // otherwise test each of them.
+                if (!self_collisions && vb == static_cast<int>(tb)) continue;
                 auto& seen = last_tested_[vb][v];
                 if (seen == range_stamp) continue;
                 seen = range_stamp;

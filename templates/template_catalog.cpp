@@ -18,7 +18,8 @@ const std::vector<std::unique_ptr<ScenarioTemplate>>& template_catalog() {
     std::vector<std::unique_ptr<ScenarioTemplate>> list;
     list.push_back(std::make_unique<BallTemplate>());
     list.push_back(std::make_unique<HysteroscopyTemplate>());
-    list.push_back(std::make_unique<HysteroscopyTemplate>(true));
+    list.push_back(std::make_unique<HysteroscopyTemplate>(HysteroscopyVariant::polypectomy));
+    list.push_back(std::make_unique<HysteroscopyTemplate>(HysteroscopyVariant::myomectomy));
     list.push_back(std::make_unique<LaparoscopyGynTemplate>());
     list.push_back(std::make_unique<UrethraTemplate>());
     list.push_back(std::make_unique<AgentTissueTemplate>());

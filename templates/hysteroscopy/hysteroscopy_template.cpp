@@ -15,16 +15,36 @@
 
 namespace viscera::templates {
 
+std::string HysteroscopyTemplate::name() const {
+  switch (variant_) {
+    case HysteroscopyVariant::polypectomy:
+      return "hysteroscopy-polypectomy";
+    case HysteroscopyVariant::myomectomy:
+      return "hysteroscopy-myomectomy";
+    case HysteroscopyVariant::diagnostic:
+      break;
+  }
+  return "hysteroscopy";
+}
+
 std::string HysteroscopyTemplate::description() const {
-  if (polypectomy_) {
-    return "the hysteroscopy patient with at least one endometrial polyp, a resectoscope and "
-           "the hysteroscopic polypectomy procedure";
+  switch (variant_) {
+    case HysteroscopyVariant::polypectomy:
+      return "the hysteroscopy patient with at least one endometrial polyp, a resectoscope and "
+             "the hysteroscopic polypectomy procedure";
+    case HysteroscopyVariant::myomectomy:
+      return "the hysteroscopy patient with one or two sessile submucosal myomas, a "
+             "resectoscope and the hysteroscopic myomectomy procedure (shaving)";
+    case HysteroscopyVariant::diagnostic:
+      break;
   }
   return "uterus with cavity, cervical canal, tubal orifices, endometrium and myometrium, fixed "
          "cervix, arterial tree and random myomas, polyps and adhesions";
 }
 
 std::vector<TemplateParameter> HysteroscopyTemplate::parameters() const {
+  const bool polypectomy = variant_ == HysteroscopyVariant::polypectomy;
+  const bool myomectomy = variant_ == HysteroscopyVariant::myomectomy;
   return {
       {"length", "m", "external os to the top of the fundus", 0.06, 0.09, 0.075, false},
       {"width", "m", "largest outer width of the uterus", 0.04, 0.06, 0.05, false},
@@ -45,10 +65,13 @@ std::vector<TemplateParameter> HysteroscopyTemplate::parameters() const {
       {"endometrium_thickness", "m", "endometrial layer of the wall", 0.002, 0.008, 0.004, false},
       {"fixed_cervix_fraction", "1", "fixed nodes: lower fraction of the cervix length", 0.1, 1.0,
        0.5, false},
-      {"submucosal_myomas", "count", "sessile myomas bulging into the cavity", 0, 3, 1, true},
-      {"intramural_myomas", "count", "myomas inside the wall", 0, 2, 0, true},
-      {"pedunculated_myomas", "count", "myomas on a stalk", 0, 2, 0, true},
-      {"polyps", "count", "endometrial polyps", polypectomy_ ? 1.0 : 0.0, 4, 1, true},
+      {"submucosal_myomas", "count", "sessile myomas bulging into the cavity",
+       myomectomy ? 1.0 : 0.0, 3, 1, true},
+      // The myomectomy patient has sessile myomas only, so "myoma-1" is the one to shave.
+      {"intramural_myomas", "count", "myomas inside the wall", 0, myomectomy ? 0.0 : 2.0, 0, true},
+      {"pedunculated_myomas", "count", "myomas on a stalk", 0, myomectomy ? 0.0 : 2.0, 0, true},
+      {"polyps", "count", "endometrial polyps", polypectomy ? 1.0 : 0.0, 4, myomectomy ? 0.0 : 1.0,
+       true},
       {"adhesions", "count", "bands between opposite walls (synechiae)", 0, 3, 0, true},
       {"myoma_diameter", "m", "mean myoma diameter (each drawn within 25 %)", 0.004, 0.014, 0.008,
        false},
@@ -74,8 +97,29 @@ std::vector<TemplateParameter> HysteroscopyTemplate::parameters() const {
   };
 }
 
+namespace {
+
+/// The myomectomy patient's variability: the diagnostic patient's shape, one or two sessile
+/// myomas of 6–10 mm (FIGO type 1–2 lesions a 26 Fr loop shaves in a few layers), no polyps,
+/// no intramural or pedunculated myomas (so "myoma-1" is the first sessile one).
+std::vector<core::VariabilityRule> myomectomy_variability(
+    std::vector<core::VariabilityRule> rules) {
+  std::erase_if(rules, [](const core::VariabilityRule& r) {
+    return r.parameter.find("myoma") != std::string::npos || r.parameter == "polyps";
+  });
+  rules.push_back(integer_range_rule("submucosal_myomas", 1, 2));
+  rules.push_back(integer_range_rule("intramural_myomas", 0, 0));
+  rules.push_back(integer_range_rule("pedunculated_myomas", 0, 0));
+  rules.push_back(integer_range_rule("polyps", 0, 0));
+  rules.push_back(uniform_rule("myoma_diameter", 0.006, 0.01));
+  rules.push_back(truncated_normal_rule("myoma_stiffness", 40000, 8000, 25000, 70000));
+  return rules;
+}
+
+}  // namespace
+
 std::vector<core::VariabilityRule> HysteroscopyTemplate::default_variability() const {
-  return {
+  std::vector<core::VariabilityRule> rules{
       truncated_normal_rule("length", 0.075, 0.006, 0.065, 0.09),
       truncated_normal_rule("width", 0.05, 0.004, 0.043, 0.058),
       truncated_normal_rule("thickness", 0.035, 0.003, 0.03, 0.042),
@@ -88,7 +132,7 @@ std::vector<core::VariabilityRule> HysteroscopyTemplate::default_variability() c
       integer_range_rule("submucosal_myomas", 0, 2),
       integer_range_rule("intramural_myomas", 0, 1),
       choice_rule("pedunculated_myomas", {0, 1}, {3, 1}),
-      integer_range_rule("polyps", polypectomy_ ? 1 : 0, 3),
+      integer_range_rule("polyps", variant_ == HysteroscopyVariant::polypectomy ? 1 : 0, 3),
       choice_rule("adhesions", {0, 1, 2}, {6, 2, 1}),
       uniform_rule("myoma_diameter", 0.005, 0.012),
       uniform_rule("polyp_length", 0.004, 0.011),
@@ -98,9 +142,23 @@ std::vector<core::VariabilityRule> HysteroscopyTemplate::default_variability() c
       integer_range_rule("vessel_seed", 0, 1000000000),
       integer_range_rule("texture_seed", 0, 1000000000),
   };
+  if (variant_ == HysteroscopyVariant::myomectomy) return myomectomy_variability(std::move(rules));
+  return rules;
 }
 
 namespace {
+
+std::string procedure_of(HysteroscopyVariant variant) {
+  switch (variant) {
+    case HysteroscopyVariant::polypectomy:
+      return "hysteroscopic-polypectomy";
+    case HysteroscopyVariant::myomectomy:
+      return "hysteroscopic-myomectomy";
+    case HysteroscopyVariant::diagnostic:
+      break;
+  }
+  return "diagnostic-hysteroscopy";
+}
 
 UterusDimensions dimensions_of(const ParameterValues& p) {
   UterusDimensions d;
@@ -160,6 +218,7 @@ core::Scenario HysteroscopyTemplate::build(const ParameterValues& p, std::uint64
   request.myoma_diameter = p.at("myoma_diameter");
   request.polyp_length = p.at("polyp_length");
   request.adhesion_radius = p.at("adhesion_radius");
+  request.sessile_on_corpus_faces = variant_ == HysteroscopyVariant::myomectomy;
   request.edge_length = std::clamp(0.45 * dims.edge_length, 0.002, 0.003);
   const std::vector<PlacedPathology> pathologies = place_pathologies(shape, tissue, request, rng);
   progress.step();
@@ -297,9 +356,7 @@ core::Scenario HysteroscopyTemplate::build(const ParameterValues& p, std::uint64
   scenario.session.contact_stiffness = 500.0;
   // Seed 000 §11: the diagnostic procedure, its tasks referring to the shape's landmarks (the
   // internal and external os, both tubal orifices) and the cavity region of the surface.
-  core::apply_procedure(scenario.session,
-                        core::procedure_definition(polypectomy_ ? "hysteroscopic-polypectomy"
-                                                                : "diagnostic-hysteroscopy"));
+  core::apply_procedure(scenario.session, core::procedure_definition(procedure_of(variant_)));
   scenario.session.metrics = {"path_length", "economy_of_movement", "wall_contacts", "max_force",
                               "cavity_seen"};
   progress.step();

@@ -10,16 +10,23 @@
 
 namespace viscera::templates {
 
+/// The procedure a hysteroscopy patient is made for.
+enum class HysteroscopyVariant {
+  diagnostic,   ///< "hysteroscopy": diagnostic-hysteroscopy, random pathologies
+  polypectomy,  ///< "hysteroscopy-polypectomy": at least one polyp, a resectoscope
+  myomectomy,   ///< "hysteroscopy-myomectomy": one or two submucosal myomas, a resectoscope
+};
+
 /// Builds a virtual patient for diagnostic and operative hysteroscopy.
 class HysteroscopyTemplate final : public ScenarioTemplate {
  public:
-  /// The diagnostic patient ("hysteroscopy", procedure diagnostic-hysteroscopy), or with
-  /// `polypectomy` the operative one ("hysteroscopy-polypectomy"): at least one polyp, a
-  /// resectoscope, and the hysteroscopic-polypectomy procedure (issue 17 §5).
-  explicit HysteroscopyTemplate(bool polypectomy = false) : polypectomy_(polypectomy) {}
-  std::string name() const override {
-    return polypectomy_ ? "hysteroscopy-polypectomy" : "hysteroscopy";
-  }
+  /// The diagnostic patient, or an operative one (issue 17 §5): the polypectomy patient has at
+  /// least one polyp and the hysteroscopic-polypectomy procedure; the myomectomy patient has one
+  /// or two sessile submucosal myomas (the first is "myoma-1"), no intramural or pedunculated
+  /// ones, and the hysteroscopic-myomectomy procedure (the myoma shaved strip by strip).
+  explicit HysteroscopyTemplate(HysteroscopyVariant variant = HysteroscopyVariant::diagnostic)
+      : variant_(variant) {}
+  std::string name() const override;
   std::string description() const override;
   std::string version() const override { return "1"; }
   std::string procedure() const override { return "hysteroscopy"; }
@@ -29,7 +36,7 @@ class HysteroscopyTemplate final : public ScenarioTemplate {
                        core::Progress& progress) const override;
 
  private:
-  bool polypectomy_ = false;
+  HysteroscopyVariant variant_;
 };
 
 }  // namespace viscera::templates

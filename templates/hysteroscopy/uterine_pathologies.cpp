@@ -191,7 +191,29 @@ class Placer {
   std::optional<PlacedPathology> sessile() {
     const double r = 0.5 * drawn(request_.myoma_diameter);
     const WallSite site = wall_->draw(rng_);
+    if (request_.sessile_on_corpus_faces &&
+        (std::abs(site.normal.y()) <= 0.6 || std::abs(site.normal.x()) >= 0.5 ||
+         !room_for_the_sheath(site)))
+      return std::nullopt;
     return sessile_at(site, r);
+  }
+
+  /// True when the cavity is open where a resectoscope shaving a myoma at `site` lies: a
+  /// window 8 mm wide (along u = n × ẑ) and 2.5–6.5 mm above the wall, 6 mm from the site
+  /// towards the cervix (v = n × u), each sampled point at least 0.5 mm from the wall. The
+  /// frame is the one scripts place the tool in (resolve_script_landmarks).
+  bool room_for_the_sheath(const WallSite& site) const {
+    core::Vec3 u = site.normal.cross(core::Vec3::UnitZ());
+    if (u.norm() < 1e-9) u = site.normal.cross(core::Vec3::UnitX());
+    u.normalize();
+    const core::Vec3 v = site.normal.cross(u);
+    for (const double across : {-0.004, -0.002, 0.0, 0.002, 0.004}) {
+      for (const double height : {0.0025, 0.0045, 0.0065}) {
+        const core::Vec3 p = site.position + across * u + 0.006 * v + height * site.normal;
+        if (tissue_.inside(p) || tissue_.closest(p).distance < 0.0005) return false;
+      }
+    }
+    return true;
   }
 
  public:

@@ -28,6 +28,11 @@ struct PathologyRequest {
   double myoma_diameter = 0.008;
   double polyp_length = 0.008;
   double adhesion_radius = 0.0008;
+  /// Sessile myomas only on the anterior and posterior walls of the corpus (wall normal with
+  /// |n_y| > 0.6 and |n_x| < 0.5, y the antero-posterior axis): where a resectoscope from the
+  /// cervix lies beside them, parallel to the wall, to shave them, with the cavity open 6 mm
+  /// from the myoma towards the cervix, where the sheath lies (the myomectomy patient).
+  bool sessile_on_corpus_faces = false;
   double gap = 2e-4;            ///< clearance between a seated pathology and the wall
   double edge_length = 0.0015;  ///< target triangle edge of pathology surfaces
 };

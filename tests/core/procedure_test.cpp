@@ -13,9 +13,10 @@ namespace {
 
 TEST(Procedure, ships_the_procedures_of_issues_8_and_17) {
   EXPECT_EQ(procedure_definition_names(),
-            (std::vector<std::string>{
-                "agent-tissue-lab", "diagnostic-hysteroscopy", "hysteroscopic-polypectomy",
-                "laparoscopic-tubal-sterilisation", "urethral-endoscope-insertion"}));
+            (std::vector<std::string>{"agent-tissue-lab", "diagnostic-hysteroscopy",
+                                      "hysteroscopic-myomectomy", "hysteroscopic-polypectomy",
+                                      "laparoscopic-tubal-sterilisation",
+                                      "urethral-endoscope-insertion"}));
   const ProcedureDefinition& hysteroscopy = procedure_definition("diagnostic-hysteroscopy");
   EXPECT_EQ(hysteroscopy.procedure, "hysteroscopy");
   EXPECT_EQ(hysteroscopy.instrument.kind, "hysteroscope");

@@ -6,14 +6,11 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
+#include <cmath>
 
-#include "core/json_text.h"
 #include "simulator/dynamics/hydrometra_sweep.h"
-#include "simulator/session/headless_session.h"
-#include "simulator/session/instrument_input.h"
 #include "templates/template_catalog.h"
-#include "tests/support/test_paths.h"
+#include "tests/support/operative_session.h"
 
 namespace viscera::sim {
 namespace {
@@ -29,28 +26,14 @@ const core::Scenario& patient() {
 }
 
 SessionReport run_script(const std::string& who) {
-  const std::string file =
-      (testing::source_dir() / ("data/scripts/hysteroscopy-myomectomy-" + who + ".json")).string();
-  const auto json = resolve_script_landmarks(core::read_json_file(file), patient().landmarks, file);
-  const auto input = ScriptedTrajectory::from_json(json, file, 12.0);
-  HeadlessRunOptions options;
-  options.duration = input.duration();
-  options.instrument = &input;
-  options.instrument_body = "uterus";
-  return run_headless(patient(), options);
+  return testing::run_operative_script(patient(), "hysteroscopy-myomectomy-" + who + ".json");
 }
 
 const BodyResection& myoma_of(const SessionReport& r) {
-  const auto& bodies = r.cutting->bodies;
-  return *std::find_if(bodies.begin(), bodies.end(),
-                       [](const auto& b) { return b.body == "myoma-1"; });
+  return testing::resection_of(r, "myoma-1");
 }
 
-std::string task_status(const SessionReport& r, const std::string& id) {
-  for (const auto& t : r.tasks)
-    if (t.id == id) return t.status;
-  return "";
-}
+using testing::task_status;
 
 TEST(MyomectomySession, the_template_gives_a_resectoscope_and_a_sessile_myoma_on_a_corpus_face) {
   const core::Scenario& s = patient();

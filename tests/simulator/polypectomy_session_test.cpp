@@ -9,12 +9,10 @@
 #include <cmath>
 
 #include "core/error.h"
-#include "core/json_text.h"
 #include "simulator/dynamics/hydrometra_sweep.h"
-#include "simulator/session/headless_session.h"
 #include "simulator/session/instrument_input.h"
 #include "templates/template_catalog.h"
-#include "tests/support/test_paths.h"
+#include "tests/support/operative_session.h"
 
 namespace viscera::sim {
 namespace {
@@ -33,28 +31,14 @@ const core::Scenario& patient() {
 }
 
 SessionReport run_script(const std::string& who, const core::Scenario& on = patient()) {
-  const std::string file =
-      (testing::source_dir() / ("data/scripts/hysteroscopy-polypectomy-" + who + ".json")).string();
-  const auto json = resolve_script_landmarks(core::read_json_file(file), on.landmarks, file);
-  const auto input = ScriptedTrajectory::from_json(json, file, 12.0);
-  HeadlessRunOptions options;
-  options.duration = input.duration();
-  options.instrument = &input;
-  options.instrument_body = "uterus";
-  return run_headless(on, options);
+  return testing::run_operative_script(on, "hysteroscopy-polypectomy-" + who + ".json");
 }
 
 const BodyResection& polyp_of(const SessionReport& r) {
-  const auto& bodies = r.cutting->bodies;
-  return *std::find_if(bodies.begin(), bodies.end(),
-                       [](const auto& b) { return b.body == "polyp-1"; });
+  return testing::resection_of(r, "polyp-1");
 }
 
-std::string task_status(const SessionReport& r, const std::string& id) {
-  for (const auto& t : r.tasks)
-    if (t.id == id) return t.status;
-  return "";
-}
+using testing::task_status;
 
 TEST(PolypectomySession, the_template_gives_a_resectoscope_a_polyp_and_its_landmarks) {
   const core::Scenario& s = patient();

@@ -8,6 +8,7 @@
 #include "core/json_eigen.h"
 #include "core/json_numbers.h"
 #include "core/json_text.h"
+#include "core/scenario/landmark_frame.h"
 
 namespace viscera::sim {
 
@@ -29,16 +30,8 @@ nlohmann::json resolve_script_landmarks(const nlohmann::json& script,
     }
     return *it;
   };
-  // A landmark's frame: u across (horizontal when the normal is not vertical), v = n × u, n.
   const auto frame_offset = [](const core::Landmark& mark, const nlohmann::json& abc) {
-    const core::Vec3 n = mark.normal.norm() > 0.0 ? core::Vec3(mark.normal.normalized())
-                                                  : core::Vec3(core::Vec3::UnitZ());
-    core::Vec3 u = n.cross(core::Vec3::UnitZ());
-    if (u.norm() < 1e-6) u = n.cross(core::Vec3::UnitX());
-    u.normalize();
-    const core::Vec3 v = n.cross(u);
-    const auto c = abc.get<core::Vec3>();
-    return core::Vec3(c.x() * u + c.y() * v + c.z() * n);
+    return core::landmark_frame(mark.normal).offset(abc.get<core::Vec3>());
   };
   for (std::size_t i = 0; i < out["waypoints"].size(); ++i) {
     // Directions in a landmark's frame: {"landmark": id, "frame": [a, b, c]}.

@@ -15,31 +15,44 @@
 
 namespace viscera::templates {
 
-std::string HysteroscopyTemplate::name() const {
-  switch (variant_) {
+namespace {
+
+/// What each variant is called, says of itself and embeds as its procedure.
+struct VariantFacts {
+  const char* name;
+  const char* description;
+  const char* procedure;
+};
+
+VariantFacts facts_of(HysteroscopyVariant variant) {
+  switch (variant) {
     case HysteroscopyVariant::polypectomy:
-      return "hysteroscopy-polypectomy";
+      return {"hysteroscopy-polypectomy",
+              "the hysteroscopy patient with at least one endometrial polyp, a resectoscope and "
+              "the hysteroscopic polypectomy procedure",
+              "hysteroscopic-polypectomy"};
     case HysteroscopyVariant::myomectomy:
-      return "hysteroscopy-myomectomy";
+      return {"hysteroscopy-myomectomy",
+              "the hysteroscopy patient with one or two sessile submucosal myomas, a resectoscope "
+              "and the hysteroscopic myomectomy procedure (shaving)",
+              "hysteroscopic-myomectomy"};
     case HysteroscopyVariant::diagnostic:
       break;
   }
-  return "hysteroscopy";
+  return {"hysteroscopy",
+          "uterus with cavity, cervical canal, tubal orifices, endometrium and myometrium, fixed "
+          "cervix, arterial tree and random myomas, polyps and adhesions",
+          "diagnostic-hysteroscopy"};
+}
+
+}  // namespace
+
+std::string HysteroscopyTemplate::name() const {
+  return facts_of(variant_).name;
 }
 
 std::string HysteroscopyTemplate::description() const {
-  switch (variant_) {
-    case HysteroscopyVariant::polypectomy:
-      return "the hysteroscopy patient with at least one endometrial polyp, a resectoscope and "
-             "the hysteroscopic polypectomy procedure";
-    case HysteroscopyVariant::myomectomy:
-      return "the hysteroscopy patient with one or two sessile submucosal myomas, a "
-             "resectoscope and the hysteroscopic myomectomy procedure (shaving)";
-    case HysteroscopyVariant::diagnostic:
-      break;
-  }
-  return "uterus with cavity, cervical canal, tubal orifices, endometrium and myometrium, fixed "
-         "cervix, arterial tree and random myomas, polyps and adhesions";
+  return facts_of(variant_).description;
 }
 
 std::vector<TemplateParameter> HysteroscopyTemplate::parameters() const {
@@ -147,18 +160,6 @@ std::vector<core::VariabilityRule> HysteroscopyTemplate::default_variability() c
 }
 
 namespace {
-
-std::string procedure_of(HysteroscopyVariant variant) {
-  switch (variant) {
-    case HysteroscopyVariant::polypectomy:
-      return "hysteroscopic-polypectomy";
-    case HysteroscopyVariant::myomectomy:
-      return "hysteroscopic-myomectomy";
-    case HysteroscopyVariant::diagnostic:
-      break;
-  }
-  return "diagnostic-hysteroscopy";
-}
 
 UterusDimensions dimensions_of(const ParameterValues& p) {
   UterusDimensions d;
@@ -356,7 +357,7 @@ core::Scenario HysteroscopyTemplate::build(const ParameterValues& p, std::uint64
   scenario.session.contact_stiffness = 500.0;
   // Seed 000 §11: the diagnostic procedure, its tasks referring to the shape's landmarks (the
   // internal and external os, both tubal orifices) and the cavity region of the surface.
-  core::apply_procedure(scenario.session, core::procedure_definition(procedure_of(variant_)));
+  core::apply_procedure(scenario.session, core::procedure_definition(facts_of(variant_).procedure));
   scenario.session.metrics = {"path_length", "economy_of_movement", "wall_contacts", "max_force",
                               "cavity_seen"};
   progress.step();

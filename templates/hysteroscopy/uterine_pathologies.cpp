@@ -10,6 +10,7 @@
 #include "core/primitives/ball_primitive.h"
 #include "core/primitives/icosphere.h"
 #include "core/primitives/pipe_primitive.h"
+#include "core/scenario/landmark_frame.h"
 #include "templates/vessels/vessel_tree_analysis.h"
 
 namespace viscera::templates {
@@ -200,16 +201,13 @@ class Placer {
 
   /// True when the cavity is open where a resectoscope shaving a myoma at `site` lies: a
   /// window 8 mm wide (along u = n × ẑ) and 2.5–6.5 mm above the wall, 6 mm from the site
-  /// towards the cervix (v = n × u), each sampled point at least 0.5 mm from the wall. The
-  /// frame is the one scripts place the tool in (resolve_script_landmarks).
+  /// towards the cervix (v), each sampled point at least 0.5 mm from the wall, in the frame
+  /// scripts place the tool in (core::landmark_frame).
   bool room_for_the_sheath(const WallSite& site) const {
-    core::Vec3 u = site.normal.cross(core::Vec3::UnitZ());
-    if (u.norm() < 1e-9) u = site.normal.cross(core::Vec3::UnitX());
-    u.normalize();
-    const core::Vec3 v = site.normal.cross(u);
+    const core::LandmarkFrame frame = core::landmark_frame(site.normal);
     for (const double across : {-0.004, -0.002, 0.0, 0.002, 0.004}) {
       for (const double height : {0.0025, 0.0045, 0.0065}) {
-        const core::Vec3 p = site.position + across * u + 0.006 * v + height * site.normal;
+        const core::Vec3 p = site.position + frame.offset({across, 0.006, height});
         if (tissue_.inside(p) || tissue_.closest(p).distance < 0.0005) return false;
       }
     }

@@ -13,6 +13,7 @@
 #include "simulator/session/headless_session.h"
 #include "simulator/session/instrument_input.h"
 #include "templates/template_catalog.h"
+#include "tests/bench/session_scripts.h"
 
 namespace {
 
@@ -27,12 +28,7 @@ void BM_MyomectomySessionExpert(benchmark::State& state) {
   const auto json =
       viscera::sim::resolve_script_landmarks(nlohmann::json::parse(in), patient.landmarks, path);
   const auto input = viscera::sim::ScriptedTrajectory::from_json(json, path, 12.0);
-  viscera::sim::HeadlessRunOptions options;
-  options.duration = input.duration();
-  options.instrument = &input;
-  options.instrument_body = input.body();
-  options.instrument_stiffness = input.stiffness();
-  options.force_warning = input.force_warning();
+  const auto options = viscera::bench::scripted_run(input, input.duration());
   double simulated = 0.0, wall = 0.0;
   for (auto _ : state) {
     const auto report = viscera::sim::run_headless(patient, options);

@@ -79,5 +79,41 @@ TEST(MyomectomySession, the_expert_shaves_the_myoma_in_layers_and_the_novice_lea
   }
 }
 
+TEST(MyomectomySession, strips_through_the_myomas_feeding_artery_bleed_cloud_the_view_and_count) {
+  // Issue 18's session: the same patient with an artery of 0.4 mm radius up the myoma's axis
+  // (`--set pathology_artery_radius=0.0004`). The expert's strips open it; the arterial
+  // pressure (85 mmHg) exceeds the cavity's, so it bleeds while the cavity is distended.
+  core::Scenario bleeding = templates::build_from_template(
+      "hysteroscopy-myomectomy", {{"pathology_artery_radius", "0.0004"}}, 1);
+  add_hydrometra_states(bleeding);
+  const SessionReport r =
+      testing::run_operative_script(bleeding, "hysteroscopy-myomectomy-expert.json");
+  ASSERT_TRUE(r.bleeding.has_value() && r.fluid.has_value() && r.cavity_flow.has_value());
+  int artery_openings = 0;
+  double bled = 0.0;
+  for (const auto& source : *r.bleeding) {
+    bled += source.bled;
+    if (source.capillary) continue;
+    EXPECT_EQ(source.vessel_tree, "myoma-1-artery");
+    EXPECT_GT(source.bled, 0.0);
+    ++artery_openings;
+  }
+  // Each layer's strips meet the artery again: more than one episode from it.
+  EXPECT_GE(artery_openings, 2);
+  EXPECT_GT(bled, 1e-6);  // m³: over a millilitre
+  EXPECT_NEAR(r.fluid->bled, bled, 1e-12 * bled);
+  // The blood enters the flow and clouds the optics for a while.
+  EXPECT_NEAR(r.cavity_flow->blood_released, bled, 1e-9 * bled);
+  EXPECT_LT(r.cavity_flow->lowest_transmission, 0.5);
+  EXPECT_GT(r.cavity_flow->view_obscured_time, 1.0);
+  // The deficit the pump shows (used − drained) is followed over the session.
+  ASSERT_GE(r.fluid_series.size(), 10u);
+  EXPECT_GT(r.fluid->used, 0.0);
+  // Without the artery the same script bleeds only capillary ooze, held back by the pressure.
+  const SessionReport dry = run_script("expert");
+  ASSERT_TRUE(dry.fluid.has_value());
+  EXPECT_LT(dry.fluid->bled, 0.01 * bled);
+}
+
 }  // namespace
 }  // namespace viscera::sim

@@ -83,22 +83,47 @@ CutSurface swept_loop_surface(const LoopElectrode& loop, const std::vector<LoopP
                      std::to_string(travel) + " m of " + describe(sweep.front().position) +
                      "), so it sweeps no cut surface");
   }
-  CutSurface surface;
-  const int row = loop.segments + 1;
-  for (const LoopPose& pose : sweep) {
-    for (const Vec3& p : loop_points(loop, pose))
-      surface.vertices.push_back(p);
+  std::vector<std::vector<Vec3>> wires;
+  wires.reserve(sweep.size());
+  for (const LoopPose& pose : sweep)
+    wires.push_back(loop_points(loop, pose));
+  return swept_wire_surface(wires);
+}
+
+CutSurface swept_wire_surface(const std::vector<std::vector<Vec3>>& samples) {
+  if (samples.size() < 2) {
+    throw InputError("the electrode's sweep has " + std::to_string(samples.size()) +
+                     " sample(s); a cut needs the wire at two or more places along its path");
   }
-  for (int k = 0; k + 1 < static_cast<int>(sweep.size()); ++k) {
-    for (int i = 0; i < loop.segments; ++i) {
-      const int a = k * row + i;
-      add_quad(surface, a, a + 1, a + 1 + row, a + row);
+  const std::size_t row = samples.front().size();
+  if (row < 2) throw InputError("the electrode's wire has fewer than two points");
+  CutSurface surface;
+  surface.vertices.reserve(row * samples.size());
+  for (std::size_t k = 0; k < samples.size(); ++k) {
+    if (samples[k].size() != row) {
+      throw InputError("sample " + std::to_string(k) + " of the electrode's sweep has " +
+                       std::to_string(samples[k].size()) + " wire points, the first has " +
+                       std::to_string(row));
+    }
+    for (const Vec3& p : samples[k]) {
+      if (!finite(p)) {
+        throw InputError("sample " + std::to_string(k) +
+                         " of the electrode's sweep has a non-finite wire point");
+      }
+      surface.vertices.push_back(p);
+    }
+  }
+  const int r = static_cast<int>(row);
+  for (int k = 0; k + 1 < static_cast<int>(samples.size()); ++k) {
+    for (int i = 0; i + 1 < r; ++i) {
+      const int a = k * r + i;
+      add_quad(surface, a, a + 1, a + 1 + r, a + r);
     }
   }
   if (surface.triangles.empty()) {
     throw InputError(
-        "the loop sweep moves the loop only within its own wire, so it sweeps no "
-        "cut surface");
+        "the electrode's sweep moves the wire only within its own line, so it sweeps no cut "
+        "surface");
   }
   return surface;
 }

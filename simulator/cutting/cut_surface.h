@@ -44,6 +44,12 @@ std::vector<core::Vec3> loop_points(const LoopElectrode& loop, const LoopPose& p
 /// the radius of each other).
 CutSurface swept_loop_surface(const LoopElectrode& loop, const std::vector<LoopPose>& sweep);
 
+/// The surface swept by a wire through its samples (in order): a ruled strip between the wire's
+/// polyline at consecutive samples (an electrosurgical hook, or any electrode whose shape is not
+/// the loop's). Throws InputError for fewer than two samples, a wire of fewer than two points,
+/// samples of different point counts, a non-finite point, or samples that sweep no area.
+CutSurface swept_wire_surface(const std::vector<std::vector<core::Vec3>>& samples);
+
 /// A planar rectangle centred at `center` with unit `normal` ("+" side), half extents in m
 /// along two in-plane axes (the first is `u_axis` made orthogonal to the normal), split into
 /// divisions × divisions quads. Throws InputError for non-finite input, a zero normal, a u_axis

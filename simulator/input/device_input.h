@@ -25,8 +25,8 @@ inline constexpr std::uint32_t kDeviceCoagulationPedal = 4U;
 /// Bit of DevicePose::buttons for the laparoscopic tool's handle: set while the jaws are closed.
 inline constexpr std::uint32_t kDeviceJawsClosed = 8U;
 /// Bits 4–6 of DevicePose::buttons: the laparoscopic tool in the working port, as the index of
-/// LaparoscopicTool (0 none, 1 grasper, 2 clip applier, 3 scissors, 4 bipolar, 5 suction; 6 and
-/// 7 leave the tool as it was).
+/// LaparoscopicTool (0 none, 1 grasper, 2 clip applier, 3 scissors, 4 bipolar, 5 suction, 6 hook;
+/// 7 leaves the tool as it was).
 inline constexpr int kDeviceToolShift = 4;
 inline constexpr std::uint32_t kDeviceToolMask = 7U << kDeviceToolShift;
 /// Bit 7 of DevicePose::buttons: set while the suction–irrigation cannula's irrigation valve is

@@ -7,8 +7,8 @@
 namespace viscera::sim {
 namespace {
 
-constexpr std::array<std::string_view, 6> kToolNames = {"none",     "grasper", "clip-applier",
-                                                        "scissors", "bipolar", "suction"};
+constexpr std::array<std::string_view, 7> kToolNames = {
+    "none", "grasper", "clip-applier", "scissors", "bipolar", "suction", "hook"};
 
 double radians(double degrees) {
   return degrees * std::numbers::pi / 180.0;

@@ -22,13 +22,16 @@ enum class LaparoscopicTool : std::uint8_t {
   Bipolar,
   /// a suction–irrigation cannula: "closing" opens its suction valve, `irrigating` its
   /// irrigation valve (two trumpet valves, as real ones)
-  Suction
+  Suction,
+  /// a monopolar L-hook: the cutting pedal (`electrode`) cuts what its wire sweeps through, the
+  /// coagulation pedal coagulates what the wire touches (electrosurgical_hook.h)
+  Hook
 };
 /// The last tool, for cycling through them.
-inline constexpr LaparoscopicTool kLastLaparoscopicTool = LaparoscopicTool::Suction;
+inline constexpr LaparoscopicTool kLastLaparoscopicTool = LaparoscopicTool::Hook;
 
-/// "none", "grasper", "clip-applier", "scissors", "bipolar", "suction": the names scripts, traces
-/// and the procedures' task parameters use.
+/// "none", "grasper", "clip-applier", "scissors", "bipolar", "suction", "hook": the names scripts,
+/// traces and the procedures' task parameters use.
 std::string_view tool_name(LaparoscopicTool tool);
 /// The tool of that name, or nullopt.
 std::optional<LaparoscopicTool> tool_from_name(std::string_view name);

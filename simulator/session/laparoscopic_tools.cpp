@@ -86,6 +86,7 @@ double coagulated_length(const World& world, int body, const std::vector<core::V
 
 core::Vec3 hinge(const InstrumentState& state, const LaparoscopicToolOptions& options) {
   if (state.tool == LaparoscopicTool::None) return state.tip;
+  if (state.tool == LaparoscopicTool::Hook) return hook_touch_point(state, options.hook);
   return state.tip - options.jaw_length * state.axis;
 }
 
@@ -113,7 +114,7 @@ core::Vec3 local_axis(const World& world, int body, const core::Vec3& point, dou
 }
 
 LaparoscopicTools::LaparoscopicTools(World& world, LaparoscopicToolOptions options)
-    : options_(options) {
+    : options_(options), hook_(options.hook) {
   for (const auto& model : world.models()) {
     if (model->kind == BodyModelKind::CellAgent || model->mesh.tets.empty()) continue;
     bodies_.push_back(model->body);
@@ -176,6 +177,34 @@ std::vector<NodeReference> LaparoscopicTools::tissue_between_jaws(const World& w
   return out;
 }
 
+std::vector<NodeReference> LaparoscopicTools::tissue_at_hook(const World& world,
+                                                             const InstrumentState& state) const {
+  const SimulationState& s = world.state();
+  const double reach = options_.hook.coagulation_reach;
+  int body = -1;
+  double nearest = reach;
+  std::vector<NodeReference> out;
+  for (const int b : bodies_) {
+    const BodyNodes& range = s.body(b);
+    for (int n = 0; n < range.count; ++n) {
+      const auto g = static_cast<std::size_t>(range.first + n);
+      if (s.inverse_masses[g] == 0.0) continue;
+      const double d = distance_to_hook(s.positions[g], state, options_.hook);
+      if (d <= nearest) nearest = d, body = b;
+    }
+  }
+  if (body < 0) return out;
+  // One body, the one the wire touches most closely: its knots within reach of the wire.
+  const BodyNodes& range = s.body(body);
+  for (int n = 0; n < range.count; ++n) {
+    const auto g = static_cast<std::size_t>(range.first + n);
+    if (s.inverse_masses[g] != 0.0 &&
+        distance_to_hook(s.positions[g], state, options_.hook) <= reach)
+      out.push_back(reference_node(s, body, n));
+  }
+  return out;
+}
+
 void LaparoscopicTools::follow(const InstrumentState& state, World& world, double time, double dt,
                                LaparoscopySummary& summary, std::vector<SessionEvent>& events) {
   if (first_) {
@@ -214,7 +243,13 @@ void LaparoscopicTools::follow(const InstrumentState& state, World& world, doubl
   }
   coagulating_at_.reset();
   if (state.tool == LaparoscopicTool::Bipolar && state.jaws_closed && state.coagulation)
-    heat(state, world, time, dt, summary, events);
+    heat(tissue_between_jaws(world, state, options_.jaw_width), world, time, dt, summary, events);
+  if (state.tool == LaparoscopicTool::Hook && state.coagulation)
+    heat(tissue_at_hook(world, state), world, time, dt, summary, events);
+  if (auto sweep = hook_.follow(state)) cut_with_hook(*sweep, world, time, summary, events);
+  // Cutting current vaporises the tissue at the wire: the plume rises from there as well.
+  if (hook_.recording() && !coagulating_at_ && !tissue_at_hook(world, state).empty())
+    coagulating_at_ = state.tip;
   const core::Vec3 up = world.gravity().norm() > 0.0 ? core::Vec3(-world.gravity().normalized())
                                                      : core::Vec3(core::Vec3::UnitZ());
   smoke_.step(time, dt, coagulating_at_, up, state.tip);
@@ -250,6 +285,7 @@ void LaparoscopicTools::close_jaws(const InstrumentState& state, World& world, d
       return;
     case LaparoscopicTool::Bipolar:
     case LaparoscopicTool::Suction:
+    case LaparoscopicTool::Hook:
     case LaparoscopicTool::None:
       return;
   }
@@ -320,27 +356,49 @@ void LaparoscopicTools::cut(const InstrumentState& state, World& world, double t
   const core::Vec3 spread = options_.scissor_spread * state.up;
   const cutting::CutSurface blades =
       cutting::scissor_cut_surface(hinge(state, options_), state.tip + spread, state.tip - spread);
+  core::Vec3 centre = core::Vec3::Zero();
+  for (const NodeReference& r : between)
+    centre += world.state().positions[static_cast<std::size_t>(r.global(world.state()))] /
+              static_cast<double>(between.size());
+  if (!cut_through(body, blades, centre, "scissors", world, time, summary, events)) {
+    const std::string& name = world.models()[static_cast<std::size_t>(body)]->name;
+    events.push_back({time, "cut-missed", "the scissors closed on " + name + " but cut no tet"});
+  }
+}
+
+void LaparoscopicTools::cut_with_hook(const cutting::CutSurface& sweep, World& world, double time,
+                                      LaparoscopySummary& summary,
+                                      std::vector<SessionEvent>& events) {
+  core::Vec3 centre = core::Vec3::Zero();
+  for (const core::Vec3& p : sweep.vertices)
+    centre += p / static_cast<double>(sweep.vertices.size());
+  bool cut_any = false;
+  for (const int body : bodies_)
+    cut_any = cut_through(body, sweep, centre, "hook", world, time, summary, events) || cut_any;
+  if (!cut_any)
+    events.push_back({time, "cut-missed", "the hook's cutting current swept through no tissue"});
+}
+
+bool LaparoscopicTools::cut_through(int body, const cutting::CutSurface& surface,
+                                    const core::Vec3& centre, const char* tool, World& world,
+                                    double time, LaparoscopySummary& summary,
+                                    std::vector<SessionEvent>& events) {
   const BodyModel& model = *world.models()[static_cast<std::size_t>(body)];
   const auto positions = world.state().range(world.state().positions, body);
   const std::vector<core::Vec3> current(positions.begin(), positions.end());
   const auto old_rest_span = world.state().range(world.state().rest_positions, body);
   const std::vector<core::Vec3> old_rest(old_rest_span.begin(), old_rest_span.end());
-  ScissorCut record;
+  TissueCut record;
   record.time = time;
+  record.tool = tool;
   record.body = model.name;
-  for (const NodeReference& r : between)
-    record.position +=
-        current[static_cast<std::size_t>(r.node)] / static_cast<double>(between.size());
+  record.position = centre;
   record.pieces_before = piece_count(world, body);
   const auto start = std::chrono::steady_clock::now();
   const cutting::TopologyChange change = visible_ != nullptr
-                                             ? visible_->cut(body, model.mesh, current, blades, {})
-                                             : cutting::hybrid_cut(model.mesh, current, blades);
-  if (!change.changed) {
-    events.push_back(
-        {time, "cut-missed", "the scissors closed on " + model.name + " but cut no tet"});
-    return;
-  }
+                                             ? visible_->cut(body, model.mesh, current, surface, {})
+                                             : cutting::hybrid_cut(model.mesh, current, surface);
+  if (!change.changed) return false;
   world.topology_changed(body, topology_of_cut(change, world.held_nodes(body)));
   record.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   record.tets_traversed = change.statistics.tets_traversed;
@@ -366,16 +424,17 @@ void LaparoscopicTools::cut(const InstrumentState& state, World& world, double t
   }
   summary.cuts.push_back(record);
   if (cut_observer_) cut_observer_(body, change, time);
-  events.push_back({time, "scissors-cut",
-                    "the scissors cut " + model.name + " (" +
+  events.push_back({time, std::string(tool) + "-cut",
+                    "the " + std::string(tool) + " cut " + model.name + " (" +
                         std::to_string(record.tets_traversed) + " tets traversed" +
                         (record.separated() ? ", divided it" : ", not through") +
                         (record.between_clips ? ", between two clips)" : ")")});
+  return true;
 }
 
-void LaparoscopicTools::heat(const InstrumentState& state, World& world, double time, double dt,
-                             LaparoscopySummary& summary, std::vector<SessionEvent>& events) {
-  const auto between = tissue_between_jaws(world, state, options_.jaw_width);
+void LaparoscopicTools::heat(const std::vector<NodeReference>& between, World& world, double time,
+                             double dt, LaparoscopySummary& summary,
+                             std::vector<SessionEvent>& events) {
   if (between.empty()) return;
   summary.coagulation_time += dt;
   const int body = between[0].body;

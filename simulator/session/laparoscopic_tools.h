@@ -23,6 +23,11 @@
 ///   `suction_reach` m of its tip (seed 001 §4.3: suction "removes" smoke). It is a suction–
 ///   irrigation cannula: its irrigation jet and the pool its suction also draws off are
 ///   SuctionIrrigation's (suction_irrigation.h), which the session runs beside the tools.
+/// - Hook: a monopolar L-hook (electrosurgical_hook.h). With the cutting pedal down its wire's
+///   sweep is recorded and, when the current stops, cut through every body it crosses (the
+///   hybrid cut, as the scissors); with the coagulation pedal down it heats the knots its wire
+///   touches as the bipolar forceps heat those between their jaws. It touches tissue with its
+///   bend, or under cutting current with the shaft behind the bare wire (hook_touch_point).
 /// - Every tool: coagulation raises smoke from the tissue between the jaws and steams the lens
 ///   at the instrument's tip (SurgicalSmoke).
 /// - Bipolar forceps: with the jaws closed and the coagulation pedal down, the knots between
@@ -44,6 +49,7 @@
 #include "simulator/cutting/topology_change.h"
 #include "simulator/dynamics/clip_term.h"
 #include "simulator/dynamics/grasp_term.h"
+#include "simulator/session/electrosurgical_hook.h"
 #include "simulator/session/instrument_state.h"
 #include "simulator/session/laparoscopy_summary.h"
 #include "simulator/session/session_report.h"
@@ -74,6 +80,7 @@ struct LaparoscopicToolOptions {
   double coagulation_dose = 1.0;       ///< s of bipolar current that coagulates a knot
   double coagulated_stiffening = 2.0;  ///< factor on the springs between coagulated knots
   double coagulated_shrinkage = 0.05;  ///< fraction their rest length shortens
+  HookOptions hook;                    ///< the monopolar L-hook's wire and sweep
 };
 
 class LaparoscopicTools {
@@ -118,6 +125,9 @@ class LaparoscopicTools {
   /// The knots between the jaws at `state`: body-local nodes of one body (empty when none).
   std::vector<NodeReference> tissue_between_jaws(const World& world, const InstrumentState& state,
                                                  double width) const;
+  /// The knots within the hook's coagulation reach of its wire at `state`: nodes of the one
+  /// body the wire touches most closely (empty when none is within reach).
+  std::vector<NodeReference> tissue_at_hook(const World& world, const InstrumentState& state) const;
 
  private:
   void close_jaws(const InstrumentState& state, World& world, double time,
@@ -126,7 +136,15 @@ class LaparoscopicTools {
                   LaparoscopySummary& summary, std::vector<SessionEvent>& events);
   void cut(const InstrumentState& state, World& world, double time, LaparoscopySummary& summary,
            std::vector<SessionEvent>& events);
-  void heat(const InstrumentState& state, World& world, double time, double dt,
+  void cut_with_hook(const cutting::CutSurface& sweep, World& world, double time,
+                     LaparoscopySummary& summary, std::vector<SessionEvent>& events);
+  /// Cuts `body` along `surface` by `tool` ("scissors", "hook") and records the cut: false when
+  /// the surface crosses none of its tets.
+  bool cut_through(int body, const cutting::CutSurface& surface, const core::Vec3& centre,
+                   const char* tool, World& world, double time, LaparoscopySummary& summary,
+                   std::vector<SessionEvent>& events);
+  /// Heats `between` (nodes of one body) for `dt` s: coagulates the knots that had their dose.
+  void heat(const std::vector<NodeReference>& between, World& world, double time, double dt,
             LaparoscopySummary& summary, std::vector<SessionEvent>& events);
   /// Stiffens and shortens the springs whose both knots are coagulated (after any change of
   /// the set or of the body's topology).
@@ -150,6 +168,7 @@ class LaparoscopicTools {
   CoagulationObserver coagulation_observer_;
   CutObserver cut_observer_;
   VisibleSurfaces* visible_ = nullptr;
+  HookSweep hook_;
 };
 
 /// Where a tool with jaws touches tissue: the hinge, `jaw_length` m behind the tip along the

@@ -24,8 +24,9 @@ nlohmann::json laparoscopy_json(const LaparoscopySummary& s, double blood_loss) 
                      {"gap", c.gap}});
   }
   nlohmann::json cuts = nlohmann::json::array();
-  for (const ScissorCut& c : s.cuts) {
+  for (const TissueCut& c : s.cuts) {
     cuts.push_back({{"time", c.time},
+                    {"tool", c.tool},
                     {"body", c.body},
                     {"position", c.position},
                     {"tets_traversed", c.tets_traversed},

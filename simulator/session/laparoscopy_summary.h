@@ -30,11 +30,14 @@ struct ClipPlacement {
 };
 
 /// One closing of the scissors on tissue.
-struct ScissorCut {
+/// A cut by the scissors (closing blades) or the hook (cutting current along its sweep).
+struct TissueCut {
   double time = 0.0;  ///< s
+  std::string tool;   ///< "scissors" or "hook"
   std::string body;
-  core::Vec3 position = core::Vec3::Zero();  ///< m, centre of the tissue between the blades
-  int pieces_before = 1, pieces_after = 1;   ///< connected components of the body
+  /// m, centre of the tissue between the blades, or of the hook's sweep
+  core::Vec3 position = core::Vec3::Zero();
+  int pieces_before = 1, pieces_after = 1;  ///< connected components of the body
   int tets_traversed = 0;
   /// The cut lies between two secure clips on the same body (along the line joining them).
   bool between_clips = false;
@@ -58,7 +61,7 @@ struct LaparoscopySummary {
   int grasps = 0;                 ///< closings of the grasper that held tissue
   int knots_torn_out = 0;         ///< held knots that tore out of the jaws
   double max_grasp_force = 0.0;   ///< N, the tissue's largest pull on the jaws
-  double coagulation_time = 0.0;  ///< s with current through tissue between bipolar jaws
+  double coagulation_time = 0.0;  ///< s of coagulating current through tissue (bipolar, hook)
   double smoke_time = 0.0;        ///< s with the field visibly smoky (SurgicalSmoke)
   double peak_lens_fog = 0.0;     ///< 0…1, the most the lens steamed up
   int smoke_puffs = 0;
@@ -71,7 +74,7 @@ struct LaparoscopySummary {
   double pool_volume = 0.0;
   double pool_blood_fraction = 0.0;
   std::vector<ClipPlacement> clips;
-  std::vector<ScissorCut> cuts;
+  std::vector<TissueCut> cuts;
   std::vector<CoagulatedTissue> coagulated;
   std::map<std::string, double> path_per_tool;  ///< m of tip travel with each tool in the port
 

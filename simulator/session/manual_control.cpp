@@ -22,21 +22,35 @@ ManualControl::ManualControl(const InstrumentState& start, ManualRates rates)
 }
 
 std::optional<ManualCommand> ManualControl::command_for_key(const std::string& key) {
-  static const std::map<std::string, ManualCommand> keys = {
-      {"w", ManualCommand::Advance},          {"Up", ManualCommand::Advance},
-      {"s", ManualCommand::Withdraw},         {"Down", ManualCommand::Withdraw},
-      {"a", ManualCommand::SwingLeft},        {"Left", ManualCommand::SwingLeft},
-      {"d", ManualCommand::SwingRight},       {"Right", ManualCommand::SwingRight},
-      {"r", ManualCommand::SwingUp},          {"f", ManualCommand::SwingDown},
-      {"q", ManualCommand::RollLeft},         {"e", ManualCommand::RollRight},
-      {"i", ManualCommand::ToggleInflow},     {"o", ManualCommand::ToggleOutflow},
-      {"t", ManualCommand::ExtendLoop},       {"g", ManualCommand::RetractLoop},
-      {"space", ManualCommand::CuttingPedal}, {"c", ManualCommand::CoagulationPedal},
-      {"j", ManualCommand::CloseJaws},        {"l", ManualCommand::Irrigate},
-      {"0", ManualCommand::ToolNone},         {"1", ManualCommand::ToolGrasper},
-      {"2", ManualCommand::ToolClipApplier},  {"3", ManualCommand::ToolScissors},
-      {"4", ManualCommand::ToolBipolar},      {"5", ManualCommand::ToolSuction},
-      {"Escape", ManualCommand::Abort},       {"x", ManualCommand::Abort}};
+  static const std::map<std::string, ManualCommand> keys = {{"w", ManualCommand::Advance},
+                                                            {"Up", ManualCommand::Advance},
+                                                            {"s", ManualCommand::Withdraw},
+                                                            {"Down", ManualCommand::Withdraw},
+                                                            {"a", ManualCommand::SwingLeft},
+                                                            {"Left", ManualCommand::SwingLeft},
+                                                            {"d", ManualCommand::SwingRight},
+                                                            {"Right", ManualCommand::SwingRight},
+                                                            {"r", ManualCommand::SwingUp},
+                                                            {"f", ManualCommand::SwingDown},
+                                                            {"q", ManualCommand::RollLeft},
+                                                            {"e", ManualCommand::RollRight},
+                                                            {"i", ManualCommand::ToggleInflow},
+                                                            {"o", ManualCommand::ToggleOutflow},
+                                                            {"t", ManualCommand::ExtendLoop},
+                                                            {"g", ManualCommand::RetractLoop},
+                                                            {"space", ManualCommand::CuttingPedal},
+                                                            {"c", ManualCommand::CoagulationPedal},
+                                                            {"j", ManualCommand::CloseJaws},
+                                                            {"l", ManualCommand::Irrigate},
+                                                            {"0", ManualCommand::ToolNone},
+                                                            {"1", ManualCommand::ToolGrasper},
+                                                            {"2", ManualCommand::ToolClipApplier},
+                                                            {"3", ManualCommand::ToolScissors},
+                                                            {"4", ManualCommand::ToolBipolar},
+                                                            {"5", ManualCommand::ToolSuction},
+                                                            {"6", ManualCommand::ToolHook},
+                                                            {"Escape", ManualCommand::Abort},
+                                                            {"x", ManualCommand::Abort}};
   const auto it = keys.find(key);
   if (it == keys.end()) return std::nullopt;
   return it->second;
@@ -46,7 +60,8 @@ std::string ManualControl::bindings_text() {
   return "W/S or Up/Down: advance/withdraw   A/D or Left/Right: swing left/right\n"
          "R/F: swing up/down   Q/E: roll the optics   I/O: inflow/outflow valve\n"
          "T/G: extend/retract the loop   Space: cutting pedal   C: coagulation pedal\n"
-         "1 grasper  2 clip applier  3 scissors  4 bipolar  5 suction  0 none   J: jaws/suction\n"
+         "1 grasper  2 clip applier  3 scissors  4 bipolar  5 suction  6 hook  0 none\n"
+         "J: jaws/suction   Space with the hook: cutting current   C: coagulating current\n"
          "L: irrigation (lavage) valve of the suction–irrigation cannula\n"
          "Left-drag: swing the shaft   Wheel: advance/withdraw   Esc or X: abort";
 }
@@ -62,7 +77,7 @@ void ManualControl::press(ManualCommand command) {
     state_.jaws_closed = true;
   } else if (command == ManualCommand::Irrigate) {
     state_.irrigating = true;
-  } else if (command >= ManualCommand::ToolNone && command <= ManualCommand::ToolSuction) {
+  } else if (command >= ManualCommand::ToolNone && command <= ManualCommand::ToolHook) {
     // Switching opens the jaws and shuts the irrigation valve: a tool comes in through the port
     // with them open and its valves shut.
     state_.tool = static_cast<LaparoscopicTool>(static_cast<int>(command) -

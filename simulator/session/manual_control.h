@@ -37,7 +37,8 @@ enum class ManualCommand {
   ToolScissors,      ///< scissors
   ToolBipolar,       ///< bipolar forceps
   ToolSuction,       ///< a suction cannula
-  NextTool,          ///< the next tool in the order above (after bipolar: none)
+  ToolHook,          ///< a monopolar L-hook
+  NextTool,          ///< the next tool in the order above (after the hook: none)
   PreviousTool,      ///< the previous one
   Abort              ///< the trainee ends the session
 };

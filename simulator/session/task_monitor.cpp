@@ -16,7 +16,8 @@ const std::set<std::string> kDetectedKinds = {
     "reach", "centre-target", "inspect-surface", "withdraw", "touch", "settle", "resect"};
 /// Kinds detected when the working port carries the laparoscopic tools (LaparoscopicTools).
 const std::set<std::string> kToolKinds = {"grasp", "clip", "coagulate", "cut"};
-const std::set<std::string> kLaparoscopicTools = {"grasper", "clip-applier", "scissors", "bipolar"};
+const std::set<std::string> kLaparoscopicTools = {"grasper", "clip-applier", "scissors", "bipolar",
+                                                  "hook"};
 const std::set<std::string> kSimulatedTools = {"hysteroscope",        "cystoscope",   "laparoscope",
                                                "resectoscope-optics", "resectoscope", "probe"};
 
@@ -172,10 +173,14 @@ bool TaskMonitor::tool_task_holds(const TaskContext& c) {
     track_best(coagulated->length, false);
     return at_site && coagulated->length >= parameter(spec_, "length", 0.004);
   }
-  // cut: divided the object near the site, between two secure clips when the task says so.
+  // cut: divided the object near the site, between two secure clips when the task says so, by
+  // the tool it names (any cutting tool when it names none).
   const bool between = spec_.parameters.value("between_clips", false);
-  for (const ScissorCut& cut : tools.cuts)
-    if (cut.body == object && cut.separated() && (!between || cut.between_clips)) return true;
+  const std::string tool = spec_.parameters.value("tool", std::string());
+  for (const TissueCut& cut : tools.cuts)
+    if (cut.body == object && cut.separated() && (!between || cut.between_clips) &&
+        (tool.empty() || cut.tool == tool))
+      return true;
   return false;
 }
 

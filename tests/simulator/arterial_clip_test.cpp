@@ -9,23 +9,13 @@
 
 #include "simulator/session/headless_session.h"
 #include "simulator/session/instrument_input.h"
-#include "templates/template_catalog.h"
+#include "tests/support/object_alone.h"
 
 namespace viscera::sim {
 namespace {
 
 const core::Scenario& artery_patient() {
-  static const core::Scenario s = [] {
-    core::Scenario p = templates::build_from_template("laparoscopy-gyn", {}, 1);
-    const std::string id = "artery-uterine-left";
-    std::erase_if(p.objects, [&](const auto& o) { return o.id != id; });
-    std::erase_if(p.vessel_trees, [&](const auto& t) { return t.host_object != id; });
-    std::erase_if(p.active_deformations, [&](const auto& d) { return d.target_object != id; });
-    p.connections.clear();
-    p.session.steps.clear();
-    p.session.tasks.clear();
-    return p;
-  }();
+  static const core::Scenario s = testing::object_alone("laparoscopy-gyn", "artery-uterine-left");
   return s;
 }
 

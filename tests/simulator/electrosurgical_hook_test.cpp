@@ -14,25 +14,15 @@
 #include "simulator/cutting/cut_surface.h"
 #include "simulator/session/headless_session.h"
 #include "simulator/session/instrument_input.h"
-#include "templates/template_catalog.h"
+#include "tests/support/object_alone.h"
 
 namespace viscera::sim {
 namespace {
 
 const core::Scenario& artery_patient() {
-  static const core::Scenario s = [] {
-    // Vessels of 1.5 mm radius (the template's lowest): the hook's 4 mm arm reaches across.
-    core::Scenario p =
-        templates::build_from_template("laparoscopy-gyn", {{"vessel_radius", "0.0015"}}, 1);
-    const std::string id = "artery-uterine-left";
-    std::erase_if(p.objects, [&](const auto& o) { return o.id != id; });
-    std::erase_if(p.vessel_trees, [&](const auto& t) { return t.host_object != id; });
-    std::erase_if(p.active_deformations, [&](const auto& d) { return d.target_object != id; });
-    p.connections.clear();
-    p.session.steps.clear();
-    p.session.tasks.clear();
-    return p;
-  }();
+  // Vessels of 1.5 mm radius (the template's lowest): the hook's 4 mm arm reaches across.
+  static const core::Scenario s = testing::object_alone("laparoscopy-gyn", "artery-uterine-left",
+                                                        {{"vessel_radius", "0.0015"}});
   return s;
 }
 

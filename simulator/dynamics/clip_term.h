@@ -45,6 +45,8 @@ class ClipTerm : public ForceTerm {
 
   /// The jaws start closing at `placed_at` s and are closed `closing_time` s later (0: at once).
   void close_over(double placed_at, double closing_time);
+  /// The jaws are still closing.
+  bool drives() const override { return current_stiffness_ < stiffness_; }
   const std::vector<NodeReference>& nodes() const { return nodes_; }
   const Vec3& closing_direction() const { return direction_; }
   /// Centroid of the clipped nodes at x, m: where the clip sits.

@@ -55,6 +55,9 @@ class ForceTerm {
   virtual double worst_case_node_stiffness() const { return 0.0; }
   /// Global nodes to which worst_case_node_stiffness() applies (empty: none).
   virtual std::span<const int> worst_case_nodes() const { return {}; }
+  /// True while the term moves what it acts on from outside the state (a grasper's jaws, a clip
+  /// still closing): a world with such a term neither falls asleep nor stays asleep.
+  virtual bool drives() const { return false; }
 };
 
 }  // namespace viscera::sim

@@ -45,6 +45,8 @@ class GraspTerm : public ForceTerm {
   void move_jaws(const Vec3& tip, const core::Mat3& rotation);
 
   bool holding() const { return !held_.empty(); }
+  /// The jaws move the knots they hold.
+  bool drives() const override { return holding(); }
   const std::vector<NodeReference>& held() const { return held_; }
   /// Force of the tissue on the jaws, N, at positions x.
   Vec3 force_on_jaws(std::span<const Vec3> x) const;

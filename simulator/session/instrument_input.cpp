@@ -154,7 +154,7 @@ ScriptedTrajectory ScriptedTrajectory::from_json(const nlohmann::json& json,
         if (!tool)
           fail(pointer + "/tool",
                "tool must be one of \"none\", \"grasper\", \"clip-applier\", \"scissors\", "
-               "\"bipolar\", \"suction\"");
+               "\"bipolar\", \"suction\", \"hook\"");
         s.tool = *tool;
       }
       if (w.contains("close")) {

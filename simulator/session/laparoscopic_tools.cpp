@@ -11,6 +11,7 @@
 #include "simulator/cutting/cut_surface.h"
 #include "simulator/cutting/fragments.h"
 #include "simulator/cutting/hybrid_cut.h"
+#include "simulator/dynamics/agent_tissue_term.h"
 #include "simulator/dynamics/kismo_spring_term.h"
 #include "simulator/session/cut_topology.h"
 
@@ -116,9 +117,14 @@ core::Vec3 local_axis(const World& world, int body, const core::Vec3& point, dou
 LaparoscopicTools::LaparoscopicTools(World& world, LaparoscopicToolOptions options)
     : options_(options), hook_(options.hook) {
   for (const auto& model : world.models()) {
-    if (model->kind == BodyModelKind::CellAgent || model->mesh.tets.empty()) continue;
-    bodies_.push_back(model->body);
+    if (model->kind == BodyModelKind::CellAgent) continue;
+    if (!model->mesh.tets.empty()) bodies_.push_back(model->body);
   }
+  for (const auto& term : world.terms())
+    if (auto* agents = dynamic_cast<AgentTissueTerm*>(term.get())) agents_.push_back(agents);
+  touchable_ = bodies_;
+  for (const AgentTissueTerm* agents : agents_)
+    touchable_.push_back(agents->model().body);
   const std::size_t count = world.models().size();
   dose_.resize(count);
   coagulated_.resize(count);
@@ -142,7 +148,7 @@ std::vector<NodeReference> LaparoscopicTools::tissue_between_jaws(const World& w
     double across, distance;
   };
   std::vector<Candidate> inside;
-  for (const int b : bodies_) {
+  for (const int b : touchable_) {
     const BodyNodes& range = s.body(b);
     for (int n = 0; n < range.count; ++n) {
       const auto g = static_cast<std::size_t>(range.first + n);
@@ -184,7 +190,7 @@ std::vector<NodeReference> LaparoscopicTools::tissue_at_hook(const World& world,
   int body = -1;
   double nearest = reach;
   std::vector<NodeReference> out;
-  for (const int b : bodies_) {
+  for (const int b : touchable_) {
     const BodyNodes& range = s.body(b);
     for (int n = 0; n < range.count; ++n) {
       const auto g = static_cast<std::size_t>(range.first + n);
@@ -354,6 +360,12 @@ void LaparoscopicTools::cut(const InstrumentState& state, World& world, double t
   if (between.empty()) return;
   const int body = between[0].body;
   const core::Vec3 spread = options_.scissor_spread * state.up;
+  if (AgentTissueTerm* agents = agents_of(body)) {
+    const std::array<core::Vec3, 3> blade = {hinge(state, options_), state.tip + spread,
+                                             state.tip - spread};
+    cut_links(*agents, {&blade, 1}, "scissors", world, time, summary, events);
+    return;
+  }
   const cutting::CutSurface blades =
       cutting::scissor_cut_surface(hinge(state, options_), state.tip + spread, state.tip - spread);
   core::Vec3 centre = core::Vec3::Zero();
@@ -375,6 +387,13 @@ void LaparoscopicTools::cut_with_hook(const cutting::CutSurface& sweep, World& w
   bool cut_any = false;
   for (const int body : bodies_)
     cut_any = cut_through(body, sweep, centre, "hook", world, time, summary, events) || cut_any;
+  std::vector<std::array<core::Vec3, 3>> triangles;
+  for (const core::Triangle& t : sweep.triangles)
+    triangles.push_back({sweep.vertices[static_cast<std::size_t>(t[0])],
+                         sweep.vertices[static_cast<std::size_t>(t[1])],
+                         sweep.vertices[static_cast<std::size_t>(t[2])]});
+  for (AgentTissueTerm* agents : agents_)
+    cut_any = cut_links(*agents, triangles, "hook", world, time, summary, events) || cut_any;
   if (!cut_any)
     events.push_back({time, "cut-missed", "the hook's cutting current swept through no tissue"});
 }

@@ -43,7 +43,9 @@
 /// Decisions where the seeds are silent are the defaults of LaparoscopicToolOptions, stated
 /// with their reasons there.
 
+#include <array>
 #include <functional>
+#include <span>
 #include <vector>
 
 #include "simulator/cutting/topology_change.h"
@@ -58,6 +60,8 @@
 #include "simulator/world/world.h"
 
 namespace viscera::sim {
+
+class AgentTissueTerm;
 
 struct LaparoscopicToolOptions {
   double jaw_length = 0.012;   ///< m: 5 mm laparoscopic instruments have 10–20 mm jaws
@@ -103,8 +107,12 @@ class LaparoscopicTools {
   /// Per world body and node: 1 for a coagulated knot.
   const std::vector<std::vector<std::uint8_t>>& coagulated() const { return coagulated_; }
   const LaparoscopicToolOptions& options() const { return options_; }
-  /// The world bodies the tools act on.
+  /// The world bodies with tets the tools act on (the cell-agent tissues they also grasp and
+  /// cut are not among them: they have no tets to cut or tear).
   const std::vector<int>& bodies() const { return bodies_; }
+  /// The largest strain (length over rest length − 1) of the links — a net's springs, a cell
+  /// tissue's connections — at the knots the grasper holds; 0 when it holds none.
+  double grasp_stretch(const World& world) const;
   /// The smoke of coagulation and the fog on the lens (at the instrument's tip).
   const SurgicalSmoke& smoke() const { return smoke_; }
 
@@ -143,6 +151,13 @@ class LaparoscopicTools {
   bool cut_through(int body, const cutting::CutSurface& surface, const core::Vec3& centre,
                    const char* tool, World& world, double time, LaparoscopySummary& summary,
                    std::vector<SessionEvent>& events);
+  /// The cell-agent term of world body `body`, or null.
+  AgentTissueTerm* agents_of(int body) const;
+  /// Cuts the links of a cell-agent tissue that cross `triangles` (seed 003 §V: cutting removes
+  /// neighbour links) and records the cut: false when none crosses.
+  bool cut_links(AgentTissueTerm& agents, std::span<const std::array<core::Vec3, 3>> triangles,
+                 const char* tool, World& world, double time, LaparoscopySummary& summary,
+                 std::vector<SessionEvent>& events);
   /// Heats `between` (nodes of one body) for `dt` s: coagulates the knots that had their dose.
   void heat(const std::vector<NodeReference>& between, World& world, double time, double dt,
             LaparoscopySummary& summary, std::vector<SessionEvent>& events);
@@ -152,7 +167,9 @@ class LaparoscopicTools {
   void refresh_clips(const World& world, LaparoscopySummary& summary) const;
 
   LaparoscopicToolOptions options_;
-  std::vector<int> bodies_;  ///< world bodies the tools act on
+  std::vector<int> bodies_;               ///< world bodies with tets the tools act on
+  std::vector<AgentTissueTerm*> agents_;  ///< the cell-agent tissues, grasped and cut by links
+  std::vector<int> touchable_;            ///< bodies_ and the agents' bodies
   GraspTerm* grasp_ = nullptr;
   std::vector<ClipTerm*> clips_;
   std::vector<int> clip_bodies_;

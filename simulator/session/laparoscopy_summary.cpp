@@ -30,6 +30,7 @@ nlohmann::json laparoscopy_json(const LaparoscopySummary& s, double blood_loss) 
                     {"body", c.body},
                     {"position", c.position},
                     {"tets_traversed", c.tets_traversed},
+                    {"links_removed", c.links_removed},
                     {"divided", c.separated()},
                     {"between_clips", c.between_clips},
                     {"seconds", c.seconds}});

@@ -39,6 +39,7 @@ struct TissueCut {
   core::Vec3 position = core::Vec3::Zero();
   int pieces_before = 1, pieces_after = 1;  ///< connected components of the body
   int tets_traversed = 0;
+  int links_removed = 0;  ///< of a cell-agent tissue (seed 003 §V), which has no tets
   /// The cut lies between two secure clips on the same body (along the line joining them).
   bool between_clips = false;
   double seconds = 0.0;  ///< wall time of the cut (the run, not the state)

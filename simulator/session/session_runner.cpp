@@ -71,8 +71,8 @@ bool needs_target(const std::string& kind) {
 
 /// Tasks of the laparoscopic tools judge a site: a landmark, or a named object.
 bool needs_site(const core::TaskSpec& task) {
-  const bool tool =
-      task.kind == "grasp" || task.kind == "clip" || task.kind == "coagulate" || task.kind == "cut";
+  const bool tool = task.kind == "grasp" || task.kind == "pull" || task.kind == "clip" ||
+                    task.kind == "coagulate" || task.kind == "cut";
   return tool && !(task.parameters.is_object() && task.parameters.contains("object"));
 }
 
@@ -478,6 +478,7 @@ void SessionRunner::sample() {
       context.grasped_object = world_.models()[static_cast<std::size_t>(r.body)]->name;
       context.grasped_rest.push_back(r.rest);
     }
+    context.grasp_stretch = tools_->grasp_stretch(world_);
   }
   for (auto& m : monitors_) {
     const bool watched = m.step < 0 || m.step == current_ || m.step == current_ + 1;

@@ -15,7 +15,7 @@ namespace {
 const std::set<std::string> kDetectedKinds = {
     "reach", "centre-target", "inspect-surface", "withdraw", "touch", "settle", "resect"};
 /// Kinds detected when the working port carries the laparoscopic tools (LaparoscopicTools).
-const std::set<std::string> kToolKinds = {"grasp", "clip", "coagulate", "cut"};
+const std::set<std::string> kToolKinds = {"grasp", "pull", "clip", "coagulate", "cut"};
 const std::set<std::string> kLaparoscopicTools = {"grasper", "clip-applier", "scissors", "bipolar",
                                                   "hook"};
 const std::set<std::string> kSimulatedTools = {"hysteroscope",        "cystoscope",   "laparoscope",
@@ -150,6 +150,12 @@ bool TaskMonitor::tool_task_holds(const TaskContext& c) {
   const auto near = [&](const core::Vec3& rest) {
     return !target_ || (rest - target_->position).norm() <= radius;
   };
+  if (spec_.kind == "pull") {
+    // Grasped and pulled until the links at the held knots stretch by "stretch".
+    if (c.grasped_rest.empty() || c.grasped_object != object) return false;
+    track_best(c.grasp_stretch, false);
+    return c.grasp_stretch >= parameter(spec_, "stretch", 0.2);
+  }
   if (spec_.kind == "grasp") {
     if (c.grasped_object != object || c.grasped_rest.empty()) return false;
     for (const auto& p : c.grasped_rest)

@@ -47,6 +47,8 @@ struct TaskContext {
   /// The object the grasper holds now and the rest positions (m) of the knots it holds.
   std::string grasped_object;
   std::vector<core::Vec3> grasped_rest;
+  /// The largest strain of the links at the held knots (LaparoscopicTools::grasp_stretch).
+  double grasp_stretch = 0.0;
 };
 
 /// What became of a task. Status "completed", "not-completed" or "unavailable".

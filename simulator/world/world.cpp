@@ -110,10 +110,16 @@ void World::add_term(std::unique_ptr<ForceTerm> term) {
 
 void World::stiffness_changed() {
   integrator_->topology_changed(state_, term_pointers());
+  wake();  // a term's forces changed: what rested may move
+}
+
+bool World::driven() const {
+  return std::any_of(terms_.begin(), terms_.end(), [](const auto& t) { return t->drives(); });
 }
 
 void World::step() {
   const StepContext context{time(), time_step_, steps_ + 1};
+  if (asleep_ && driven()) wake();
   if (asleep_) {
     // Nothing moves until the instrument touches: only the proxy follows the tip.
     if (proxy_ != nullptr) {
@@ -191,7 +197,7 @@ void World::update_sleep() {
     fastest = std::max(fastest, state_.velocities[i].squaredNorm());
   const double moved = std::sqrt(fastest) * time_step_;
   const bool touched = proxy_ != nullptr && proxy_->proxy().in_contact();
-  calm_steps_ = moved < sleep_threshold_ && !touched ? calm_steps_ + 1 : 0;
+  calm_steps_ = moved < sleep_threshold_ && !touched && !driven() ? calm_steps_ + 1 : 0;
   if (calm_steps_ >= kCalmStepsToSleep) {
     // At rest: stop the last sub-nanometre motion so the state stays exactly still.
     for (auto& v : state_.velocities)

@@ -154,6 +154,9 @@ class World {
     calm_steps_ = 0;
   }
   static constexpr int kCalmStepsToSleep = 200;
+  /// A term drives the bodies from outside the state (ForceTerm::drives: a grasper's jaws, a
+  /// closing clip): the world does not sleep while one does.
+  bool driven() const;
 
   /// Replaces the topology of `body` (cutting): its node range, rest model and every cache that
   /// depends on it — force terms, contact hash, proxy surface, attachments, the integrator's

@@ -124,7 +124,8 @@ core::Scenario AgentTissueTemplate::build(const ParameterValues& p, std::uint64_
   scenario.objects.push_back(std::move(sheet));
   scenario.cell_tissues.push_back(std::move(spec));
   scenario.session.gravity = core::Vec3::Zero();
-  // Seed 003 §V: palpate (detected), pull and cut (reported unavailable: no grasper or scissors).
+  // Seed 003 §V: palpate, pull with the grasper and cut with the scissors (removing the links
+  // the blades cross): a laparoscope whose working port carries the tools.
   core::apply_procedure(scenario.session, core::procedure_definition("agent-tissue-lab"));
   // The cells integrate explicitly (seed 003 eq. 6–7): stable while ω h < 2 with ω² of a cell
   // pulled by its four neighbours and its home, (4 k_conn + k_home) / m. Half that step, and

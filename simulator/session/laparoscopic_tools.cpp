@@ -412,12 +412,12 @@ bool LaparoscopicTools::cut_through(int body, const cutting::CutSurface& surface
   record.tool = tool;
   record.body = model.name;
   record.position = centre;
-  record.pieces_before = piece_count(world, body);
   const auto start = std::chrono::steady_clock::now();
   const cutting::TopologyChange change = visible_ != nullptr
                                              ? visible_->cut(body, model.mesh, current, surface, {})
                                              : cutting::hybrid_cut(model.mesh, current, surface);
   if (!change.changed) return false;
+  record.pieces_before = piece_count(world, body);  // the body's mesh is the old one still
   world.topology_changed(body, topology_of_cut(change, world.held_nodes(body)));
   record.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   record.tets_traversed = change.statistics.tets_traversed;

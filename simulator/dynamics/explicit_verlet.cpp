@@ -100,8 +100,9 @@ StepStatistics ExplicitVerlet::step(SimulationState& state, std::span<ForceTerm*
       state.positions[i] += h * state.velocities[i];
     }
     state.time += h;
+    const bool last = s + 1 == stats.substeps;
     for (ForceTerm* t : terms)
-      t->after_step(state);
+      if (last || t->after_each_substep()) t->after_step(state);
   }
   return stats;
 }

@@ -47,6 +47,10 @@ class ForceTerm {
   virtual bool structure_changed() const { return false; }
   /// After an accepted step: plasticity moves rest data, tearing records requests.
   virtual void after_step(const SimulationState&) {}
+  /// An integrator that divides the step into sub-steps calls after_step() after each of them
+  /// when true (the proxy follows the surface as it moves), else once after the whole step
+  /// (tearing and plasticity judge the strain of the step, as under the implicit integrator).
+  virtual bool after_each_substep() const { return true; }
   /// The topology of `body` changed (its node range may have moved): rebuild rest data and
   /// caches from the state. Terms of other bodies re-read their node offsets.
   virtual void topology_changed(const SimulationState&, int /*body*/) {}

@@ -23,7 +23,8 @@ class Integrator {
   /// "explicit-verlet" or "backward-euler".
   virtual std::string name() const = 0;
   /// Advances `state` by h seconds: calls prepare() of every term (per sub-step), solves, and
-  /// after_step() once the step is accepted. `context.step` names the step in errors.
+  /// after_step() once the step is accepted (after each sub-step for the terms whose
+  /// after_each_substep() says so). `context.step` names the step in errors.
   virtual StepStatistics step(SimulationState& state, std::span<ForceTerm* const> terms,
                               const StepContext& context) = 0;
   /// The node ranges or the terms changed: rebuild the solver structure.

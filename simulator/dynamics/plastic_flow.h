@@ -43,6 +43,8 @@ class PlasticFlow : public ForceTerm {
   void add_stiffness(std::span<const Vec3>, double, bool, BlockSparseMatrix&) const override {}
   /// Moves the rest lengths strained past the yield at the accepted positions.
   void after_step(const SimulationState& state) override;
+  /// Once per step: the strain of the whole step, under either integrator.
+  bool after_each_substep() const override { return false; }
   void topology_changed(const SimulationState& state, int body) override;
 
   /// Rest-length moves so far (one per edge and step).

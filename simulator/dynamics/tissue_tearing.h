@@ -37,6 +37,8 @@ class TissueTearing : public ForceTerm {
   void declare_blocks(BlockPattern&) const override {}
   void add_stiffness(std::span<const Vec3>, double, bool, BlockSparseMatrix&) const override {}
   void after_step(const SimulationState& state) override;
+  /// Once per step: the strain of the whole step, under either integrator.
+  bool after_each_substep() const override { return false; }
   void topology_changed(const SimulationState& state, int body) override;
 
   /// Every tear so far, in the order they happened.

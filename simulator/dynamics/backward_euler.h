@@ -37,6 +37,7 @@ class BackwardEuler : public Integrator {
                       const StepContext& context) override;
   void topology_changed(const SimulationState& state, std::span<ForceTerm* const> terms) override;
   const NewtonSettings& settings() const { return settings_; }
+  void set_settings(const NewtonSettings& settings) { settings_ = settings; }
 
  private:
   void declare(const SimulationState& state, std::span<ForceTerm* const> terms);

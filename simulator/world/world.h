@@ -139,7 +139,11 @@ class World {
     bool at_rest = false;    ///< the last step moved no node more than the tolerance
     double last_move = 0.0;  ///< m, the largest node move of the last step
   };
+  /// Each settle step takes at most this many Newton iterations: the steps are a descent, not
+  /// a motion. A world that settled at rest with sleeping on (set_sleep_threshold, no term
+  /// driving, a tolerance within the sleep threshold) starts asleep.
   Settling settle(double h = 0.05, int max_steps = 30, double tolerance = 1e-7);
+  static constexpr int kSettleNewtonIterations = 2;
 
   /// Sleeping (the deactivation of rigid-body engines): once no node has moved more than
   /// `threshold` m per step for kCalmStepsToSleep steps and the instrument touches nothing, the

@@ -33,7 +33,8 @@ std::vector<std::uint8_t> World::held_nodes(int body) const {
 
 World::Settling World::settle(double h, int max_steps, double tolerance) {
   Settling result;
-  if (dynamic_cast<const BackwardEuler*>(integrator_.get()) == nullptr) return result;
+  auto* implicit = dynamic_cast<BackwardEuler*>(integrator_.get());
+  if (implicit == nullptr) return result;
   if (state_.node_count() == 0) return result;
   for (int b = 0; b < static_cast<int>(state_.bodies().size()); ++b) {
     const auto held = held_nodes(b);
@@ -42,6 +43,13 @@ World::Settling World::settle(double h, int max_steps, double tolerance) {
   if (drives_bodies(terms_)) return result;  // motility or a pulse: no rest to settle to
   const double clock = state_.time;
   const std::vector<ForceTerm*> terms = term_pointers();
+  // The steps are a descent in pseudo-time, not a motion: only where they end matters, so each
+  // takes at most kSettleNewtonIterations Newton iterations instead of converging (at 50 ms the
+  // mass no longer conditions the stiffness, and every further iteration is a capped CG).
+  const NewtonSettings session = implicit->settings();
+  NewtonSettings descent = session;
+  descent.max_newton_iterations = std::min(session.max_newton_iterations, kSettleNewtonIterations);
+  implicit->set_settings(descent);
   while (result.steps < max_steps && !result.at_rest) {
     std::fill(state_.velocities.begin(), state_.velocities.end(), Vec3::Zero());
     integrator_->step(state_, terms, StepContext{clock, h, 0});
@@ -52,9 +60,16 @@ World::Settling World::settle(double h, int max_steps, double tolerance) {
     result.last_move = std::sqrt(fastest) * h;
     result.at_rest = result.last_move < tolerance;
   }
+  implicit->set_settings(session);
   std::fill(state_.velocities.begin(), state_.velocities.end(), Vec3::Zero());
   state_.time = clock;
   check_state();
+  // At rest and nothing drives it: the session starts asleep (what kCalmStepsToSleep calm
+  // steps would conclude), and wakes when the instrument first touches.
+  if (result.at_rest && sleep_threshold_ > 0.0 && tolerance <= sleep_threshold_ && !driven()) {
+    asleep_ = true;
+    calm_steps_ = kCalmStepsToSleep;
+  }
   return result;
 }
 

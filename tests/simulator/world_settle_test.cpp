@@ -54,6 +54,22 @@ TEST(WorldSettle, a_held_beam_starts_at_its_sag_and_stays_there) {
   EXPECT_GT(largest_travel(authored, 200), 0.3 * tip_sag);
 }
 
+TEST(WorldSettle, a_world_settled_at_rest_with_sleeping_on_starts_asleep_and_stays_at_its_sag) {
+  World sleeping(cantilever());
+  sleeping.set_sleep_threshold(1e-7);
+  ASSERT_TRUE(sleeping.settle().at_rest);
+  EXPECT_TRUE(sleeping.asleep());
+  // Asleep, nothing moves; the same settle with sleeping off starts awake and, stepped, stays
+  // within a micrometre of the same shape.
+  const std::vector<core::Vec3> settled = sleeping.state().positions;
+  EXPECT_EQ(largest_travel(sleeping, 50), 0.0);
+  World awake(cantilever());
+  ASSERT_TRUE(awake.settle().at_rest);
+  EXPECT_FALSE(awake.asleep());
+  EXPECT_EQ(awake.state().positions, settled);  // the same descent, bit for bit
+  EXPECT_LT(largest_travel(awake, 200), 1e-6);
+}
+
 TEST(WorldSettle, a_free_body_is_not_settled) {
   World world(cantilever(false));
   const std::vector<core::Vec3> before = world.state().positions;

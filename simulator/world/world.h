@@ -135,15 +135,21 @@ class World {
   /// patient's (severed_pieces.h).
   std::vector<std::uint8_t> held_nodes(int body) const;
   struct Settling {
-    int steps = 0;           ///< settle steps taken (0: not settled at all)
-    bool at_rest = false;    ///< the last step moved no node more than the tolerance
+    int steps = 0;  ///< settle steps taken (0: not settled at all)
+    /// the last step moved no node more than the tolerance and left no nodal force residual
+    /// above the integrator's tolerance
+    bool at_rest = false;
     double last_move = 0.0;  ///< m, the largest node move of the last step
   };
-  /// Each settle step takes at most this many Newton iterations: the steps are a descent, not
-  /// a motion. A world that settled at rest with sleeping on (set_sleep_threshold, no term
-  /// driving, a tolerance within the sleep threshold) starts asleep.
+  /// Each settle step takes at most kSettleNewtonIterations Newton iterations of at most
+  /// kSettleCgIterations CG iterations: the steps are a descent, not a motion. At rest needs
+  /// the largest nodal force residual within the integrator's tolerance (1 µN) as well as no
+  /// node moving more than `tolerance`. A world that settled at rest with sleeping on
+  /// (set_sleep_threshold, no term driving, a tolerance within the sleep threshold) starts
+  /// asleep.
   Settling settle(double h = 0.05, int max_steps = 30, double tolerance = 1e-7);
   static constexpr int kSettleNewtonIterations = 2;
+  static constexpr int kSettleCgIterations = 50;
 
   /// Sleeping (the deactivation of rigid-body engines): once no node has moved more than
   /// `threshold` m per step for kCalmStepsToSleep steps and the instrument touches nothing, the

@@ -44,21 +44,24 @@ World::Settling World::settle(double h, int max_steps, double tolerance) {
   const double clock = state_.time;
   const std::vector<ForceTerm*> terms = term_pointers();
   // The steps are a descent in pseudo-time, not a motion: only where they end matters, so each
-  // takes at most kSettleNewtonIterations Newton iterations instead of converging (at 50 ms the
-  // mass no longer conditions the stiffness, and every further iteration is a capped CG).
+  // takes at most kSettleNewtonIterations Newton iterations of at most kSettleCgIterations CG
+  // iterations instead of converging (at 50 ms the mass no longer conditions the stiffness for
+  // block Jacobi). Where they end is checked by force: at rest needs the largest nodal force
+  // residual within the integrator's tolerance as well as no node moving.
   const NewtonSettings session = implicit->settings();
   NewtonSettings descent = session;
   descent.max_newton_iterations = std::min(session.max_newton_iterations, kSettleNewtonIterations);
+  descent.max_cg_iterations = std::min(session.max_cg_iterations, kSettleCgIterations);
   implicit->set_settings(descent);
   while (result.steps < max_steps && !result.at_rest) {
     std::fill(state_.velocities.begin(), state_.velocities.end(), Vec3::Zero());
-    integrator_->step(state_, terms, StepContext{clock, h, 0});
+    const StepStatistics step = integrator_->step(state_, terms, StepContext{clock, h, 0});
     ++result.steps;
     double fastest = 0.0;
     for (const Vec3& v : state_.velocities)
       fastest = std::max(fastest, v.squaredNorm());
     result.last_move = std::sqrt(fastest) * h;
-    result.at_rest = result.last_move < tolerance;
+    result.at_rest = result.last_move < tolerance && step.residual <= session.residual_tolerance;
   }
   implicit->set_settings(session);
   std::fill(state_.velocities.begin(), state_.velocities.end(), Vec3::Zero());

@@ -70,14 +70,18 @@ bool LaparoscopicTools::cut_links(AgentTissueTerm& agents,
 
 double LaparoscopicTools::grasp_stretch(const World& world) const {
   if (!grasp_->holding()) return 0.0;
+  // The grasper holds knots of one body (tissue_between_jaws): only its links are looked at.
   const SimulationState& s = world.state();
-  std::vector<std::uint8_t> held(s.node_count(), 0);
+  const int body = grasp_->held().front().body;
+  const BodyNodes& range = s.body(body);
+  std::vector<std::uint8_t> held(static_cast<std::size_t>(range.count), 0);
   for (const NodeReference& r : grasp_->held())
-    held[static_cast<std::size_t>(r.global(s))] = 1;
+    held[static_cast<std::size_t>(r.node)] = 1;
   double largest = 0.0;
-  const auto strain = [&](int a, int b, double rest) {
-    if (!(rest > 0.0) || (!held[static_cast<std::size_t>(a)] && !held[static_cast<std::size_t>(b)]))
-      return;
+  const auto strain = [&](int a, int b, double rest) {  // global nodes of the body
+    const auto la = static_cast<std::size_t>(a - range.first);
+    const auto lb = static_cast<std::size_t>(b - range.first);
+    if (!(rest > 0.0) || (!held[la] && !held[lb])) return;
     const double length =
         (s.positions[static_cast<std::size_t>(b)] - s.positions[static_cast<std::size_t>(a)])
             .norm();
@@ -85,10 +89,11 @@ double LaparoscopicTools::grasp_stretch(const World& world) const {
   };
   for (const auto& term : world.terms()) {
     if (const auto* agents = dynamic_cast<const AgentTissueTerm*>(term.get())) {
-      const int first = s.body(agents->model().body).first;
+      if (agents->model().body != body) continue;
       for (const CellConnection& c : agents->connections())
-        strain(first + c.a, first + c.b, c.rest_length);
+        strain(range.first + c.a, range.first + c.b, c.rest_length);
     } else if (const auto* net = dynamic_cast<const KismoSpringTerm*>(term.get())) {
+      if (net->model().body != body) continue;
       const CubicSprings& springs = net->springs();
       for (std::size_t k = 0; k < springs.knots.size(); ++k)
         strain(springs.knots[k][0], springs.knots[k][1], springs.rest_length[k]);

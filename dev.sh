@@ -121,10 +121,12 @@ run_tests() {
   configure_and_build
   install_gltf_validator
   say "running the test suite"
-  # Tests that render need an X server; without a display they run under Xvfb.
+  # Tests that render need an X server; without a display they run under Xvfb. -noreset: by
+  # default Xvfb resets when its last client disconnects and drops a client that connects during
+  # the reset, so a rendering test starting as another ends would fail to open the display.
   local runner=()
   if [ -z "${DISPLAY:-}" ] && command -v xvfb-run >/dev/null 2>&1; then
-    runner=(xvfb-run -a -s "-screen 0 1280x1024x24")
+    runner=(xvfb-run -a -s "-screen 0 1280x1024x24 -noreset")
   fi
   "${runner[@]}" ctest --test-dir "$build" --output-on-failure -j "$jobs" --timeout "$test_timeout"
 }

@@ -5,4 +5,5 @@
 if [ -n "${DISPLAY:-}" ]; then
   exec "$@"
 fi
-exec xvfb-run -a -s "-screen 0 1280x1024x24" "$@"
+# -noreset: Xvfb would otherwise reset when its last client leaves and drop one joining meanwhile.
+exec xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" "$@"

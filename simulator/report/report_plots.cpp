@@ -23,6 +23,7 @@
 
 #include "core/error.h"
 #include "simulator/view/image_files.h"
+#include "simulator/view/x_display.h"
 
 namespace viscera::report {
 
@@ -57,6 +58,7 @@ struct Chart {
   vtkNew<vtkChartXY> chart;
 
   Chart(const std::string& title, const std::string& x, const std::string& y, PlotSize size) {
+    view::require_x_display();  // VTK would end the process without one
     view->GetRenderWindow()->SetOffScreenRendering(1);
     view->GetRenderWindow()->SetSize(size.width, size.height);
     view->GetRenderer()->SetBackground(1.0, 1.0, 1.0);

@@ -18,6 +18,7 @@
 #include "simulator/view/pool_surface.h"
 #include "simulator/view/scene_surfaces.h"
 #include "simulator/view/smoke_billboards.h"
+#include "simulator/view/x_display.h"
 
 namespace viscera::view {
 
@@ -29,6 +30,7 @@ constexpr double kFarPlane = 0.3;      // m
 EndoscopicView::EndoscopicView(const core::Scenario& scenario, const std::filesystem::path& package,
                                const ViewOptions& options)
     : scenario_(scenario), options_(options) {
+  require_x_display();  // VTK would end the process without one
   surfaces_ = std::make_unique<SceneSurfaces>(scenario, package);
   overlay_ = std::make_unique<SessionOverlay>(options.bindings);
 

@@ -1,11 +1,12 @@
 // `viscera-sim` with its view: the snapshot of a run on a hysteroscopy package shows the organ,
-// a headless run refuses to render, and a replay renders to a valid Ogg Theora video with one
-// frame per 1/fps simulated seconds while staying bit-identical.
+// a headless run and a run without an X display refuse to render, and a replay renders to a
+// valid Ogg Theora video with one frame per 1/fps simulated seconds while staying bit-identical.
 
 #include <gtest/gtest.h>
 #include <vtkImageData.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 
@@ -92,6 +93,22 @@ TEST(SimCliView, headless_runs_refuse_to_render_with_exit_2) {
                                       " --headless --snapshot x.png --duration 0.01",
                                   dir);
   EXPECT_EQ(result.exit_code, 2) << result.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "x.png"));
+}
+
+TEST(SimCliView, without_an_x_display_a_snapshot_is_refused_in_one_sentence_not_a_crash) {
+  // VTK ends the process when it cannot reach the display; the view asks first (x_display.h).
+  const auto& patient = testing::hysteroscopy_patient();
+  const auto dir = testing::scratch_dir();
+  const char* display = std::getenv("DISPLAY");
+  const std::string saved = display != nullptr ? display : "";
+  ::unsetenv("DISPLAY");
+  const auto result = run_program(
+      "viscera-sim",
+      "run " + shell_quote(patient.package.string()) + " --snapshot x.png --duration 0.01", dir);
+  if (!saved.empty()) ::setenv("DISPLAY", saved.c_str(), 1);
+  EXPECT_EQ(result.exit_code, 2) << result.err;
+  EXPECT_NE(result.err.find("DISPLAY is not set"), std::string::npos) << result.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "x.png"));
 }
 

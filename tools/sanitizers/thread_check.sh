@@ -21,7 +21,7 @@ export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:suppressions=$root/
 # libgomp is not instrumented: its barriers look like races to TSan. The flow solver's OpenMP
 # loops run on one thread here; every other thread is the project's own.
 export OMP_NUM_THREADS=1
-display=(xvfb-run -a -s "-screen 0 1280x1024x24")
+display=(xvfb-run -a -s "-screen 0 1280x1024x24 -noreset")
 
 step() { printf '\033[1m==> %s\033[0m\n' "$*" >&2; }
 

@@ -60,7 +60,7 @@ LoopResection::LoopResection(const World& world, std::vector<int> bodies,
   for (const int b : bodies_)
     initial_volume_.push_back(
         core::total_volume(world.models()[static_cast<std::size_t>(b)]->mesh));
-  shed_volume_.assign(bodies_.size(), 0.0);
+  removed_volume_.assign(bodies_.size(), 0.0);
 }
 
 void LoopResection::record_pose(const InstrumentState& state) {
@@ -159,8 +159,8 @@ void LoopResection::cut(World& world, double time, CuttingSummary& summary,
       ++resection.chips;
       chips_.push_back({b, chip.nodes, chip.rest_volume});
     }
-    resection.resected_volume += shed_volume_[k];  // the debris of earlier cuts
-    if (observer_) observer_(b, change, time);     // the chips of this cut are known
+    resection.resected_volume += removed_volume_[k];  // the debris of earlier cuts
+    if (observer_) observer_(b, change, time);        // the chips of this cut are known
     if (!shreds.empty()) shed(world, b, k, shreds, resection);
     events.push_back(
         {time, "cut",
@@ -177,12 +177,42 @@ void LoopResection::shed(World& world, int body, std::size_t k,
   const auto positions = world.state().range(world.state().positions, body);
   for (const cutting::Fragment& shred : shreds) {
     debris_sink_(fragment_centre(shred, positions), equivalent_radius(shred.rest_volume));
-    shed_volume_[k] += shred.rest_volume;
+    removed_volume_[k] += shred.rest_volume;
     ++resection.debris;
   }
-  const BodyTopology topology = topology_without(world, body, shreds);
+  remove(world, body, shreds);
+}
+
+void LoopResection::remove(World& world, int body,
+                           const std::vector<cutting::Fragment>& fragments) {
+  const BodyTopology topology = topology_without(world, body, fragments);
   if (visible_ != nullptr) visible_->retire(body, topology);
   world.topology_changed(body, topology);
+}
+
+void LoopResection::retrieve(std::size_t chip, World& world, double time, CuttingSummary& summary,
+                             std::vector<SessionEvent>& events) {
+  const Chip taken = chips_.at(chip);
+  const auto k = static_cast<std::size_t>(std::find(bodies_.begin(), bodies_.end(), taken.body) -
+                                          bodies_.begin());
+  const core::TetMesh& mesh = world.models()[static_cast<std::size_t>(taken.body)]->mesh;
+  std::vector<cutting::Fragment> pieces = severed_fragments(mesh, world.held_nodes(taken.body));
+  std::erase_if(pieces, [&](const cutting::Fragment& piece) {
+    return !std::binary_search(piece.nodes.begin(), piece.nodes.end(), taken.nodes.front());
+  });
+  if (pieces.empty()) return;  // not a piece of its own any more
+  removed_volume_[k] += pieces.front().rest_volume;
+  BodyResection& resection = summary.bodies[k];
+  resection.chips = std::max(0, resection.chips - 1);
+  ++resection.chips_retrieved;
+  resection.retrieved_volume += pieces.front().rest_volume;
+  chips_.erase(chips_.begin() + static_cast<std::ptrdiff_t>(chip));
+  remove(world, taken.body, pieces);
+  events.push_back({time, "chip-retrieved",
+                    "a chip of " + resection.body + " (" +
+                        std::to_string(std::lround(pieces.front().rest_volume * 1e9)) +
+                        " mm³) was taken out through the cervix; " +
+                        std::to_string(resection.chips) + " left in the cavity"});
 }
 
 void LoopResection::begin(const World& world, CuttingSummary& summary) const {

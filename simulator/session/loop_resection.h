@@ -81,8 +81,13 @@ class LoopResection {
   /// Cuts go through `surfaces` (null: the tets alone), so the bodies' visible surfaces follow.
   void cut_visible_surfaces(VisibleSurfaces* surfaces) { visible_ = surfaces; }
 
-  /// The chips of every body cut so far (a body's list is renewed at each of its cuts).
+  /// The chips of every body cut so far (a body's list is renewed at each of its cuts), less
+  /// those retrieved.
   const std::vector<Chip>& chips() const { return chips_; }
+  /// Takes chips()[`chip`] out of the patient through the cervix (chip_retrieval.h): it leaves
+  /// its body's mesh (retired_tissue.h) and counts as retrieved, its volume still resected.
+  void retrieve(std::size_t chip, World& world, double time, CuttingSummary& summary,
+                std::vector<SessionEvent>& events);
   /// True while the pedal is down.
   bool sweeping() const { return sweeping_; }
   const cutting::LoopElectrode& loop() const { return loop_; }
@@ -95,10 +100,12 @@ class LoopResection {
   /// Retires `shreds` (fragments of body `body`, cuttable body `k`) as debris.
   void shed(World& world, int body, std::size_t k, const std::vector<cutting::Fragment>& shreds,
             BodyResection& resection);
+  /// Takes `fragments` of body `body` out of its mesh.
+  void remove(World& world, int body, const std::vector<cutting::Fragment>& fragments);
 
   std::vector<int> bodies_;
   std::vector<double> initial_volume_;  ///< m³ rest volume of each cuttable body at the start
-  std::vector<double> shed_volume_;     ///< m³ of each cuttable body shed as debris so far
+  std::vector<double> removed_volume_;  ///< m³ of each cuttable body shed or retrieved so far
   cutting::LoopElectrode loop_;
   cutting::HybridCutOptions options_;
   bool sweeping_ = false;

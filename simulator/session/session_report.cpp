@@ -107,7 +107,9 @@ nlohmann::json cutting_json(const SessionReport& r) {
                       {"resected_volume", b.resected_volume},
                       {"resected_fraction", b.resected_fraction()},
                       {"chips", b.chips},
-                      {"debris", b.debris}});
+                      {"debris", b.debris},
+                      {"chips_retrieved", b.chips_retrieved},
+                      {"retrieved_volume", b.retrieved_volume}});
   }
   const auto angle = [&](double degrees) -> nlohmann::json {
     return c.cuts > 0 ? nlohmann::json(degrees) : nlohmann::json(nullptr);

@@ -102,8 +102,10 @@ struct BodyResection {
   std::string body;
   double initial_volume = 0.0;   ///< m³, rest volume at the start of the session
   double resected_volume = 0.0;  ///< m³, rest volume of its chips and debris (cut off)
-  int chips = 0;
+  int chips = 0;                 ///< chips cut off and still in the cavity
   int debris = 0;  ///< shreds too small to be chips, handed to the flow as debris particles
+  int chips_retrieved = 0;        ///< chips taken out through the cervix (chip_retrieval.h)
+  double retrieved_volume = 0.0;  ///< m³, their rest volume
   double resected_fraction() const {
     return initial_volume > 0.0 ? std::min(1.0, resected_volume / initial_volume) : 0.0;
   }

@@ -318,6 +318,7 @@ void SessionRunner::step(const InstrumentState& input) {
   const double now = world_.time();
   if (resection_ != nullptr) {
     resection_->follow(state_, world_, now, *report_.cutting, report_.events);
+    retrieval_->follow(state_, world_, *resection_, now, *report_.cutting, report_.events);
     if (state_.coagulation) coagulate(now);
   }
   if (tools_) follow_tools(now);

@@ -16,6 +16,7 @@
 #include "simulator/fluid/bleeding_sources.h"
 #include "simulator/fluid/cavity_flow.h"
 #include "simulator/fluid/distension_balance.h"
+#include "simulator/session/chip_retrieval.h"
 #include "simulator/session/instrument_input.h"
 #include "simulator/session/instrument_tissue.h"
 #include "simulator/session/laparoscopic_tools.h"
@@ -89,6 +90,7 @@ class SessionRunner {
   const LaparoscopicTools* tools() const { return tools_.get(); }
   /// The resection loop, or null without a resectoscope.
   const LoopResection* resection() const { return resection_.get(); }
+  const ChipRetrieval* chip_retrieval() const { return retrieval_.get(); }
   /// The cut bodies' visible surfaces, or null when no instrument of the session cuts.
   const VisibleSurfaces* visible_surfaces() const { return visible_.get(); }
   /// The suction–irrigation cannula's jet and the pool, or null when the instrument carries no
@@ -134,6 +136,7 @@ class SessionRunner {
   std::unique_ptr<SurfaceCoverage> coverage_;
   /// The resection loop, with a "resectoscope" instrument: it cuts the pathology bodies.
   std::unique_ptr<LoopResection> resection_;
+  std::unique_ptr<ChipRetrieval> retrieval_;  ///< with the loop: its chips out through the cervix
   std::unique_ptr<VisibleSurfaces> visible_;  ///< made by the first cutting instrument
   std::unique_ptr<TissueTears> tears_;        ///< with a cutting instrument
   std::vector<core::Vec3> coverage_rest_;     ///< visual vertices when the surface has no embedding

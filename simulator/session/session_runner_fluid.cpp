@@ -12,6 +12,7 @@
 #include "simulator/dynamics/fluid_drag.h"
 #include "simulator/dynamics/pulse_waves.h"
 #include "simulator/session/chip_drift.h"
+#include "simulator/session/manual_control.h"
 #include "simulator/session/session_runner.h"
 #include "simulator/session/severed_pieces.h"
 
@@ -29,6 +30,8 @@ void SessionRunner::start_resection(const core::Scenario& scenario) {
       std::make_unique<LoopResection>(world_, std::move(bodies), standard_resection_loop());
   report_.cutting.emplace();
   resection_->begin(world_, *report_.cutting);
+  retrieval_ = std::make_unique<ChipRetrieval>(
+      world_, starting_pose(scenario, scenario.session.instrument.optics_angle));
   if (!visible_) visible_ = std::make_unique<VisibleSurfaces>(scenario, world_);
   resection_->cut_visible_surfaces(visible_.get());
 

@@ -29,6 +29,11 @@ void BlockPattern::reset(std::size_t nodes) {
   nodes_ = nodes;
   id_ = next_pattern_id();
   pairs_.clear();
+  covered_.clear();
+}
+
+bool BlockPattern::covers_tet_edges(const void* mesh) const {
+  return std::find(covered_.begin(), covered_.end(), mesh) != covered_.end();
 }
 
 void BlockPattern::add(int i, int j) {

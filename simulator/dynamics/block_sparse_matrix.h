@@ -33,11 +33,18 @@ class BlockPattern {
   /// Declares every pair of `nodes` (an element's blocks).
   void add_clique(std::span<const int> nodes);
   const std::vector<std::pair<int, int>>& pairs() const { return pairs_; }
+  /// Records that every edge of the tets of `mesh` (a body's mesh, by its address) is declared:
+  /// the body's distance term declares them all, and a term whose blocks are among them (the
+  /// volume term's tet cliques, six blocks per tet that repeat each edge about five times) then
+  /// need not declare them again. Until the next reset().
+  void cover_tet_edges(const void* mesh) { covered_.push_back(mesh); }
+  bool covers_tet_edges(const void* mesh) const;
 
  private:
   std::size_t nodes_;
   std::uint64_t id_;
   std::vector<std::pair<int, int>> pairs_;  ///< i < j
+  std::vector<const void*> covered_;        ///< meshes whose tet edges are declared
 };
 
 /// Block-compressed rows: row i holds blocks at columns columns_[row_start_[i] .. row_start_[i+1]),

@@ -60,6 +60,7 @@ double TeschnerDistanceTerm::add_forces(std::span<const Vec3> x, std::span<const
 void TeschnerDistanceTerm::declare_blocks(BlockPattern& pattern) const {
   for (const auto& [i, j] : terms_.edges)
     pattern.add(i, j);
+  pattern.cover_tet_edges(&model().mesh);  // every edge of the body's tets (build())
 }
 
 void TeschnerDistanceTerm::add_stiffness(std::span<const Vec3> x, double scale, bool project,

@@ -48,6 +48,7 @@ double TeschnerVolumeTerm::add_forces(std::span<const Vec3> x, std::span<const V
 }
 
 void TeschnerVolumeTerm::declare_blocks(BlockPattern& pattern) const {
+  if (pattern.covers_tet_edges(&model().mesh)) return;  // the distance term declared them
   for (const auto& t : terms_.tets)
     pattern.add_clique(t);
 }

@@ -10,6 +10,7 @@
 #include "core/error.h"
 #include "simulator/cutting/fragments.h"
 #include "simulator/session/cut_topology.h"
+#include "simulator/session/cut_under_base.h"
 #include "simulator/session/retired_tissue.h"
 #include "simulator/session/severed_pieces.h"
 
@@ -57,9 +58,12 @@ cutting::LoopPose loop_pose(const InstrumentState& state) {
 LoopResection::LoopResection(const World& world, std::vector<int> bodies,
                              cutting::LoopElectrode loop)
     : bodies_(std::move(bodies)), loop_(loop) {
-  for (const int b : bodies_)
+  for (const int b : bodies_) {
     initial_volume_.push_back(
         core::total_volume(world.models()[static_cast<std::size_t>(b)]->mesh));
+    const auto held = world.held_nodes(b);
+    held_at_start_.push_back(std::find(held.begin(), held.end(), std::uint8_t{1}) != held.end());
+  }
   removed_volume_.assign(bodies_.size(), 0.0);
 }
 
@@ -128,20 +132,28 @@ void LoopResection::cut(World& world, double time, CuttingSummary& summary,
     const cutting::TopologyChange change =
         visible_ != nullptr ? visible_->cut(b, model.mesh, current, surface, options_)
                             : cutting::hybrid_cut(model.mesh, current, surface, options_);
-    if (!change.changed) continue;
-    world.topology_changed(b, topology_of_cut(change, world.held_nodes(b)));
-    summary.cut_seconds.push_back(
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-
     const cutting::CutStatistics& s = change.statistics;
-    ++summary.cuts;
-    summary.tets_created +=
-        static_cast<long long>(s.tets_after) - static_cast<long long>(s.tets_before);
-    summary.min_dihedral_before_degrees =
-        std::min(summary.min_dihedral_before_degrees, s.min_dihedral_before_degrees);
-    summary.min_dihedral_after_degrees =
-        std::min(summary.min_dihedral_after_degrees, s.min_dihedral_after_degrees);
-    summary.volume_after += s.rest_volume_after - s.rest_volume_before;
+    if (change.changed) {
+      world.topology_changed(b, topology_of_cut(change, world.held_nodes(b)));
+      summary.cut_seconds.push_back(
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      ++summary.cuts;
+      summary.tets_created +=
+          static_cast<long long>(s.tets_after) - static_cast<long long>(s.tets_before);
+      summary.min_dihedral_before_degrees =
+          std::min(summary.min_dihedral_before_degrees, s.min_dihedral_before_degrees);
+      summary.min_dihedral_after_degrees =
+          std::min(summary.min_dihedral_after_degrees, s.min_dihedral_after_degrees);
+      summary.volume_after += s.rest_volume_after - s.rest_volume_before;
+    }
+    // The loop drawn under the base cuts the pathology's hold on the wall (cut_under_base.h).
+    const int under = release_cut_under(world, b, surface);
+    if (!change.changed && under == 0) continue;
+    if (under > 0) {
+      events.push_back({time, "cut-under-base",
+                        "the loop passed under " + std::to_string(under) + " node(s) of " +
+                            model.name + "'s base: their hold on the wall is cut"});
+    }
 
     // Chips: the pieces cut off from every hold (severed_pieces.h).
     const core::TetMesh& cut_mesh = world.models()[static_cast<std::size_t>(b)]->mesh;
@@ -150,7 +162,8 @@ void LoopResection::cut(World& world, double time, CuttingSummary& summary,
     resection.chips = 0;
     std::erase_if(chips_, [b](const Chip& chip) { return chip.body == b; });
     std::vector<cutting::Fragment> shreds;
-    for (cutting::Fragment& chip : severed_fragments(cut_mesh, world.held_nodes(b))) {
+    for (cutting::Fragment& chip :
+         severed_fragments(cut_mesh, world.held_nodes(b), lost_every_hold(world, b))) {
       resection.resected_volume += chip.rest_volume;
       if (debris_sink_ && chip.rest_volume < debris_volume_) {
         shreds.push_back(std::move(chip));
@@ -159,13 +172,14 @@ void LoopResection::cut(World& world, double time, CuttingSummary& summary,
       ++resection.chips;
       chips_.push_back({b, chip.nodes, chip.rest_volume});
     }
-    resection.resected_volume += removed_volume_[k];  // the debris of earlier cuts
-    if (observer_) observer_(b, change, time);        // the chips of this cut are known
+    resection.resected_volume += removed_volume_[k];              // the debris of earlier cuts
+    if (observer_ && change.changed) observer_(b, change, time);  // the chips are known
     if (!shreds.empty()) shed(world, b, k, shreds, resection);
     events.push_back(
         {time, "cut",
-         "the loop cut " + model.name + ": " + std::to_string(s.tets_traversed) +
-             " tets traversed, " + std::to_string(resection.chips) + " chip(s), " +
+         "the loop cut " + model.name + ": " +
+             std::to_string(change.changed ? s.tets_traversed : 0) + " tets traversed, " +
+             std::to_string(resection.chips) + " chip(s), " +
              (shreds.empty() ? std::string()
                              : std::to_string(shreds.size()) + " shred(s) of debris, ") +
              std::to_string(std::lround(100.0 * resection.resected_fraction())) + " % resected"});
@@ -196,7 +210,8 @@ void LoopResection::retrieve(std::size_t chip, World& world, double time, Cuttin
   const auto k = static_cast<std::size_t>(std::find(bodies_.begin(), bodies_.end(), taken.body) -
                                           bodies_.begin());
   const core::TetMesh& mesh = world.models()[static_cast<std::size_t>(taken.body)]->mesh;
-  std::vector<cutting::Fragment> pieces = severed_fragments(mesh, world.held_nodes(taken.body));
+  std::vector<cutting::Fragment> pieces =
+      severed_fragments(mesh, world.held_nodes(taken.body), lost_every_hold(world, taken.body));
   std::erase_if(pieces, [&](const cutting::Fragment& piece) {
     return !std::binary_search(piece.nodes.begin(), piece.nodes.end(), taken.nodes.front());
   });
@@ -213,6 +228,14 @@ void LoopResection::retrieve(std::size_t chip, World& world, double time, Cuttin
                         std::to_string(std::lround(pieces.front().rest_volume * 1e9)) +
                         " mm³) was taken out through the cervix; " +
                         std::to_string(resection.chips) + " left in the cavity"});
+}
+
+bool LoopResection::lost_every_hold(const World& world, int body) const {
+  const auto k =
+      static_cast<std::size_t>(std::find(bodies_.begin(), bodies_.end(), body) - bodies_.begin());
+  if (k >= bodies_.size() || held_at_start_[k] == 0) return false;
+  const auto held = world.held_nodes(body);
+  return std::find(held.begin(), held.end(), std::uint8_t{1}) == held.end();
 }
 
 void LoopResection::begin(const World& world, CuttingSummary& summary) const {

@@ -90,6 +90,8 @@ class LoopResection {
                 std::vector<SessionEvent>& events);
   /// True while the pedal is down.
   bool sweeping() const { return sweeping_; }
+  /// True when cuttable body `body` was held at the start and every hold it had was cut.
+  bool lost_every_hold(const World& world, int body) const;
   const cutting::LoopElectrode& loop() const { return loop_; }
   /// The world bodies the loop may cut.
   const std::vector<int>& bodies() const { return bodies_; }
@@ -104,8 +106,9 @@ class LoopResection {
   void remove(World& world, int body, const std::vector<cutting::Fragment>& fragments);
 
   std::vector<int> bodies_;
-  std::vector<double> initial_volume_;  ///< m³ rest volume of each cuttable body at the start
-  std::vector<double> removed_volume_;  ///< m³ of each cuttable body shed or retrieved so far
+  std::vector<double> initial_volume_;       ///< m³ rest volume of each cuttable body at the start
+  std::vector<std::uint8_t> held_at_start_;  ///< per cuttable body: held by another at the start
+  std::vector<double> removed_volume_;       ///< m³ of each cuttable body shed or retrieved so far
   cutting::LoopElectrode loop_;
   cutting::HybridCutOptions options_;
   bool sweeping_ = false;

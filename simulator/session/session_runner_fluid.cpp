@@ -57,7 +57,9 @@ void SessionRunner::start_bleeding_sources(const core::Scenario& scenario) {
 void SessionRunner::start_bleeding(int body, const cutting::TopologyChange& change, double time) {
   // Blood comes from the side still fed by the patient: the cut faces of a piece cut off from
   // every hold (a loop's chip, a scissors' free fragment) do not bleed.
-  const std::vector<std::uint8_t> excised = severed_nodes(change.mesh, world_.held_nodes(body));
+  const std::vector<std::uint8_t> excised =
+      severed_nodes(change.mesh, world_.held_nodes(body),
+                    resection_ != nullptr && resection_->lost_every_hold(world_, body));
   std::vector<core::Triangle> cut_triangles;
   cut_triangles.reserve(change.cut_surface_faces.size());
   for (const int f : change.cut_surface_faces) {

@@ -107,6 +107,7 @@ void LoopResection::cut(World& world, double time, CuttingSummary& summary,
     return;  // the loop did not move while the pedal was down: nothing was swept
   }
   ++summary.sweeps;
+  last_sweep_ = surface;
   Box swept;
   for (const auto& v : surface.vertices)
     swept.add(v);

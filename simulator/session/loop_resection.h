@@ -90,6 +90,8 @@ class LoopResection {
                 std::vector<SessionEvent>& events);
   /// True while the pedal is down.
   bool sweeping() const { return sweeping_; }
+  /// The surface the last sweep swept (CuttingSummary::sweeps counts them), m.
+  const cutting::CutSurface& last_sweep() const { return last_sweep_; }
   /// True when cuttable body `body` was held at the start and every hold it had was cut.
   bool lost_every_hold(const World& world, int body) const;
   const cutting::LoopElectrode& loop() const { return loop_; }
@@ -118,6 +120,7 @@ class LoopResection {
   DebrisSink debris_sink_;
   VisibleSurfaces* visible_ = nullptr;
   std::vector<Chip> chips_;
+  cutting::CutSurface last_sweep_;
 };
 
 }  // namespace viscera::sim

@@ -29,9 +29,9 @@ PeriodScore period_score(const SessionMetrics& m, double force_warning,
 
 namespace {
 
-/// A score or null.
-nlohmann::json score_json(const std::optional<double>& score) {
-  return score ? nlohmann::json(*score) : nlohmann::json(nullptr);
+/// A number (a score, a depth) or null where there is none.
+nlohmann::json number_or_null(const std::optional<double>& value) {
+  return value ? nlohmann::json(*value) : nlohmann::json(nullptr);
 }
 
 /// The reason of an absent score, or null beside a score.
@@ -124,6 +124,8 @@ nlohmann::json cutting_json(const SessionReport& r) {
           {"min_dihedral_after", angle(c.min_dihedral_after_degrees)},
           {"volume_before", c.volume_before},
           {"volume_after", c.volume_after},
+          {"deepest_wall_cut", number_or_null(c.deepest_wall_cut)},
+          {"wall_thickness_at_deepest_cut", number_or_null(c.wall_thickness_at_deepest_cut)},
           {"pathologies", bodies}};
 }
 
@@ -280,7 +282,7 @@ nlohmann::json report_to_json(const SessionReport& r) {
     nlohmann::json step = {{"id", s.id},
                            {"name", s.name},
                            {"metrics", s.metrics.to_json()},
-                           {"score", score_json(s.score)},
+                           {"score", number_or_null(s.score)},
                            {"score_reason", reason_json(s.score, s.score_reason)}};
     step["started_at"] =
         s.started_at >= 0.0 ? nlohmann::json(s.started_at) : nlohmann::json(nullptr);
@@ -314,7 +316,7 @@ nlohmann::json report_to_json(const SessionReport& r) {
           {"procedure_steps", steps},
           {"instrument", r.has_instrument ? r.metrics.to_json() : nlohmann::json(nullptr)},
           {"metrics", r.metrics.to_json()},
-          {"score", score_json(r.score)},
+          {"score", number_or_null(r.score)},
           {"score_reason", reason_json(r.score, r.score_reason)},
           {"path", path_json(r)},
           {"fluid", fluid_json(r)},

@@ -123,6 +123,10 @@ struct CuttingSummary {
   double volume_before = 0.0;  ///< m³, rest volume of the cuttable bodies at the start
   double volume_after = 0.0;   ///< m³, the same now (a cut keeps it, to rounding)
   std::vector<BodyResection> bodies;
+  /// The deepest any sweep went into the organ's wall below its cavity (wall_cut_depth.h), m,
+  /// with the wall's thickness there; absent while no sweep entered the wall.
+  std::optional<double> deepest_wall_cut;
+  std::optional<double> wall_thickness_at_deepest_cut;
 
   /// The resection of body `name`, or null when the loop cannot cut it.
   const BodyResection* find(const std::string& name) const {

@@ -319,6 +319,7 @@ void SessionRunner::step(const InstrumentState& input) {
   if (resection_ != nullptr) {
     resection_->follow(state_, world_, now, *report_.cutting, report_.events);
     retrieval_->follow(state_, world_, *resection_, now, *report_.cutting, report_.events);
+    gauge_wall_cut(now);
     if (state_.coagulation) coagulate(now);
   }
   if (tools_) follow_tools(now);

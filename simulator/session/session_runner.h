@@ -25,6 +25,7 @@
 #include "simulator/session/session_report.h"
 #include "simulator/session/suction_irrigation.h"
 #include "simulator/session/tissue_tears.h"
+#include "simulator/session/wall_cut_depth.h"
 #include "simulator/world/world.h"
 
 namespace viscera::sim {
@@ -116,6 +117,9 @@ class SessionRunner {
   std::optional<double> resection_share(int step) const;
   /// Sets up the loop on every pathology body of the world (LoopResection).
   void start_resection(const core::Scenario& scenario);
+  /// After the loop's sweep was cut: how deep it went into the wall; a perforation ends the
+  /// session.
+  void gauge_wall_cut(double time);
   void look();
   /// world_.step(), with any failure turned into a core::SimulationError naming body, node,
   /// step and likely cause (simulation_check.h).
@@ -137,6 +141,8 @@ class SessionRunner {
   /// The resection loop, with a "resectoscope" instrument: it cuts the pathology bodies.
   std::unique_ptr<LoopResection> resection_;
   std::unique_ptr<ChipRetrieval> retrieval_;  ///< with the loop: its chips out through the cervix
+  std::unique_ptr<WallCutGauge> wall_gauge_;  ///< with the loop: how deep it cut into the wall
+  int gauged_sweeps_ = 0;                     ///< sweeps the wall gauge has measured
   std::unique_ptr<VisibleSurfaces> visible_;  ///< made by the first cutting instrument
   std::unique_ptr<TissueTears> tears_;        ///< with a cutting instrument
   std::vector<core::Vec3> coverage_rest_;     ///< visual vertices when the surface has no embedding

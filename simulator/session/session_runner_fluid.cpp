@@ -32,6 +32,14 @@ void SessionRunner::start_resection(const core::Scenario& scenario) {
   resection_->begin(world_, *report_.cutting);
   retrieval_ = std::make_unique<ChipRetrieval>(
       world_, starting_pose(scenario, scenario.session.instrument.optics_angle));
+  for (const auto& model : world_.models()) {
+    const core::SceneObject* object = scenario.find_object(model->name);
+    if (object == nullptr || model->kind != BodyModelKind::Teschner) continue;
+    CavitySurface cavity = cavity_surface(*object);
+    if (cavity.empty()) continue;
+    wall_gauge_ = std::make_unique<WallCutGauge>(model->body, std::move(cavity));
+    break;
+  }
   if (!visible_) visible_ = std::make_unique<VisibleSurfaces>(scenario, world_);
   resection_->cut_visible_surfaces(visible_.get());
 
@@ -40,6 +48,31 @@ void SessionRunner::start_resection(const core::Scenario& scenario) {
     start_bleeding(body, change, time);
     cut_since_flow_ = true;
   });
+}
+
+void SessionRunner::gauge_wall_cut(double time) {
+  CuttingSummary& cutting = *report_.cutting;
+  if (wall_gauge_ == nullptr || cutting.sweeps == gauged_sweeps_) return;
+  gauged_sweeps_ = cutting.sweeps;
+  const auto cut = wall_gauge_->measure(world_, resection_->last_sweep());
+  if (!cut) return;
+  const bool deeper = !cutting.deepest_wall_cut || cut->perforated ||
+                      cut->depth / cut->thickness >
+                          *cutting.deepest_wall_cut / *cutting.wall_thickness_at_deepest_cut;
+  if (deeper) {
+    cutting.deepest_wall_cut = cut->depth;
+    cutting.wall_thickness_at_deepest_cut = cut->thickness;
+  }
+  char text[160];
+  std::snprintf(text, sizeof text, "the loop cut %.1f mm into the wall, %.0f %% of its %.1f mm",
+                1e3 * cut->depth, 100.0 * cut->depth / cut->thickness, 1e3 * cut->thickness);
+  if (cut->perforated) {
+    std::snprintf(text, sizeof text, "the loop cut through the wall, %.1f mm thick there",
+                  1e3 * cut->thickness);
+    end("perforation", text);
+    return;
+  }
+  report_.events.push_back({time, "wall-cut", text});
 }
 
 void SessionRunner::start_bleeding_sources(const core::Scenario& scenario) {

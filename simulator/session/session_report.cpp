@@ -126,6 +126,7 @@ nlohmann::json cutting_json(const SessionReport& r) {
           {"volume_after", c.volume_after},
           {"deepest_wall_cut", number_or_null(c.deepest_wall_cut)},
           {"wall_thickness_at_deepest_cut", number_or_null(c.wall_thickness_at_deepest_cut)},
+          {"healthy_wall_removed", number_or_null(c.healthy_wall_removed)},
           {"pathologies", bodies}};
 }
 

@@ -127,6 +127,9 @@ struct CuttingSummary {
   /// with the wall's thickness there; absent while no sweep entered the wall.
   std::optional<double> deepest_wall_cut;
   std::optional<double> wall_thickness_at_deepest_cut;
+  /// m³ of healthy wall the sweeps took off (estimated on them, wall_cut_depth.h); absent when
+  /// the organ has no cavity surface to gauge the sweeps against.
+  std::optional<double> healthy_wall_removed;
 
   /// The resection of body `name`, or null when the loop cannot cut it.
   const BodyResection* find(const std::string& name) const {

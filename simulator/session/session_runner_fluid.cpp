@@ -38,6 +38,7 @@ void SessionRunner::start_resection(const core::Scenario& scenario) {
     CavitySurface cavity = cavity_surface(*object);
     if (cavity.empty()) continue;
     wall_gauge_ = std::make_unique<WallCutGauge>(model->body, std::move(cavity));
+    report_.cutting->healthy_wall_removed = 0.0;
     break;
   }
   if (!visible_) visible_ = std::make_unique<VisibleSurfaces>(scenario, world_);
@@ -56,6 +57,7 @@ void SessionRunner::gauge_wall_cut(double time) {
   gauged_sweeps_ = cutting.sweeps;
   const auto cut = wall_gauge_->measure(world_, resection_->last_sweep());
   if (!cut) return;
+  *cutting.healthy_wall_removed += cut->removed_volume;
   const bool deeper = !cutting.deepest_wall_cut || cut->perforated ||
                       cut->depth / cut->thickness >
                           *cutting.deepest_wall_cut / *cutting.wall_thickness_at_deepest_cut;

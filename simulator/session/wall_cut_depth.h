@@ -13,7 +13,11 @@
 /// the tissue) tells on which side it lies; a vertex behind it ((v − p)·n < 0) is |v − p| into
 /// the wall, and the wall there is as thick as the ray from p along −n runs through the tissue
 /// to the organ's outer surface. A vertex behind the cavity's wall and beyond that far surface
-/// went through the wall: a perforation.
+/// went through the wall: a perforation. The wall the sweep took off lies between the swept
+/// surface and the cavity's surface: its volume is the sum over the swept triangles of their
+/// area projected on the cavity's surface times their vertices' mean depth (a prism per
+/// triangle; the loop's trough is a height field over the wall, so each point of the wall is
+/// under one prism).
 
 #include <optional>
 #include <vector>
@@ -30,6 +34,7 @@ struct WallCut {
   double depth = 0.0;      ///< m below the cavity's surface
   double thickness = 0.0;  ///< m, the wall's thickness there
   bool perforated = false;
+  double removed_volume = 0.0;  ///< m³ of wall between the swept surface and the cavity's
 };
 
 class WallCutGauge {

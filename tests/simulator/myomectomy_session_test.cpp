@@ -71,6 +71,14 @@ TEST(MyomectomySession, the_expert_shaves_the_myoma_in_layers_and_the_novice_lea
   EXPECT_GT(myoma_of(expert).resected_fraction(), myoma_of(novice).resected_fraction() + 0.2);
   EXPECT_EQ(task_status(novice, "resect-myoma-1"), "not-completed");
   EXPECT_GT(expert.score, novice.score);
+  // Shaving down to the myoma's bed takes a thin layer of the wall under it, never much of the
+  // wall's thickness (seed 000 §2.1); the novice, who leaves the myoma's sides, does not reach it.
+  const CuttingSummary& shaved = *expert.cutting;
+  ASSERT_TRUE(shaved.deepest_wall_cut && shaved.healthy_wall_removed);
+  EXPECT_LT(*shaved.deepest_wall_cut, 0.25 * *shaved.wall_thickness_at_deepest_cut);
+  EXPECT_GT(*shaved.healthy_wall_removed, 0.0);
+  EXPECT_LT(*shaved.healthy_wall_removed, 0.25 * myoma_of(expert).initial_volume);
+  EXPECT_LE(novice.cutting->healthy_wall_removed.value_or(0.0), *shaved.healthy_wall_removed);
   for (const SessionReport* r : {&expert, &novice}) {
     EXPECT_NEAR(r->cutting->volume_after, r->cutting->volume_before,
                 1e-9 * r->cutting->volume_before);

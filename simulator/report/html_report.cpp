@@ -111,6 +111,37 @@ std::string fluid_and_bleeding_table(const json& report) {
   return out.str();
 }
 
+/// The resection loop's work (issue 17 §5) as a table, or nothing when the instrument could not
+/// cut: per pathology how much came off and where its chips are, then the cuts and the wall.
+std::string resection_table(const json& report) {
+  const json cutting = report.value("cutting", json());
+  if (!cutting.is_object()) return {};
+  std::ostringstream out;
+  out << "<h2>Resection</h2>\n<table>\n<tr><th>Pathology</th><th>Resected (%)</th><th>Chips in "
+         "the cavity</th><th>Chips retrieved</th><th>Debris</th></tr>\n";
+  for (const json& body : cutting.value("pathologies", json::array())) {
+    out << "<tr><td>" << core::xml_escaped(text_of(body, "body")) << "</td><td>"
+        << number(body.value("resected_fraction", json()), 100.0) << "</td><td>"
+        << number(body.value("chips", json())) << "</td><td>"
+        << number(body.value("chips_retrieved", json())) << "</td><td>"
+        << number(body.value("debris", json())) << "</td></tr>\n";
+  }
+  out << "</table>\n<table>\n";
+  const auto row = [&out](const char* label, const json& value, double scale) {
+    out << "<tr><td>" << label << "</td><td>" << number(value, scale) << "</td></tr>\n";
+  };
+  constexpr double kMm = 1e3, kMm3 = 1e9;
+  row("Cuts", cutting.value("cuts", json()), 1.0);
+  row("Sweeps released inside a pathology (not cut)", cutting.value("released_in_tissue", json()),
+      1.0);
+  row("Median time per cut (ms)", cutting.value("cut_time_median", json()), kMm);
+  row("Deepest cut into the wall (mm)", cutting.value("deepest_wall_cut", json()), kMm);
+  row("Wall thickness there (mm)", cutting.value("wall_thickness_at_deepest_cut", json()), kMm);
+  row("Healthy wall removed (mm³)", cutting.value("healthy_wall_removed", json()), kMm3);
+  out << "</table>\n";
+  return out.str();
+}
+
 }  // namespace
 
 std::vector<std::filesystem::path> write_html_report(const json& report, const json* reference,
@@ -192,6 +223,7 @@ std::vector<std::filesystem::path> write_html_report(const json& report, const j
   }
   html << "</div>\n";
   html << fluid_and_bleeding_table(report);
+  html << resection_table(report);
 
   html << "<h2>Procedure steps</h2>\n<table>\n<tr><th>Step</th><th>Started (s)</th><th>Ended (s)"
           "</th><th>Path (mm)</th><th>Collisions</th><th>Max force (N)</th><th>Seen (%)</th>"

@@ -1,5 +1,6 @@
 // The HTML report of real sessions: a novice's page set against the expert's report references
-// only images that exist and are PNGs drawn by VTK's charts, and marks every comparable metric.
+// only images that exist and are PNGs drawn by VTK's charts, and marks every comparable metric;
+// fluid, bleeding and a resection get their tables.
 
 #include "simulator/report/html_report.h"
 
@@ -8,12 +9,14 @@
 
 #include <fstream>
 #include <sstream>
+#include <tuple>
 
 #include "core/error.h"
 #include "simulator/session/headless_session.h"
 #include "simulator/session/manual_control.h"
 #include "simulator/view/scene_surfaces.h"
 #include "tests/simulator/session_fixtures.h"
+#include "tests/support/polyp_scoop.h"
 #include "tests/support/test_paths.h"
 #include "tests/view/view_fixtures.h"
 
@@ -132,6 +135,54 @@ TEST(HtmlReport, a_session_with_distension_fluid_plots_its_deficit_and_tables_th
   const double shown = std::stod(html.substr(at + std::string("<td>Deficit (ml)</td><td>").size()));
   EXPECT_NEAR(shown, 1e6 * report["fluid"]["deficit"].get<double>(),
               0.01 * std::abs(1e6 * report["fluid"]["deficit"].get<double>()) + 1e-3);
+}
+
+TEST(HtmlReport, a_resection_tables_each_pathology_its_chips_and_the_wall) {
+  // The loop scoops the polyp's apex (tests/support/polyp_scoop.h).
+  const core::Scenario scenario = viscera::testing::resectoscope_patient();
+  const nlohmann::json report = scripted_report(
+      viscera::testing::scoop_script(viscera::testing::frame_of(scenario), 2e-3), scenario);
+  const nlohmann::json& cutting = report["cutting"];
+  ASSERT_TRUE(cutting.is_object());
+  const auto dir = viscera::testing::scratch_dir();
+  write_html_report(report, nullptr, dir);
+  const std::string html = viscera::testing::file_bytes(dir / "report.html");
+  EXPECT_NE(html.find("<h2>Resection</h2>"), std::string::npos);
+  // The polyp's row: its resected share in %, as the report has it.
+  const std::string polyp = "<tr><td>polyp-1</td><td>";
+  const std::size_t at = html.find(polyp);
+  ASSERT_NE(at, std::string::npos);
+  double fraction = -1.0;
+  for (const auto& body : cutting["pathologies"])
+    if (body["body"] == "polyp-1") fraction = body["resected_fraction"].get<double>();
+  ASSERT_GT(fraction, 0.0);
+  EXPECT_NEAR(std::stod(html.substr(at + polyp.size())), 100.0 * fraction, 0.01 * 100.0 * fraction);
+  // The wall's rows are the report's, in mm and mm³ (the scoop's ends reach the wall beside the
+  // polyp), or a dash where it has none.
+  const auto shown = [&html](const std::string& label) {
+    const std::string cell = "<td>" + label + "</td><td>";
+    const std::size_t row = html.find(cell);
+    EXPECT_NE(row, std::string::npos) << label;
+    return row == std::string::npos ? std::string() : html.substr(row + cell.size(), 16);
+  };
+  for (const auto& [label, key, scale] :
+       {std::tuple{"Deepest cut into the wall (mm)", "deepest_wall_cut", 1e3},
+        std::tuple{"Wall thickness there (mm)", "wall_thickness_at_deepest_cut", 1e3},
+        std::tuple{"Healthy wall removed (mm³)", "healthy_wall_removed", 1e9}}) {
+    const std::string text = shown(label);
+    if (cutting[key].is_null()) {
+      EXPECT_EQ(text.rfind("&ndash;", 0), 0u) << label;
+    } else {
+      const double value = scale * cutting[key].get<double>();
+      EXPECT_NEAR(std::stod(text), value, 0.01 * std::abs(value) + 1e-12) << label;
+    }
+  }
+  // A session whose instrument cannot cut has no such table.
+  const nlohmann::json looking = scripted_report(viscera::testing::expert_cavity_script());
+  const auto plain = viscera::testing::scratch_dir();
+  write_html_report(looking, nullptr, plain);
+  EXPECT_EQ(viscera::testing::file_bytes(plain / "report.html").find("<h2>Resection</h2>"),
+            std::string::npos);
 }
 
 TEST(HtmlReport, refuses_what_is_not_a_session_report) {

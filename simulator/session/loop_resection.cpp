@@ -136,8 +136,6 @@ void LoopResection::cut(World& world, double time, CuttingSummary& summary,
     const cutting::CutStatistics& s = change.statistics;
     if (change.changed) {
       world.topology_changed(b, topology_of_cut(change, world.held_nodes(b)));
-      summary.cut_seconds.push_back(
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
       ++summary.cuts;
       summary.tets_created +=
           static_cast<long long>(s.tets_after) - static_cast<long long>(s.tets_before);
@@ -149,6 +147,10 @@ void LoopResection::cut(World& world, double time, CuttingSummary& summary,
     }
     // The loop drawn under the base cuts the pathology's hold on the wall (cut_under_base.h).
     const int under = release_cut_under(world, b, surface);
+    if (change.changed) {  // the cut's time includes the rebuild after cutting under the base
+      summary.cut_seconds.push_back(
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    }
     if (!change.changed && under == 0) continue;
     if (under > 0) {
       events.push_back({time, "cut-under-base",

@@ -1,8 +1,8 @@
 #include "simulator/session/cut_under_base.h"
 
 #include <algorithm>
-#include <cmath>
 
+#include "simulator/collision/penetration_depth.h"
 #include "simulator/dynamics/body_topology.h"
 
 namespace viscera::sim {
@@ -10,23 +10,6 @@ namespace viscera::sim {
 namespace {
 
 constexpr double kAboveNode = 0.0001;  ///< m: a sweep through the node itself passes under it
-
-/// True when segment a→b meets triangle (p, q, r), edges included (Möller–Trumbore).
-bool segment_meets(const core::Vec3& a, const core::Vec3& b, const core::Vec3& p,
-                   const core::Vec3& q, const core::Vec3& r) {
-  const core::Vec3 d = b - a, e1 = q - p, e2 = r - p;
-  const core::Vec3 h = d.cross(e2);
-  const double det = e1.dot(h);
-  if (std::abs(det) < 1e-30) return false;  // parallel to the triangle's plane
-  const core::Vec3 s = a - p;
-  const double u = s.dot(h) / det;
-  if (u < 0.0 || u > 1.0) return false;
-  const core::Vec3 k = s.cross(e1);
-  const double v = d.dot(k) / det;
-  if (v < 0.0 || u + v > 1.0) return false;
-  const double t = e2.dot(k) / det;
-  return t >= 0.0 && t <= 1.0;
-}
 
 /// True when segment a→b meets any triangle of `surface`.
 bool segment_meets(const core::Vec3& a, const core::Vec3& b, const cutting::CutSurface& surface) {
@@ -38,7 +21,7 @@ bool segment_meets(const core::Vec3& a, const core::Vec3& b, const cutting::CutS
     if ((p.cwiseMax(q).cwiseMax(r).array() < lo.array()).any() ||
         (p.cwiseMin(q).cwiseMin(r).array() > hi.array()).any())
       continue;
-    if (segment_meets(a, b, p, q, r)) return true;
+    if (segment_triangle_intersection(a, b, p, q, r) >= 0.0) return true;
   }
   return false;
 }

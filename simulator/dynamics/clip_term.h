@@ -39,6 +39,8 @@ class ClipTerm : public ForceTerm {
   void add_stiffness(std::span<const Vec3> x, double scale, bool project,
                      BlockSparseMatrix&) const override;
   void topology_changed(const SimulationState& state, int body) override;
+  /// Notes where the squeezed nodes are, so that a later cut finds the squeezed copy of each.
+  void after_step(const SimulationState& state) override;
   /// The explicit integrator plans for the closed clip from the start.
   double worst_case_node_stiffness() const override { return stiffness_; }
   std::span<const int> worst_case_nodes() const override { return globals_; }

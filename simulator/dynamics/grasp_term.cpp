@@ -33,19 +33,16 @@ void GraspTerm::move_jaws(const Vec3& tip, const core::Mat3& rotation) {
 }
 
 void GraspTerm::topology_changed(const SimulationState& state, int body) {
-  // Held nodes are found again by their rest positions; their offsets stay with them.
-  std::vector<std::pair<NodeReference, Vec3>> before;
-  for (std::size_t k = 0; k < held_.size(); ++k)
-    before.emplace_back(held_[k], offsets_[k]);
-  refind_nodes(state, body, held_);
+  // Held nodes are found again by their rest and last positions; their offsets stay with them.
+  const std::vector<Vec3> before = std::move(offsets_);
   offsets_.clear();
-  for (const NodeReference& r : held_) {
-    const auto it = std::find_if(before.begin(), before.end(), [&](const auto& b) {
-      return b.first.body == r.body && b.first.rest == r.rest;
-    });
-    offsets_.push_back(it->second);
-  }
+  for (const std::size_t k : refind_nodes(state, body, held_))
+    offsets_.push_back(before[k]);
   refresh_globals(state);
+}
+
+void GraspTerm::after_step(const SimulationState& state) {
+  note_positions(state, held_);
 }
 
 double GraspTerm::energy(std::span<const Vec3> x) const {

@@ -34,6 +34,8 @@ class GraspTerm : public ForceTerm {
   void add_stiffness(std::span<const Vec3> x, double scale, bool project,
                      BlockSparseMatrix&) const override;
   void topology_changed(const SimulationState& state, int body) override;
+  /// Notes where the held nodes are, so that a later cut finds the held copy of each.
+  void after_step(const SimulationState& state) override;
 
   /// Closes the jaws on `nodes` with the jaw frame at `tip` (m) and `rotation` (columns: the
   /// frame's axes in world); replaces whatever was held.

@@ -110,6 +110,56 @@ TEST(NodeReference, a_reference_finds_its_node_again_after_the_body_is_renumbere
   EXPECT_EQ(refs[1].node, 1);
 }
 
+TEST(NodeReference, of_two_copies_of_a_cut_node_the_reference_keeps_the_one_it_last_saw) {
+  // A chip cut off earlier shares its rest positions with the wall it came from: here node 1's
+  // twin (node 0, the lower index) stayed 2 cm away while node 1 was carried off.
+  SimulationState state = four_nodes();
+  BodyNodeData data;
+  data.rest = {{0.02, 0.0, -0.002}, {0.02, 0.0, -0.002}, {0.0, 0.02, -0.001}};
+  data.positions = {{0.02, 0.0, -0.002}, {0.02, 0.0, 0.018}, {0.0, 0.02, -0.001}};
+  data.masses.assign(3, 1e-3);
+  state.replace_body_nodes(0, data);
+  std::vector<NodeReference> refs = {reference_node(state, 0, 1), reference_node(state, 0, 2)};
+  EXPECT_EQ(refs[0].seen, core::Vec3(0.02, 0.0, 0.018));
+  // Renumbered by a later cut (the carried copy is now last); the reference follows it.
+  data.rest = {{0.02, 0.0, -0.002}, {0.0, 0.02, -0.001}, {0.02, 0.0, -0.002}};
+  data.positions = {{0.02, 0.0, -0.002}, {0.0, 0.02, -0.001}, {0.02, 0.0, 0.0185}};
+  state.replace_body_nodes(0, data);
+  EXPECT_EQ(refind_nodes(state, 0, refs), (std::vector<std::size_t>{0, 1}));
+  EXPECT_EQ(refs[0].node, 2);
+  EXPECT_EQ(refs[1].node, 1);
+  // A step brings it back beside its twin; note_positions records where, and refind keeps it.
+  state.positions[2] = core::Vec3(0.02, 0.0, -0.0017);
+  note_positions(state, refs);
+  EXPECT_EQ(refs[0].seen, core::Vec3(0.02, 0.0, -0.0017));
+  refind_nodes(state, 0, refs);
+  EXPECT_EQ(refs[0].node, 2);
+}
+
+TEST(GraspTerm, a_cut_elsewhere_in_the_body_leaves_the_jaws_on_the_copies_they_hold) {
+  // Jaws hold node 1, whose twin at the same rest position stays behind 2 cm away; a cut that
+  // renumbers the body must not hand the jaws the twin (they would yank it across the cavity).
+  SimulationState state = four_nodes();
+  BodyNodeData data;
+  data.rest = {{0.02, 0.0, -0.002}, {0.02, 0.0, -0.002}, {0.0, 0.02, -0.001}};
+  data.positions = {{0.02, 0.0, -0.002}, {0.02, 0.0, 0.018}, {0.0, 0.02, -0.001}};
+  data.masses.assign(3, 1e-3);
+  state.replace_body_nodes(0, data);
+  GraspTerm grasp(30.0);
+  grasp.hold(state, {reference_node(state, 0, 1), reference_node(state, 0, 2)},
+             core::Vec3(0.01, 0.01, 0.01), core::Mat3::Identity());
+  grasp.after_step(state);
+  data.rest.push_back({0.01, 0.01, 0.0});  // the cut's new node, appended
+  data.positions.push_back({0.01, 0.01, 0.0});
+  data.masses.push_back(1e-3);
+  state.replace_body_nodes(0, data);
+  grasp.topology_changed(state, 0);
+  ASSERT_EQ(grasp.held().size(), 2u);
+  EXPECT_EQ(grasp.held()[0].node, 1);
+  EXPECT_EQ(grasp.held()[1].node, 2);
+  EXPECT_NEAR(grasp.largest_node_force(state.positions), 0.0, 1e-12);
+}
+
 TEST(SurgicalSmoke, puffs_rise_grow_and_fade_and_the_same_steps_give_the_same_smoke) {
   const core::Vec3 up = core::Vec3::UnitZ(), site = core::Vec3::Zero();
   const core::Vec3 far_lens(0.5, 0.0, 0.0);

@@ -109,6 +109,8 @@ void ClipTerm::topology_changed(const SimulationState& state, int body) {
     globals_.push_back(r.global(state));
 }
 
-void ClipTerm::after_step(const SimulationState& state) { note_positions(state, nodes_); }
+void ClipTerm::after_step(const SimulationState& state) {
+  note_positions(state, nodes_);
+}
 
 }  // namespace viscera::sim

@@ -36,12 +36,13 @@ bool ChipRetrieval::try_catch(const InstrumentState& state, World& world,
   const SimulationState& s = world.state();
   for (const Chip& chip : resection.chips()) {
     const int first = s.body(chip.body).first;
+    const bool within_reach = std::any_of(chip.nodes.begin(), chip.nodes.end(), [&](int n) {
+      return (s.positions[static_cast<std::size_t>(first + n)] - pose.position).norm() <= reach;
+    });
+    if (!within_reach) continue;
     std::vector<NodeReference> held;
-    for (const int n : chip.nodes) {
-      const core::Vec3& x = s.positions[static_cast<std::size_t>(first + n)];
-      if ((x - pose.position).norm() <= reach) held.push_back(reference_node(s, chip.body, n));
-    }
-    if (held.empty()) continue;
+    for (const int n : chip.nodes)
+      held.push_back(reference_node(s, chip.body, n));
     const std::size_t count = held.size();
     hold_->hold(s, std::move(held), pose.position, pose.rotation);
     world.stiffness_changed();

@@ -8,9 +8,11 @@
 ///   `catch_extension` and drawn back to within it with both pedals up (as the surgeon hooks a
 ///   chip; the strokes of a cut, drawn back with the cutting pedal down, catch nothing), and
 ///   the first chip (in LoopResection::chips() order) with a node within the loop's radius plus
-///   `catch_reach` of the loop's centre is held — those of its nodes are tied to the loop frame by
-///   springs (a GraspTerm), so the chip moves with the instrument and still meets the wall through
-///   body contact.
+///   `catch_reach` of the loop's centre is held — every node of it is tied to the loop frame by
+///   springs (a GraspTerm): the loop clamps the chip against the sheath, so the chip moves whole
+///   with the instrument and still meets the wall through body contact. (Holding only the nodes
+///   within reach left the rest of a larger myoma chip dangling: drawn through the canal, it
+///   stretched past the tearing threshold and tore again and again.)
 /// - Extending the loop again or pressing a pedal lets go of it.
 /// - It is retrieved when the tip is drawn back to where the session started it, 3 mm inside the
 ///   internal os (manual_control.h starting_pose): the sheath, the loop and the chip are then in

@@ -29,6 +29,16 @@ core::Vec3 centre_of(const World& world, const Chip& chip) {
   return sum / static_cast<double>(chip.nodes.size());
 }
 
+/// m, the largest distance of a chip node from the chip's centre.
+double extent_of(const World& world, const Chip& chip) {
+  const auto x = world.state().range(world.state().positions, chip.body);
+  const core::Vec3 centre = centre_of(world, chip);
+  double extent = 0.0;
+  for (const int n : chip.nodes)
+    extent = std::max(extent, (x[static_cast<std::size_t>(n)] - centre).norm());
+  return extent;
+}
+
 core::Vec3 lerp(const core::Vec3& a, const core::Vec3& b, double s) {
   return a + std::clamp(s, 0.0, 1.0) * (b - a);
 }
@@ -41,6 +51,10 @@ struct RetrievalRun {
   double farthest_from_loop = 0.0;  ///< m, chip centre to loop centre while carried
   double carried = 0.0;             ///< m the chip's centre travelled while held
   double tip_travel = 0.0;          ///< m the tip travelled meanwhile
+  std::size_t chip_nodes = 0;       ///< nodes of the chip caught
+  std::size_t held_nodes = 0;       ///< of them, held by the loop when caught
+  double extent_caught = 0.0;       ///< m, the chip's extent (extent_of) when caught
+  double extent_carried = 0.0;      ///< m, its largest extent while carried
   double polyp_mass_before = 0.0;   ///< kg
   double polyp_mass_after = 0.0;    ///< kg
   int everted_at_end = -1;
@@ -111,7 +125,15 @@ RetrievalRun scoop_and_retrieve(const core::Scenario& scenario) {
                                    [&](const Chip& c) { return c.nodes == chip.nodes; });
       if (it == now.end()) continue;
       const core::Vec3 centre = centre_of(world, *it);
-      if (held_from.isZero()) held_from = centre, tip_from = pose.tip;
+      if (held_from.isZero()) {
+        held_from = centre, tip_from = pose.tip, r.extent_caught = extent_of(world, *it);
+        r.chip_nodes = it->nodes.size();
+        for (const auto& term : world.terms()) {
+          const auto* grasp = dynamic_cast<const GraspTerm*>(term.get());
+          if (grasp != nullptr && grasp->holding()) r.held_nodes = grasp->held().size();
+        }
+      }
+      r.extent_carried = std::max(r.extent_carried, extent_of(world, *it));
       r.carried = std::max(r.carried, (centre - held_from).norm());
       r.tip_travel = std::max(r.tip_travel, (pose.tip - tip_from).norm());
       r.farthest_from_loop =
@@ -140,6 +162,10 @@ TEST(ChipRetrieval, a_chip_hooked_with_the_loop_is_carried_out_through_the_cervi
   EXPECT_GT(r.tip_travel, 0.005);
   EXPECT_GT(r.carried, 0.8 * r.tip_travel);
   EXPECT_LT(r.farthest_from_loop, 0.006);
+  // The loop clamps the whole chip against the sheath: it rides whole, not drawn out by the
+  // nodes the loop reached.
+  EXPECT_EQ(r.held_nodes, r.chip_nodes);
+  EXPECT_LT(r.extent_carried, 1.1 * r.extent_caught);
   // Its tissue left the polyp: the body lost the chip's mass (ρ = m / V of the chip's tets).
   EXPECT_LT(r.polyp_mass_after, r.polyp_mass_before);
   EXPECT_NEAR(r.polyp_mass_before - r.polyp_mass_after,

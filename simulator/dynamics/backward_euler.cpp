@@ -27,6 +27,38 @@ void BackwardEuler::declare(const SimulationState& state, std::span<ForceTerm* c
   declared_ = true;
 }
 
+void BackwardEuler::precondition(const SimulationState& state, std::span<const Vec3> r,
+                                 std::span<Vec3> z) const {
+  // Block symmetric Gauss–Seidel, z = (D + U)⁻¹ D (D + L)⁻¹ r: a forward sweep solves
+  // (D + L) y = r, a backward sweep z_i = y_i − D_i⁻¹ Σ_{j>i} A_ij z_j. Fixed nodes' rows and
+  // columns are left out (their z is 0).
+  const auto& w = state.inverse_masses;
+  const std::size_t n = state.node_count();
+  for (std::size_t i = 0; i < n; ++i) {
+    if (w[i] == 0.0) {
+      z[i].setZero();
+      continue;
+    }
+    Vec3 sum = r[i];
+    const int begin = system_.row_begin(static_cast<int>(i));
+    const auto columns = system_.row_columns(static_cast<int>(i));
+    for (std::size_t k = 0; k < columns.size() && columns[k] < static_cast<int>(i); ++k)
+      sum.noalias() -=
+          system_.block(begin + static_cast<int>(k)) * z[static_cast<std::size_t>(columns[k])];
+    z[i] = preconditioner_[i] * sum;
+  }
+  for (std::size_t i = n; i-- > 0;) {
+    if (w[i] == 0.0) continue;
+    Vec3 sum = Vec3::Zero();
+    const int begin = system_.row_begin(static_cast<int>(i));
+    const auto columns = system_.row_columns(static_cast<int>(i));
+    for (std::size_t k = columns.size(); k-- > 0 && columns[k] > static_cast<int>(i);)
+      sum.noalias() +=
+          system_.block(begin + static_cast<int>(k)) * z[static_cast<std::size_t>(columns[k])];
+    z[i] -= preconditioner_[i] * sum;
+  }
+}
+
 int BackwardEuler::solve(const SimulationState& state, std::span<const Vec3> rhs,
                          std::span<Vec3> solution) {
   // Preconditioned conjugate gradients on the free nodes (fixed nodes masked to zero).
@@ -41,11 +73,14 @@ int BackwardEuler::solve(const SimulationState& state, std::span<const Vec3> rhs
     preconditioner_[i] = system_.block(system_.diagonal_slot(static_cast<int>(i))).inverse();
   }
   system_.multiply(solution, cg_q_);
-  double rhs_norm = 0.0, rz = 0.0;
+  double rhs_norm = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
     cg_r_[i] = w[i] == 0.0 ? Vec3::Zero() : Vec3(rhs[i] - cg_q_[i]);
     rhs_norm += rhs[i].squaredNorm() * (w[i] == 0.0 ? 0.0 : 1.0);
-    cg_z_[i] = preconditioner_[i] * cg_r_[i];
+  }
+  precondition(state, cg_r_, cg_z_);
+  double rz = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
     cg_p_[i] = cg_z_[i];
     rz += cg_r_[i].dot(cg_z_[i]);
   }
@@ -64,13 +99,14 @@ int BackwardEuler::solve(const SimulationState& state, std::span<const Vec3> rhs
     }
     if (!(pq > 0.0)) break;
     const double alpha = rz / pq;
-    double rz_next = 0.0;
     for (std::size_t i = 0; i < n; ++i) {
       solution[i] += alpha * cg_p_[i];
       cg_r_[i] -= alpha * cg_q_[i];
-      cg_z_[i] = preconditioner_[i] * cg_r_[i];
-      rz_next += cg_r_[i].dot(cg_z_[i]);
     }
+    precondition(state, cg_r_, cg_z_);
+    double rz_next = 0.0;
+    for (std::size_t i = 0; i < n; ++i)
+      rz_next += cg_r_[i].dot(cg_z_[i]);
     const double beta = rz_next / rz;
     rz = rz_next;
     for (std::size_t i = 0; i < n; ++i)

@@ -4,8 +4,10 @@
 ///   Φ(x') = ½ |x' − x − h v|²_M / h² + E(x') + ½ (x' − x)ᵀ D (x' − x) / h
 /// (D the damping matrix at the start of the step): each iteration solves
 ///   (M/h² + D/h + K̃) Δ = −∇Φ
-/// with K̃ the per-element PSD-projected Hessian, by conjugate gradients preconditioned with the
-/// inverse 3×3 diagonal blocks (block Jacobi), warm-started from the last step's correction,
+/// with K̃ the per-element PSD-projected Hessian, by conjugate gradients preconditioned with
+/// block symmetric Gauss–Seidel over the 3×3 blocks (one forward and one backward sweep in node
+/// order: about one more matrix product per iteration, a third of block Jacobi's iterations on
+/// a 20k-node block), warm-started from the last step's correction,
 /// followed by a backtracking line search on Φ that takes only finite, decreasing values (none
 /// in 12 halvings ends the step's iterations where they are; an infinite Φ at x̂ — a tet
 /// collapsed through the volume barrier — starts Newton at x instead). Φ decreases every
@@ -42,6 +44,8 @@ class BackwardEuler : public Integrator {
  private:
   void declare(const SimulationState& state, std::span<ForceTerm* const> terms);
   int solve(const SimulationState& state, std::span<const Vec3> rhs, std::span<Vec3> solution);
+  /// z = M⁻¹ r for the conjugate gradients (block symmetric Gauss–Seidel on the system).
+  void precondition(const SimulationState& state, std::span<const Vec3> r, std::span<Vec3> z) const;
 
   NewtonSettings settings_;
   bool declared_ = false;

@@ -149,7 +149,7 @@ class World {
   /// asleep.
   Settling settle(double h = 0.05, int max_steps = 30, double tolerance = 1e-7);
   static constexpr int kSettleNewtonIterations = 2;
-  static constexpr int kSettleCgIterations = 50;
+  static constexpr int kSettleCgIterations = 25;
 
   /// Sleeping (the deactivation of rigid-body engines): once no node has moved more than
   /// `threshold` m per step for kCalmStepsToSleep steps and the instrument touches nothing, the

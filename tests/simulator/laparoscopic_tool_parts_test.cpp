@@ -110,14 +110,21 @@ TEST(NodeReference, a_reference_finds_its_node_again_after_the_body_is_renumbere
   EXPECT_EQ(refs[1].node, 1);
 }
 
-TEST(NodeReference, of_two_copies_of_a_cut_node_the_reference_keeps_the_one_it_last_saw) {
-  // A chip cut off earlier shares its rest positions with the wall it came from: here node 1's
-  // twin (node 0, the lower index) stayed 2 cm away while node 1 was carried off.
-  SimulationState state = four_nodes();
+/// Three nodes where a cut left two copies of one (nodes 0 and 1 share a rest position): node
+/// 0 stayed in place, node 1 was carried 2 cm away (a chip drawn off the wall).
+BodyNodeData carried_twin() {
   BodyNodeData data;
   data.rest = {{0.02, 0.0, -0.002}, {0.02, 0.0, -0.002}, {0.0, 0.02, -0.001}};
   data.positions = {{0.02, 0.0, -0.002}, {0.02, 0.0, 0.018}, {0.0, 0.02, -0.001}};
   data.masses.assign(3, 1e-3);
+  return data;
+}
+
+TEST(NodeReference, of_two_copies_of_a_cut_node_the_reference_keeps_the_one_it_last_saw) {
+  // A chip cut off earlier shares its rest positions with the wall it came from: here node 1's
+  // twin (node 0, the lower index) stayed 2 cm away while node 1 was carried off.
+  SimulationState state = four_nodes();
+  BodyNodeData data = carried_twin();
   state.replace_body_nodes(0, data);
   std::vector<NodeReference> refs = {reference_node(state, 0, 1), reference_node(state, 0, 2)};
   EXPECT_EQ(refs[0].seen, core::Vec3(0.02, 0.0, 0.018));
@@ -140,10 +147,7 @@ TEST(GraspTerm, a_cut_elsewhere_in_the_body_leaves_the_jaws_on_the_copies_they_h
   // Jaws hold node 1, whose twin at the same rest position stays behind 2 cm away; a cut that
   // renumbers the body must not hand the jaws the twin (they would yank it across the cavity).
   SimulationState state = four_nodes();
-  BodyNodeData data;
-  data.rest = {{0.02, 0.0, -0.002}, {0.02, 0.0, -0.002}, {0.0, 0.02, -0.001}};
-  data.positions = {{0.02, 0.0, -0.002}, {0.02, 0.0, 0.018}, {0.0, 0.02, -0.001}};
-  data.masses.assign(3, 1e-3);
+  BodyNodeData data = carried_twin();
   state.replace_body_nodes(0, data);
   GraspTerm grasp(30.0);
   grasp.hold(state, {reference_node(state, 0, 1), reference_node(state, 0, 2)},

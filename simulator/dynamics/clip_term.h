@@ -41,6 +41,8 @@ class ClipTerm : public ForceTerm {
   void topology_changed(const SimulationState& state, int body) override;
   /// Notes where the squeezed nodes are, so that a later cut finds the squeezed copy of each.
   void after_step(const SimulationState& state) override;
+  /// Once per step: cuts come between steps, not between an explicit integrator's sub-steps.
+  bool after_each_substep() const override { return false; }
   /// The explicit integrator plans for the closed clip from the start.
   double worst_case_node_stiffness() const override { return stiffness_; }
   std::span<const int> worst_case_nodes() const override { return globals_; }

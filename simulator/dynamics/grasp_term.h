@@ -36,6 +36,8 @@ class GraspTerm : public ForceTerm {
   void topology_changed(const SimulationState& state, int body) override;
   /// Notes where the held nodes are, so that a later cut finds the held copy of each.
   void after_step(const SimulationState& state) override;
+  /// Once per step: cuts come between steps, not between an explicit integrator's sub-steps.
+  bool after_each_substep() const override { return false; }
 
   /// Closes the jaws on `nodes` with the jaw frame at `tip` (m) and `rotation` (columns: the
   /// frame's axes in world); replaces whatever was held.

@@ -1,7 +1,6 @@
 #include "simulator/dynamics/node_reference.h"
 
 #include <algorithm>
-#include <cmath>
 #include <limits>
 
 namespace viscera::sim {

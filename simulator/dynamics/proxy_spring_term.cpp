@@ -39,6 +39,7 @@ void ProxySpringTerm::rebuild(const SimulationState& state, int changed_body) {
   // A new surface: the proxy starts free where it is and finds its contact at the next step.
   proxy_.reset(proxy_.proxy());
   active_ = {-1, -1, -1};
+  tree_built_ = false;
 }
 
 void ProxySpringTerm::topology_changed(const SimulationState& state, int body) {
@@ -46,10 +47,17 @@ void ProxySpringTerm::topology_changed(const SimulationState& state, int body) {
 }
 
 void ProxySpringTerm::prepare(const SimulationState& state, const StepContext&) {
-  proxy_.update(tip_, *surface_, state.positions);
+  if (!tree_built_) {
+    tree_ = ProxySurfaceTree(surface_->faces(), state.positions);
+    tree_built_ = true;
+  } else if (surface_moved_) {
+    tree_.refit(surface_->faces(), state.positions);
+  }
+  surface_moved_ = false;
+  proxy_.update(tip_, *surface_, state.positions, &tree_);
   // The wall may have swung over the tip since the last step (it overshoots when pushed and
   // springs back): that is a contact the path test alone misses.
-  proxy_.recapture(*surface_, state.positions);
+  proxy_.recapture(*surface_, state.positions, &tree_);
   if (proxy_.in_contact()) {
     const auto& c = proxy_.contact();
     active_ = surface_->faces()[static_cast<std::size_t>(c.triangle)];
@@ -60,6 +68,7 @@ void ProxySpringTerm::prepare(const SimulationState& state, const StepContext&) 
 }
 
 void ProxySpringTerm::after_step(const SimulationState& state) {
+  surface_moved_ = true;
   if (proxy_.in_contact()) proxy_.update(tip_, *surface_, state.positions);
 }
 

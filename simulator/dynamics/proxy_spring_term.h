@@ -49,6 +49,10 @@ class ProxySpringTerm : public ForceTerm {
   std::vector<std::shared_ptr<const BodyModel>> models_;
   std::vector<ProxySurface> body_surfaces_;  ///< per body, in its own node numbers
   std::unique_ptr<ProxySurface> surface_;
+  /// surface_'s box tree: built at the first prepare() after a rebuild, refitted at a prepare()
+  /// after the positions moved (an integrated step); a sleeping world's steps reuse it.
+  ProxySurfaceTree tree_;
+  bool tree_built_ = false, surface_moved_ = true;
   std::vector<int> face_body_, face_first_;  ///< per global face: body; per body: first face
   std::vector<int> surface_nodes_;
   HapticProxy proxy_;

@@ -110,7 +110,7 @@ core::Vec3 HapticProxy::force() const {
 }
 
 void HapticProxy::update(const core::Vec3& tip, const ProxySurface& surface,
-                         std::span<const core::Vec3> x) {
+                         std::span<const core::Vec3> x, const ProxySurfaceTree* tree) {
   tip_ = tip;
   const auto& faces = surface.faces();
   const auto corner = [&](int t, int k) -> const core::Vec3& {
@@ -155,7 +155,12 @@ void HapticProxy::update(const core::Vec3& tip, const ProxySurface& surface,
   // Free: does the path from the proxy to the tip enter the surface from outside?
   double first = std::numeric_limits<double>::infinity();
   int hit = -1;
-  for (std::size_t t = 0; t < faces.size(); ++t) {
+  if (tree != nullptr) {
+    const ProxySurfaceTree::Entry entry = tree->first_entry(proxy_, tip, faces, x);
+    hit = entry.face;
+    first = entry.s;
+  }
+  for (std::size_t t = 0; tree == nullptr && t < faces.size(); ++t) {
     const core::Vec3& a = x[faces[t][0]];
     const core::Vec3& b = x[faces[t][1]];
     const core::Vec3& c = x[faces[t][2]];
@@ -174,10 +179,11 @@ void HapticProxy::update(const core::Vec3& tip, const ProxySurface& surface,
   proxy_ = closest_point_on_triangle(proxy_ + first * (tip - proxy_), corner(hit, 0),
                                      corner(hit, 1), corner(hit, 2), w);
   contact_ = {hit, w};
-  update(tip, surface, x);  // settle on the surface point nearest the tip
+  update(tip, surface, x, tree);  // settle on the surface point nearest the tip
 }
 
-bool HapticProxy::recapture(const ProxySurface& surface, std::span<const core::Vec3> x) {
+bool HapticProxy::recapture(const ProxySurface& surface, std::span<const core::Vec3> x,
+                            const ProxySurfaceTree* tree) {
   if (in_contact()) return false;
   const auto& faces = surface.faces();
   // A direction no mesh built on axes or regular polyhedra lines up with, so the ray meets
@@ -185,8 +191,12 @@ bool HapticProxy::recapture(const ProxySurface& surface, std::span<const core::V
   const core::Vec3 far =
       tip_ + 1.0e3 * core::Vec3(0.5773502691896257, 0.5773662691896258, 0.5773342691896259);
   int crossings = 0;
-  for (const auto& f : faces) {
-    if (segment_triangle_intersection(tip_, far, x[f[0]], x[f[1]], x[f[2]]) >= 0.0) ++crossings;
+  if (tree != nullptr) {
+    crossings = tree->crossings(tip_, far, faces, x);
+  } else {
+    for (const auto& f : faces) {
+      if (segment_triangle_intersection(tip_, far, x[f[0]], x[f[1]], x[f[2]]) >= 0.0) ++crossings;
+    }
   }
   if (crossings % 2 == 0) return false;
   int nearest = -1;

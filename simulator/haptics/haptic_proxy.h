@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/math_types.h"
+#include "simulator/haptics/proxy_surface_tree.h"
 
 namespace viscera::sim {
 
@@ -50,8 +51,10 @@ class HapticProxy {
   /// proxy goes to the tip unless the segment from the old proxy to the tip enters the surface
   /// from outside, which starts a contact at the crossing. In contact: the proxy walks over the
   /// surface to the point nearest the tip, or is released when the tip is back outside.
+  /// `tree`, when given, is `surface`'s box tree fitted to `positions`: the same answer, found
+  /// without testing every triangle.
   void update(const core::Vec3& tip, const ProxySurface& surface,
-              std::span<const core::Vec3> positions);
+              std::span<const core::Vec3> positions, const ProxySurfaceTree* tree = nullptr);
 
   const core::Vec3& proxy() const { return proxy_; }
   /// Proxy–tip spring stiffness in N/m.
@@ -65,8 +68,10 @@ class HapticProxy {
   /// For a free proxy whose tip lies inside the closed `surface` (a moving wall swept over the
   /// tip, which the path test of update() cannot see): starts the contact at the surface point
   /// nearest the tip and returns true. Inside is decided by the parity of the crossings of a
-  /// ray from the tip. Does nothing (false) in contact or with the tip outside.
-  bool recapture(const ProxySurface& surface, std::span<const core::Vec3> positions);
+  /// ray from the tip. Does nothing (false) in contact or with the tip outside. `tree` as for
+  /// update().
+  bool recapture(const ProxySurface& surface, std::span<const core::Vec3> positions,
+                 const ProxySurfaceTree* tree = nullptr);
 
  private:
   double stiffness_;

@@ -13,6 +13,7 @@ class BodyTerm : public ForceTerm {
  public:
   explicit BodyTerm(std::shared_ptr<const BodyModel> model) : model_(std::move(model)) {}
   const BodyModel& model() const { return *model_; }
+  int body() const override { return model_->body; }
   /// Own body: rebuild from the (updated) model; another body: shift indices if the range moved.
   void topology_changed(const SimulationState& state, int body) override;
 

@@ -1,5 +1,6 @@
 #include "simulator/dynamics/explicit_verlet.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -9,7 +10,16 @@ namespace viscera::sim {
 
 double largest_eigenvalue(const BlockSparseMatrix& a, std::span<const double> inverse_mass,
                           int max_iterations, double tolerance) {
+  const std::vector<int> one_group(a.node_count(), 0);
+  return largest_eigenvalues(a, inverse_mass, one_group, 1, max_iterations, tolerance)[0];
+}
+
+std::vector<double> largest_eigenvalues(const BlockSparseMatrix& a,
+                                        std::span<const double> inverse_mass,
+                                        std::span<const int> group_of_node, int groups,
+                                        int max_iterations, double tolerance) {
   const std::size_t n = a.node_count();
+  const auto g_count = static_cast<std::size_t>(groups);
   std::vector<double> scale(n);
   for (std::size_t i = 0; i < n; ++i)
     scale[i] = std::sqrt(inverse_mass[i]);
@@ -21,28 +31,49 @@ double largest_eigenvalue(const BlockSparseMatrix& a, std::span<const double> in
       seed = seed * 6364136223846793005ull + 1442695040888963407ull;
       p[k] = static_cast<double>(seed >> 11) * 0x1.0p-53 - 0.5;
     }
-  double lambda = 0.0, checkpoint = 0.0;
-  for (int it = 0; it < max_iterations; ++it) {
-    double norm = 0.0;
+  std::vector<double> lambda(g_count, 0.0), checkpoint(g_count, 0.0), norm(g_count),
+      quotient(g_count);
+  std::vector<char> running(g_count, 1);
+  int still_running = groups;
+  const auto group = [&](std::size_t i) { return static_cast<std::size_t>(group_of_node[i]); };
+  for (int it = 0; it < max_iterations && still_running > 0; ++it) {
+    std::fill(norm.begin(), norm.end(), 0.0);
     for (std::size_t i = 0; i < n; ++i) {
       x[i] *= scale[i] > 0.0 ? 1.0 : 0.0;
-      norm += x[i].squaredNorm();
+      if (group_of_node[i] >= 0) norm[group(i)] += x[i].squaredNorm();
     }
-    norm = std::sqrt(norm);
-    if (!(norm > 0.0)) return 0.0;
-    for (std::size_t i = 0; i < n; ++i)
-      scaled[i] = x[i] * (scale[i] / norm);
+    for (std::size_t g = 0; g < g_count; ++g) {
+      norm[g] = std::sqrt(norm[g]);
+      if (running[g] != 0 && !(norm[g] > 0.0)) {
+        lambda[g] = 0.0;  // every node held: no motion to bound
+        running[g] = 0;
+        --still_running;
+      }
+    }
+    if (still_running == 0) break;
+    for (std::size_t i = 0; i < n; ++i) {
+      const bool on = group_of_node[i] >= 0 && running[group(i)] != 0;
+      scaled[i] = on ? Vec3(x[i] * (scale[i] / norm[group(i)])) : Vec3::Zero();
+    }
     a.multiply(scaled, y);
-    double quotient = 0.0;
+    std::fill(quotient.begin(), quotient.end(), 0.0);
     for (std::size_t i = 0; i < n; ++i) {
       y[i] *= scale[i];
-      quotient += y[i].dot(x[i]) / norm;
+      if (group_of_node[i] >= 0 && running[group(i)] != 0)
+        quotient[group(i)] += y[i].dot(x[i]) / norm[group(i)];
     }
-    lambda = std::max(lambda, quotient);
+    for (std::size_t g = 0; g < g_count; ++g)
+      if (running[g] != 0) lambda[g] = std::max(lambda[g], quotient[g]);
     x.swap(y);
     if (it % 20 == 19) {
-      if (lambda <= checkpoint * (1.0 + tolerance)) break;
-      checkpoint = lambda;
+      for (std::size_t g = 0; g < g_count; ++g) {
+        if (running[g] == 0) continue;
+        if (lambda[g] <= checkpoint[g] * (1.0 + tolerance)) {
+          running[g] = 0;
+          --still_running;
+        }
+        checkpoint[g] = lambda[g];
+      }
     }
   }
   return lambda;
@@ -66,23 +97,134 @@ void ExplicitVerlet::topology_changed(const SimulationState& state,
       for (const int node : t->worst_case_nodes())
         stiffness.block(stiffness.diagonal_slot(node)) += k * Mat3::Identity();
   }
-  const double omega_squared = largest_eigenvalue(stiffness, state.inverse_masses);
-  const double damping_rate = largest_eigenvalue(damping, state.inverse_masses);
-  stable_step_ = kStableStepSafety * verlet_stable_step(omega_squared, damping_rate);
+
+  // Islands: bodies joined by a declared block, numbered in the order of their lowest body.
+  const auto& bodies = state.bodies();
+  std::vector<int> body_of_node(state.node_count(), -1), root(bodies.size());
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    root[b] = static_cast<int>(b);
+    for (int k = 0; k < bodies[b].count; ++k)
+      body_of_node[static_cast<std::size_t>(bodies[b].first + k)] = static_cast<int>(b);
+  }
+  const auto find = [&](int b) {
+    while (root[static_cast<std::size_t>(b)] != b)
+      b = root[static_cast<std::size_t>(b)] =
+          root[static_cast<std::size_t>(root[static_cast<std::size_t>(b)])];
+    return b;
+  };
+  for (const auto& [i, j] : pattern.pairs()) {
+    const int a = body_of_node[static_cast<std::size_t>(i)];
+    const int b = body_of_node[static_cast<std::size_t>(j)];
+    if (a < 0 || b < 0) continue;
+    const int ra = find(a), rb = find(b);
+    if (ra != rb) root[static_cast<std::size_t>(std::max(ra, rb))] = std::min(ra, rb);
+  }
+  islands_.clear();
+  island_of_body_.assign(bodies.size(), -1);
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    const int r = find(static_cast<int>(b));
+    if (island_of_body_[static_cast<std::size_t>(r)] < 0) {
+      island_of_body_[static_cast<std::size_t>(r)] = static_cast<int>(islands_.size());
+      islands_.emplace_back();
+    }
+    const int island = island_of_body_[static_cast<std::size_t>(r)];
+    island_of_body_[b] = island;
+    for (int k = 0; k < bodies[b].count; ++k)
+      islands_[static_cast<std::size_t>(island)].nodes.push_back(bodies[b].first + k);
+  }
+  every_node_in_an_island_ =
+      std::none_of(body_of_node.begin(), body_of_node.end(), [](int b) { return b < 0; });
+  std::vector<int> group_of_node(state.node_count(), -1);
+  for (std::size_t i = 0; i < group_of_node.size(); ++i)
+    if (body_of_node[i] >= 0)
+      group_of_node[i] = island_of_body_[static_cast<std::size_t>(body_of_node[i])];
+  const int groups = static_cast<int>(islands_.size());
+  const auto omega_squared =
+      largest_eigenvalues(stiffness, state.inverse_masses, group_of_node, groups);
+  const auto damping_rate =
+      largest_eigenvalues(damping, state.inverse_masses, group_of_node, groups);
+  stable_step_ = std::numeric_limits<double>::infinity();
+  for (std::size_t g = 0; g < islands_.size(); ++g) {
+    islands_[g].stable_step =
+        kStableStepSafety * verlet_stable_step(omega_squared[g], damping_rate[g]);
+    stable_step_ = std::min(stable_step_, islands_[g].stable_step);
+  }
+  if (islands_.empty()) stable_step_ = kStableStepSafety * verlet_stable_step(0.0, 0.0);
   forces_.assign(state.node_count(), Vec3::Zero());
+  shared_impulse_.assign(state.node_count(), Vec3::Zero());
   ready_ = true;
+}
+
+std::vector<double> ExplicitVerlet::island_stable_steps() const {
+  std::vector<double> out;
+  for (const Island& island : islands_)
+    out.push_back(island.stable_step);
+  return out;
+}
+
+std::vector<int> ExplicitVerlet::needed_substeps(double h) const {
+  std::vector<int> out;
+  for (const Island& island : islands_)
+    out.push_back(std::isfinite(island.stable_step)
+                      ? std::max(1, static_cast<int>(std::ceil(h / island.stable_step - 1e-12)))
+                      : 1);
+  return out;
+}
+
+namespace {
+
+/// The smallest of 1, 2, 3, 4, 6, 8, 12, 16, 24, … (2^k and 3·2^k) not below `n`: a count of
+/// fine sub-steps with many divisors for the slower islands.
+int rich_count(int n) {
+  for (int p = 1;; p *= 2) {
+    if (p >= n) return p;
+    if (3 * p / 2 >= n && p >= 2) return 3 * p / 2;
+  }
+}
+
+/// The smallest divisor of `fine` not below `need`.
+int divisor_at_least(int fine, int need) {
+  for (int d = std::max(1, need); d < fine; ++d)
+    if (fine % d == 0) return d;
+  return fine;
+}
+
+}  // namespace
+
+int ExplicitVerlet::substeps(double h) const {
+  const std::vector<int> need = needed_substeps(h);
+  if (need.empty()) return 1;
+  const int most = *std::max_element(need.begin(), need.end());
+  const bool uniform = !every_node_in_an_island_ ||
+                       std::all_of(need.begin(), need.end(), [&](int k) { return k == most; });
+  return uniform ? most : rich_count(most);
 }
 
 StepStatistics ExplicitVerlet::step(SimulationState& state, std::span<ForceTerm* const> terms,
                                     const StepContext& context) {
   if (!ready_ || forces_.size() != state.node_count()) topology_changed(state, terms);
   StepStatistics stats;
-  stats.substeps = std::isfinite(stable_step_)
-                       ? std::max(1, static_cast<int>(std::ceil(context.h / stable_step_ - 1e-12)))
-                       : 1;
-  const double h = context.h / stats.substeps;
+  const std::vector<int> need = needed_substeps(context.h);
+  const int most = need.empty() ? 1 : *std::max_element(need.begin(), need.end());
+  if (!every_node_in_an_island_ ||
+      std::all_of(need.begin(), need.end(), [&](int k) { return k == most; })) {
+    stats.substeps = most;
+    step_uniform(state, terms, context, most);
+    return stats;
+  }
+  stats.substeps = rich_count(most);
+  std::vector<int> strides;
+  for (const int k : need)
+    strides.push_back(stats.substeps / divisor_at_least(stats.substeps, k));
+  step_multirate(state, terms, context, stats.substeps, strides);
+  return stats;
+}
+
+void ExplicitVerlet::step_uniform(SimulationState& state, std::span<ForceTerm* const> terms,
+                                  const StepContext& context, int substeps) {
+  const double h = context.h / substeps;
   const std::size_t n = state.node_count();
-  for (int s = 0; s < stats.substeps; ++s) {
+  for (int s = 0; s < substeps; ++s) {
     const StepContext sub{context.time + s * h, h, context.step};
     for (ForceTerm* t : terms)
       t->prepare(state, sub);
@@ -100,11 +242,68 @@ StepStatistics ExplicitVerlet::step(SimulationState& state, std::span<ForceTerm*
       state.positions[i] += h * state.velocities[i];
     }
     state.time += h;
-    const bool last = s + 1 == stats.substeps;
+    const bool last = s + 1 == substeps;
     for (ForceTerm* t : terms)
       if (last || t->after_each_substep()) t->after_step(state);
   }
-  return stats;
+}
+
+void ExplicitVerlet::step_multirate(SimulationState& state, std::span<ForceTerm* const> terms,
+                                    const StepContext& context, int fine,
+                                    const std::vector<int>& strides) {
+  std::vector<ForceTerm*> shared;
+  std::vector<std::vector<ForceTerm*>> own(islands_.size());
+  for (ForceTerm* t : terms) {
+    const int b = t->body();
+    if (b >= 0 && b < static_cast<int>(island_of_body_.size()))
+      own[static_cast<std::size_t>(island_of_body_[static_cast<std::size_t>(b)])].push_back(t);
+    else
+      shared.push_back(t);
+  }
+  const double h = context.h / fine;
+  // The shared terms' forces add up in shared_impulse_ over the fine sub-steps until the
+  // island of each node takes their mean and clears them.
+  std::fill(shared_impulse_.begin(), shared_impulse_.end(), Vec3::Zero());
+  for (int s = 0; s < fine; ++s) {
+    const bool last = s + 1 == fine;
+    const StepContext sub{context.time + s * h, h, context.step};
+    for (ForceTerm* t : shared)
+      t->prepare(state, sub);
+    for (ForceTerm* t : shared)
+      t->add_forces(state.positions, state.velocities, shared_impulse_);
+    for (std::size_t g = 0; g < islands_.size(); ++g) {
+      const std::vector<int>& nodes = islands_[g].nodes;
+      const int stride = strides[g];
+      if ((s + 1) % stride != 0) continue;
+      // The island's own sub-step, from the fine sub-step it began at.
+      const double big = stride * h;
+      const StepContext own_sub{context.time + (s + 1 - stride) * h, big, context.step};
+      for (ForceTerm* t : own[g])
+        t->prepare(state, own_sub);
+      for (const int i : nodes)
+        forces_[static_cast<std::size_t>(i)].setZero();
+      for (ForceTerm* t : own[g])
+        t->add_forces(state.positions, state.velocities, forces_);
+      const double mean = 1.0 / stride;
+      for (const int node : nodes) {
+        const auto i = static_cast<std::size_t>(node);
+        const double w = state.inverse_masses[i];
+        const Vec3 force = forces_[i] + mean * shared_impulse_[i];
+        shared_impulse_[i].setZero();
+        if (w == 0.0) {
+          state.velocities[i].setZero();
+          continue;
+        }
+        state.velocities[i] += (big * w) * force;
+        state.positions[i] += big * state.velocities[i];
+      }
+      for (ForceTerm* t : own[g])
+        if (last || t->after_each_substep()) t->after_step(state);
+    }
+    state.time += h;
+    for (ForceTerm* t : shared)
+      if (last || t->after_each_substep()) t->after_step(state);
+  }
 }
 
 }  // namespace viscera::sim

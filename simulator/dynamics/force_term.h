@@ -59,6 +59,11 @@ class ForceTerm {
   virtual double worst_case_node_stiffness() const { return 0.0; }
   /// Global nodes to which worst_case_node_stiffness() applies (empty: none).
   virtual std::span<const int> worst_case_nodes() const { return {}; }
+  /// The body whose nodes alone this term touches (its internal energies), or −1 for a term
+  /// that may touch any body's nodes (contact, the proxy, gravity, tools). An explicit
+  /// integrator that steps bodies at their own rates evaluates a body's own terms only at that
+  /// body's sub-steps.
+  virtual int body() const { return -1; }
   /// True while the term moves what it acts on from outside the state (a grasper's jaws, a clip
   /// still closing): a world with such a term neither falls asleep nor stays asleep.
   virtual bool drives() const { return false; }

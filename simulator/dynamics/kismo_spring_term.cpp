@@ -69,8 +69,7 @@ double KismoSpringTerm::energy(std::span<const Vec3> x) const {
 
 double KismoSpringTerm::add_forces(std::span<const Vec3> x, std::span<const Vec3> v,
                                    std::span<Vec3> f) const {
-  add_spring_damping_forces(x, v, springs_, f);
-  return add_cubic_spring_forces(x, springs_, f);
+  return add_damped_cubic_spring_forces(x, v, springs_, f);
 }
 
 void KismoSpringTerm::declare_blocks(BlockPattern& pattern) const {

@@ -46,18 +46,19 @@ void ProxySpringTerm::topology_changed(const SimulationState& state, int body) {
   rebuild(state, body);
 }
 
-void ProxySpringTerm::prepare(const SimulationState& state, const StepContext&) {
+void ProxySpringTerm::prepare(const SimulationState& state, const StepContext& context) {
   if (!tree_built_) {
     tree_ = ProxySurfaceTree(surface_->faces(), state.positions);
     tree_built_ = true;
-  } else if (surface_moved_) {
-    tree_.refit(surface_->faces(), state.positions);
   }
-  surface_moved_ = false;
   proxy_.update(tip_, *surface_, state.positions, &tree_);
   // The wall may have swung over the tip since the last step (it overshoots when pushed and
-  // springs back): that is a contact the path test alone misses.
-  proxy_.recapture(*surface_, state.positions, &tree_);
+  // springs back): that is a contact the path test alone misses. Once per step, at its first
+  // (sub-)step: the tip moves between steps, not between an explicit integrator's sub-steps.
+  if (context.step != recaptured_at_step_) {
+    recaptured_at_step_ = context.step;
+    proxy_.recapture(*surface_, state.positions, &tree_);
+  }
   if (proxy_.in_contact()) {
     const auto& c = proxy_.contact();
     active_ = surface_->faces()[static_cast<std::size_t>(c.triangle)];
@@ -68,7 +69,7 @@ void ProxySpringTerm::prepare(const SimulationState& state, const StepContext&) 
 }
 
 void ProxySpringTerm::after_step(const SimulationState& state) {
-  surface_moved_ = true;
+  tree_.mark_moved();
   if (proxy_.in_contact()) proxy_.update(tip_, *surface_, state.positions);
 }
 

@@ -49,10 +49,12 @@ class ProxySpringTerm : public ForceTerm {
   std::vector<std::shared_ptr<const BodyModel>> models_;
   std::vector<ProxySurface> body_surfaces_;  ///< per body, in its own node numbers
   std::unique_ptr<ProxySurface> surface_;
-  /// surface_'s box tree: built at the first prepare() after a rebuild, refitted at a prepare()
-  /// after the positions moved (an integrated step); a sleeping world's steps reuse it.
+  /// surface_'s box tree: built at the first prepare() after a rebuild, marked moved after
+  /// every integrated (sub-)step and refitted by the first query after that; a sleeping
+  /// world's steps reuse it.
   ProxySurfaceTree tree_;
-  bool tree_built_ = false, surface_moved_ = true;
+  bool tree_built_ = false;
+  long long recaptured_at_step_ = -1;        ///< the step whose first prepare() ran recapture()
   std::vector<int> face_body_, face_first_;  ///< per global face: body; per body: first face
   std::vector<int> surface_nodes_;
   HapticProxy proxy_;

@@ -110,7 +110,7 @@ core::Vec3 HapticProxy::force() const {
 }
 
 void HapticProxy::update(const core::Vec3& tip, const ProxySurface& surface,
-                         std::span<const core::Vec3> x, const ProxySurfaceTree* tree) {
+                         std::span<const core::Vec3> x, ProxySurfaceTree* tree) {
   tip_ = tip;
   const auto& faces = surface.faces();
   const auto corner = [&](int t, int k) -> const core::Vec3& {
@@ -152,7 +152,9 @@ void HapticProxy::update(const core::Vec3& tip, const ProxySurface& surface,
     }
   }
 
-  // Free: does the path from the proxy to the tip enter the surface from outside?
+  // Free: does the path from the proxy to the tip enter the surface from outside? (A path of
+  // no length enters nothing: the proxy already is at the tip.)
+  if (proxy_ == tip) return;
   double first = std::numeric_limits<double>::infinity();
   int hit = -1;
   if (tree != nullptr) {
@@ -183,7 +185,7 @@ void HapticProxy::update(const core::Vec3& tip, const ProxySurface& surface,
 }
 
 bool HapticProxy::recapture(const ProxySurface& surface, std::span<const core::Vec3> x,
-                            const ProxySurfaceTree* tree) {
+                            ProxySurfaceTree* tree) {
   if (in_contact()) return false;
   const auto& faces = surface.faces();
   // A direction no mesh built on axes or regular polyhedra lines up with, so the ray meets

@@ -51,10 +51,10 @@ class HapticProxy {
   /// proxy goes to the tip unless the segment from the old proxy to the tip enters the surface
   /// from outside, which starts a contact at the crossing. In contact: the proxy walks over the
   /// surface to the point nearest the tip, or is released when the tip is back outside.
-  /// `tree`, when given, is `surface`'s box tree fitted to `positions`: the same answer, found
-  /// without testing every triangle.
+  /// `tree`, when given, is `surface`'s box tree (refitted to `positions` if marked moved): the
+  /// same answer, found without testing every triangle.
   void update(const core::Vec3& tip, const ProxySurface& surface,
-              std::span<const core::Vec3> positions, const ProxySurfaceTree* tree = nullptr);
+              std::span<const core::Vec3> positions, ProxySurfaceTree* tree = nullptr);
 
   const core::Vec3& proxy() const { return proxy_; }
   /// Proxy–tip spring stiffness in N/m.
@@ -71,7 +71,7 @@ class HapticProxy {
   /// ray from the tip. Does nothing (false) in contact or with the tip outside. `tree` as for
   /// update().
   bool recapture(const ProxySurface& surface, std::span<const core::Vec3> positions,
-                 const ProxySurfaceTree* tree = nullptr);
+                 ProxySurfaceTree* tree = nullptr);
 
  private:
   double stiffness_;

@@ -43,7 +43,19 @@ ProxySurfaceTree::ProxySurfaceTree(std::span<const core::Triangle> faces,
     order_[t] = static_cast<int>(t);
   nodes_.reserve(2 * faces.size() / kLeafFaces + 1);
   build(0, static_cast<int>(faces.size()), centroids);
-  refit(faces, positions);
+  leaf_vertex_start_.push_back(0);
+  for (const Node& node : nodes_) {
+    if (node.count == 0) continue;
+    const auto first = leaf_vertices_.end() - leaf_vertices_.begin();
+    for (int k = node.first; k < node.first + node.count; ++k)
+      for (const int v : faces[static_cast<std::size_t>(order_[static_cast<std::size_t>(k)])])
+        leaf_vertices_.push_back(v);
+    std::sort(leaf_vertices_.begin() + first, leaf_vertices_.end());
+    leaf_vertices_.erase(std::unique(leaf_vertices_.begin() + first, leaf_vertices_.end()),
+                         leaf_vertices_.end());
+    leaf_vertex_start_.push_back(static_cast<int>(leaf_vertices_.size()));
+  }
+  refit(positions);
 }
 
 int ProxySurfaceTree::build(int first, int count, std::vector<core::Vec3>& centroids) {
@@ -76,20 +88,22 @@ int ProxySurfaceTree::build(int first, int count, std::vector<core::Vec3>& centr
   return index;
 }
 
-void ProxySurfaceTree::refit(std::span<const core::Triangle> faces,
-                             std::span<const core::Vec3> positions) {
+void ProxySurfaceTree::refit(std::span<const core::Vec3> positions) {
+  moved_ = false;
   const core::Vec3 pad = core::Vec3::Constant(kPadding);
-  // Children come after their parent: fit from the last node back.
+  // Children come after their parent: fit from the last node back (and the last leaf back).
+  auto leaf = static_cast<std::ptrdiff_t>(leaf_vertex_start_.size()) - 1;
   for (std::size_t n = nodes_.size(); n-- > 0;) {
     Node& node = nodes_[n];
     if (node.count > 0) {
-      const core::Triangle& f0 = faces[static_cast<std::size_t>(order_[node.first])];
-      core::Vec3 lo = positions[f0[0]], hi = lo;
-      for (int k = node.first; k < node.first + node.count; ++k) {
-        for (const int v : faces[static_cast<std::size_t>(order_[k])]) {
-          lo = lo.cwiseMin(positions[v]);
-          hi = hi.cwiseMax(positions[v]);
-        }
+      --leaf;
+      const int first = leaf_vertex_start_[static_cast<std::size_t>(leaf)];
+      const int end = leaf_vertex_start_[static_cast<std::size_t>(leaf) + 1];
+      core::Vec3 lo = positions[static_cast<std::size_t>(leaf_vertices_[first])], hi = lo;
+      for (int k = first + 1; k < end; ++k) {
+        const core::Vec3& p = positions[static_cast<std::size_t>(leaf_vertices_[k])];
+        lo = lo.cwiseMin(p);
+        hi = hi.cwiseMax(p);
       }
       node.lo = lo - pad;
       node.hi = hi + pad;
@@ -127,7 +141,8 @@ void ProxySurfaceTree::along_segment(const core::Vec3& p, const core::Vec3& q, R
 
 ProxySurfaceTree::Entry ProxySurfaceTree::first_entry(const core::Vec3& p, const core::Vec3& q,
                                                       std::span<const core::Triangle> faces,
-                                                      std::span<const core::Vec3> x) const {
+                                                      std::span<const core::Vec3> x) {
+  if (moved_) refit(x);
   Entry best;
   const core::Vec3 d = q - p;
   along_segment(
@@ -145,7 +160,8 @@ ProxySurfaceTree::Entry ProxySurfaceTree::first_entry(const core::Vec3& p, const
 
 int ProxySurfaceTree::crossings(const core::Vec3& p, const core::Vec3& q,
                                 std::span<const core::Triangle> faces,
-                                std::span<const core::Vec3> x) const {
+                                std::span<const core::Vec3> x) {
+  if (moved_) refit(x);
   int count = 0;
   along_segment(
       p, q, [] { return 1.0; },

@@ -28,7 +28,10 @@ class ProxySurfaceTree {
   ProxySurfaceTree(std::span<const core::Triangle> faces, std::span<const core::Vec3> positions);
 
   /// Recomputes every box at new positions of the same vertices (the shape is kept).
-  void refit(std::span<const core::Triangle> faces, std::span<const core::Vec3> positions);
+  void refit(std::span<const core::Vec3> positions);
+  /// The vertices have moved: the next query refits first (an explicit integrator's sub-steps
+  /// move the surface many times between the queries that need the boxes).
+  void mark_moved() { moved_ = true; }
 
   /// Of the triangles the segment p→q crosses from outside (against their outward normal), the
   /// one crossed first: its index and the segment parameter s ∈ [0, 1] of the crossing, the
@@ -38,11 +41,11 @@ class ProxySurfaceTree {
     double s = 0.0;
   };
   Entry first_entry(const core::Vec3& p, const core::Vec3& q, std::span<const core::Triangle> faces,
-                    std::span<const core::Vec3> positions) const;
+                    std::span<const core::Vec3> positions);
 
   /// How many triangles the segment p→q crosses, in either direction.
   int crossings(const core::Vec3& p, const core::Vec3& q, std::span<const core::Triangle> faces,
-                std::span<const core::Vec3> positions) const;
+                std::span<const core::Vec3> positions);
 
   bool empty() const { return nodes_.empty(); }
 
@@ -60,6 +63,9 @@ class ProxySurfaceTree {
 
   std::vector<int> order_;
   std::vector<Node> nodes_;
+  /// Per leaf (in node order), the distinct vertices of its faces: what a refit reads.
+  std::vector<int> leaf_vertex_start_, leaf_vertices_;
+  bool moved_ = false;
 };
 
 }  // namespace viscera::sim

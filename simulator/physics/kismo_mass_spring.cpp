@@ -45,6 +45,30 @@ void add_spring_damping_forces(std::span<const core::Vec3> x, std::span<const co
   }
 }
 
+double add_damped_cubic_spring_forces(std::span<const core::Vec3> x, std::span<const core::Vec3> v,
+                                      const CubicSprings& springs, std::span<core::Vec3> f) {
+  const bool damped = !springs.damping.empty();
+  double energy = 0.0;
+  for (std::size_t s = 0; s < springs.knots.size(); ++s) {
+    const auto [i, j] = springs.knots[s];
+    const core::Vec3 d = x[j] - x[i];
+    const double length = d.norm();
+    if (length <= 0.0) continue;
+    const double l0 = springs.rest_length[s];
+    const double e = (length - l0) / l0, a = std::abs(e);
+    const auto& k = springs.coefficients[s];
+    const double inverse = 1.0 / length;
+    // The cubic's pull plus the damping element's c (v_j − v_i)·d̂, both along d̂ = d / |d|.
+    double magnitude = k[0] * e + k[1] * e * a + k[2] * e * e * e;
+    if (damped) magnitude += springs.damping[s] * (v[j] - v[i]).dot(d) * inverse;
+    const core::Vec3 pull = (magnitude * inverse) * d;
+    f[i] += pull;
+    f[j] -= pull;
+    energy += l0 * (k[0] * e * e / 2.0 + k[1] * a * a * a / 3.0 + k[2] * e * e * e * e / 4.0);
+  }
+  return energy;
+}
+
 void kismo_step(std::span<core::Vec3> x, std::span<core::Vec3> v, std::span<const core::Vec3> f,
                 const KnotParameters& knots, const core::Vec3& g, double h) {
   for (std::size_t i = 0; i < x.size(); ++i) {

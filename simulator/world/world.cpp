@@ -88,8 +88,7 @@ std::vector<ForceTerm*> World::term_pointers() const {
 
 int World::substeps() const {
   const auto* verlet = dynamic_cast<const ExplicitVerlet*>(integrator_.get());
-  if (verlet == nullptr || !std::isfinite(verlet->stable_step())) return 1;
-  return std::max(1, static_cast<int>(std::ceil(time_step_ / verlet->stable_step() - 1e-12)));
+  return verlet != nullptr ? verlet->substeps(time_step_) : 1;
 }
 
 double World::stable_step() const {

@@ -32,6 +32,33 @@ TEST(KismoMassSpring, cubic_spring_forces_are_the_negative_energy_gradient) {
   EXPECT_LT((f[0] + f[1] + f[2]).norm(), 1e-12);  // internal forces: no net force
 }
 
+TEST(KismoMassSpring, the_one_pass_forces_equal_the_spring_forces_plus_the_damping_forces) {
+  // Stretched, compressed and sheared springs with damping elements, knots moving apart and
+  // together: one pass gives what the two passes give, to rounding, and the same energy.
+  CubicSprings springs{
+      {{0, 1}, {1, 2}, {0, 2}, {2, 3}},
+      {0.01, 0.012, 0.015, 0.008},
+      {{{2.0, 30.0, 400.0}}, {{1.0, 0.0, 50.0}}, {{3.0, -5.0, 0.0}}, {{4.0, 1.0, 9.0}}},
+      {0.02, 0.5, 0.0, 3.0}};
+  const std::vector<core::Vec3> x = {
+      {0, 0, 0}, {0.0125, 0.001, 0.0}, {0.003, 0.009, 0.002}, {0.004, 0.012, 0.0075}};
+  const std::vector<core::Vec3> v = {
+      {0.1, -0.2, 0.05}, {-0.3, 0.0, 0.2}, {0.0, 0.4, -0.1}, {1, 1, 1}};
+  std::vector<core::Vec3> two(4, core::Vec3::Zero()), one(4, core::Vec3::Zero());
+  add_spring_damping_forces(x, v, springs, two);
+  const double energy_two = add_cubic_spring_forces(x, springs, two);
+  const double energy_one = add_damped_cubic_spring_forces(x, v, springs, one);
+  EXPECT_DOUBLE_EQ(energy_one, energy_two);
+  for (std::size_t i = 0; i < x.size(); ++i)
+    EXPECT_LT((one[i] - two[i]).norm(), 1e-12 * two[i].norm()) << i;
+  // The damping is in it: without it the forces differ by far more than rounding.
+  CubicSprings undamped = springs;
+  undamped.damping.clear();
+  std::vector<core::Vec3> bare(4, core::Vec3::Zero());
+  EXPECT_DOUBLE_EQ(add_damped_cubic_spring_forces(x, v, undamped, bare), energy_two);
+  EXPECT_GT((bare[3] - one[3]).norm(), 1e-3 * one[3].norm());
+}
+
 TEST(KismoMassSpring, hanging_knot_comes_to_rest_at_the_linear_extension_mg_over_k) {
   // A 10 g knot hanging from a held knot on a linear 5 N spring of 2 cm rest length:
   // k = k1 / l0 = 250 N/m, so the static extension is m g / k = 0.392 mm.

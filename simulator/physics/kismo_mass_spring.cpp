@@ -9,8 +9,13 @@ std::array<double, 3> spring_coefficients_from_cubic(const std::array<double, 3>
   return {c[0] * cross_section, c[1] * cross_section, c[2] * cross_section};
 }
 
-double add_cubic_spring_forces(std::span<const core::Vec3> x, const CubicSprings& springs,
-                               std::span<core::Vec3> f) {
+namespace {
+
+/// One pass over the springs: the cubic's pull (and with kDamped the damping element's
+/// c (v_j − v_i)·d̂, both along d̂ = d / |d|) into f when kForces, and the springs' energy.
+template <bool kDamped, bool kForces>
+double spring_pass(std::span<const core::Vec3> x, std::span<const core::Vec3> v,
+                   const CubicSprings& springs, std::span<core::Vec3> f) {
   double energy = 0.0;
   for (std::size_t s = 0; s < springs.knots.size(); ++s) {
     const auto [i, j] = springs.knots[s];
@@ -18,17 +23,30 @@ double add_cubic_spring_forces(std::span<const core::Vec3> x, const CubicSprings
     const double length = d.norm();
     if (length <= 0.0) continue;
     const double l0 = springs.rest_length[s];
-    const double e = (length - l0) / l0;
+    const double e = (length - l0) / l0, a = std::abs(e);
     const auto& k = springs.coefficients[s];
-    const double magnitude = k[0] * e + k[1] * e * std::abs(e) + k[2] * e * e * e;
-    const core::Vec3 pull =
-        (magnitude / length) * d;  // along the spring, towards each other when stretched
-    f[i] += pull;
-    f[j] -= pull;
-    const double a = std::abs(e);
     energy += l0 * (k[0] * e * e / 2.0 + k[1] * a * a * a / 3.0 + k[2] * e * e * e * e / 4.0);
+    if constexpr (kForces) {
+      const double inverse = 1.0 / length;
+      double magnitude = k[0] * e + k[1] * e * a + k[2] * e * e * e;
+      if constexpr (kDamped) magnitude += springs.damping[s] * (v[j] - v[i]).dot(d) * inverse;
+      const core::Vec3 pull = (magnitude * inverse) * d;  // towards each other when stretched
+      f[i] += pull;
+      f[j] -= pull;
+    }
   }
   return energy;
+}
+
+}  // namespace
+
+double cubic_spring_energy(std::span<const core::Vec3> x, const CubicSprings& springs) {
+  return spring_pass<false, false>(x, {}, springs, {});
+}
+
+double add_cubic_spring_forces(std::span<const core::Vec3> x, const CubicSprings& springs,
+                               std::span<core::Vec3> f) {
+  return spring_pass<false, true>(x, {}, springs, f);
 }
 
 void add_spring_damping_forces(std::span<const core::Vec3> x, std::span<const core::Vec3> v,
@@ -47,26 +65,8 @@ void add_spring_damping_forces(std::span<const core::Vec3> x, std::span<const co
 
 double add_damped_cubic_spring_forces(std::span<const core::Vec3> x, std::span<const core::Vec3> v,
                                       const CubicSprings& springs, std::span<core::Vec3> f) {
-  const bool damped = !springs.damping.empty();
-  double energy = 0.0;
-  for (std::size_t s = 0; s < springs.knots.size(); ++s) {
-    const auto [i, j] = springs.knots[s];
-    const core::Vec3 d = x[j] - x[i];
-    const double length = d.norm();
-    if (length <= 0.0) continue;
-    const double l0 = springs.rest_length[s];
-    const double e = (length - l0) / l0, a = std::abs(e);
-    const auto& k = springs.coefficients[s];
-    const double inverse = 1.0 / length;
-    // The cubic's pull plus the damping element's c (v_j − v_i)·d̂, both along d̂ = d / |d|.
-    double magnitude = k[0] * e + k[1] * e * a + k[2] * e * e * e;
-    if (damped) magnitude += springs.damping[s] * (v[j] - v[i]).dot(d) * inverse;
-    const core::Vec3 pull = (magnitude * inverse) * d;
-    f[i] += pull;
-    f[j] -= pull;
-    energy += l0 * (k[0] * e * e / 2.0 + k[1] * a * a * a / 3.0 + k[2] * e * e * e * e / 4.0);
-  }
-  return energy;
+  return springs.damping.empty() ? spring_pass<false, true>(x, v, springs, f)
+                                 : spring_pass<true, true>(x, v, springs, f);
 }
 
 void kismo_step(std::span<core::Vec3> x, std::span<core::Vec3> v, std::span<const core::Vec3> f,

@@ -30,8 +30,10 @@ struct CubicSprings {
 std::array<double, 3> spring_coefficients_from_cubic(const std::array<double, 3>& stress_cubic,
                                                      double cross_section);
 
-/// Adds the spring forces to `forces` and returns the stored energy in J,
-/// E = l0 (k1 ε²/2 + k2 |ε|³/3 + k3 ε⁴/4) per spring.
+/// The stored energy in J, E = l0 (k1 ε²/2 + k2 |ε|³/3 + k3 ε⁴/4) per spring.
+double cubic_spring_energy(std::span<const core::Vec3> positions, const CubicSprings& springs);
+
+/// Adds the spring forces to `forces` and returns the stored energy in J (as above).
 double add_cubic_spring_forces(std::span<const core::Vec3> positions, const CubicSprings& springs,
                                std::span<core::Vec3> forces);
 

@@ -49,6 +49,7 @@ TEST(KismoMassSpring, the_one_pass_forces_equal_the_spring_forces_plus_the_dampi
   const double energy_two = add_cubic_spring_forces(x, springs, two);
   const double energy_one = add_damped_cubic_spring_forces(x, v, springs, one);
   EXPECT_DOUBLE_EQ(energy_one, energy_two);
+  EXPECT_DOUBLE_EQ(cubic_spring_energy(x, springs), energy_two);
   for (std::size_t i = 0; i < x.size(); ++i)
     EXPECT_LT((one[i] - two[i]).norm(), 1e-12 * two[i].norm()) << i;
   // The damping is in it: without it the forces differ by far more than rounding.

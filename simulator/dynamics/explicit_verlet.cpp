@@ -93,7 +93,7 @@ void ExplicitVerlet::topology_changed(const SimulationState& state,
     t->add_stiffness(state.positions, 1.0, true, stiffness);
     t->add_damping(state.positions, 1.0, damping);
     const double k = t->worst_case_node_stiffness();
-    if (k > 0.0)
+    if (k > 0.0 && !t->worst_case_within_reach())
       for (const int node : t->worst_case_nodes())
         stiffness.block(stiffness.diagonal_slot(node)) += k * Mat3::Identity();
   }
@@ -139,14 +139,29 @@ void ExplicitVerlet::topology_changed(const SimulationState& state,
     if (body_of_node[i] >= 0)
       group_of_node[i] = island_of_body_[static_cast<std::size_t>(body_of_node[i])];
   const int groups = static_cast<int>(islands_.size());
-  const auto omega_squared =
-      largest_eigenvalues(stiffness, state.inverse_masses, group_of_node, groups);
   const auto damping_rate =
       largest_eigenvalues(damping, state.inverse_masses, group_of_node, groups);
+  // Out of the reach of a term whose worst case acts only within reach (the proxy far from an
+  // island), then with it everywhere (the plan for islands within reach, and the bound).
+  const auto far_omega_squared =
+      largest_eigenvalues(stiffness, state.inverse_masses, group_of_node, groups);
+  bool reaching = false;
+  for (ForceTerm* t : terms) {
+    const double k = t->worst_case_node_stiffness();
+    if (k <= 0.0 || !t->worst_case_within_reach()) continue;
+    reaching = true;
+    for (const int node : t->worst_case_nodes())
+      stiffness.block(stiffness.diagonal_slot(node)) += k * Mat3::Identity();
+  }
+  const auto omega_squared =
+      reaching ? largest_eigenvalues(stiffness, state.inverse_masses, group_of_node, groups)
+               : far_omega_squared;
   stable_step_ = std::numeric_limits<double>::infinity();
   for (std::size_t g = 0; g < islands_.size(); ++g) {
     islands_[g].stable_step =
         kStableStepSafety * verlet_stable_step(omega_squared[g], damping_rate[g]);
+    islands_[g].far_stable_step =
+        kStableStepSafety * verlet_stable_step(far_omega_squared[g], damping_rate[g]);
     stable_step_ = std::min(stable_step_, islands_[g].stable_step);
   }
   if (islands_.empty()) stable_step_ = kStableStepSafety * verlet_stable_step(0.0, 0.0);
@@ -162,13 +177,34 @@ std::vector<double> ExplicitVerlet::island_stable_steps() const {
   return out;
 }
 
-std::vector<int> ExplicitVerlet::needed_substeps(double h) const {
+std::vector<int> ExplicitVerlet::needed_substeps(double h, std::span<const char> far) const {
   std::vector<int> out;
-  for (const Island& island : islands_)
-    out.push_back(std::isfinite(island.stable_step)
-                      ? std::max(1, static_cast<int>(std::ceil(h / island.stable_step - 1e-12)))
-                      : 1);
+  for (std::size_t g = 0; g < islands_.size(); ++g) {
+    const double stable =
+        !far.empty() && far[g] != 0 ? islands_[g].far_stable_step : islands_[g].stable_step;
+    out.push_back(
+        std::isfinite(stable) ? std::max(1, static_cast<int>(std::ceil(h / stable - 1e-12))) : 1);
+  }
   return out;
+}
+
+std::vector<char> ExplicitVerlet::islands_out_of_reach(const SimulationState& state,
+                                                       std::span<ForceTerm* const> reaching) const {
+  std::vector<core::BoundingBox> reach;
+  for (ForceTerm* t : reaching)
+    reach.push_back(t->reach());
+  std::vector<char> far(islands_.size(), 1);
+  for (std::size_t g = 0; g < islands_.size(); ++g) {
+    core::BoundingBox box;
+    for (const int i : islands_[g].nodes)
+      box.add(state.positions[static_cast<std::size_t>(i)]);
+    for (const core::BoundingBox& r : reach) {
+      const bool overlap =
+          (box.min.array() <= r.max.array()).all() && (r.min.array() <= box.max.array()).all();
+      if (overlap) far[g] = 0;
+    }
+  }
+  return far;
 }
 
 namespace {
@@ -204,30 +240,52 @@ StepStatistics ExplicitVerlet::step(SimulationState& state, std::span<ForceTerm*
                                     const StepContext& context) {
   if (!ready_ || forces_.size() != state.node_count()) topology_changed(state, terms);
   StepStatistics stats;
-  const std::vector<int> need = needed_substeps(context.h);
+  // Terms whose worst case acts only within reach are prepared for the first sub-step before
+  // the plan (where they act this step decides which islands need their stiffness), and not
+  // again at that sub-step.
+  std::vector<ForceTerm*> reaching;
+  for (ForceTerm* t : terms)
+    if (t->worst_case_within_reach() && t->worst_case_node_stiffness() > 0.0) reaching.push_back(t);
+  std::vector<char> far;
+  if (!reaching.empty()) {
+    const StepContext first{context.time, context.h, context.step};
+    for (ForceTerm* t : reaching)
+      t->prepare(state, first);
+    far = islands_out_of_reach(state, reaching);
+  }
+  const std::vector<int> need = needed_substeps(context.h, far);
   const int most = need.empty() ? 1 : *std::max_element(need.begin(), need.end());
   if (!every_node_in_an_island_ ||
       std::all_of(need.begin(), need.end(), [&](int k) { return k == most; })) {
     stats.substeps = most;
-    step_uniform(state, terms, context, most);
+    step_uniform(state, terms, context, most, reaching);
     return stats;
   }
   stats.substeps = rich_count(most);
   std::vector<int> strides;
   for (const int k : need)
     strides.push_back(stats.substeps / divisor_at_least(stats.substeps, k));
-  step_multirate(state, terms, context, stats.substeps, strides);
+  step_multirate(state, terms, context, stats.substeps, strides, reaching);
   return stats;
 }
 
+namespace {
+
+bool among(std::span<ForceTerm* const> prepared, const ForceTerm* t) {
+  return std::find(prepared.begin(), prepared.end(), t) != prepared.end();
+}
+
+}  // namespace
+
 void ExplicitVerlet::step_uniform(SimulationState& state, std::span<ForceTerm* const> terms,
-                                  const StepContext& context, int substeps) {
+                                  const StepContext& context, int substeps,
+                                  std::span<ForceTerm* const> prepared) {
   const double h = context.h / substeps;
   const std::size_t n = state.node_count();
   for (int s = 0; s < substeps; ++s) {
     const StepContext sub{context.time + s * h, h, context.step};
     for (ForceTerm* t : terms)
-      t->prepare(state, sub);
+      if (s > 0 || !among(prepared, t)) t->prepare(state, sub);
     std::fill(forces_.begin(), forces_.end(), Vec3::Zero());
     for (ForceTerm* t : terms)
       t->add_forces(state.positions, state.velocities, forces_);
@@ -250,7 +308,8 @@ void ExplicitVerlet::step_uniform(SimulationState& state, std::span<ForceTerm* c
 
 void ExplicitVerlet::step_multirate(SimulationState& state, std::span<ForceTerm* const> terms,
                                     const StepContext& context, int fine,
-                                    const std::vector<int>& strides) {
+                                    const std::vector<int>& strides,
+                                    std::span<ForceTerm* const> prepared) {
   std::vector<ForceTerm*> shared;
   std::vector<std::vector<ForceTerm*>> own(islands_.size());
   for (ForceTerm* t : terms) {
@@ -268,7 +327,7 @@ void ExplicitVerlet::step_multirate(SimulationState& state, std::span<ForceTerm*
     const bool last = s + 1 == fine;
     const StepContext sub{context.time + s * h, h, context.step};
     for (ForceTerm* t : shared)
-      t->prepare(state, sub);
+      if (s > 0 || !among(prepared, t)) t->prepare(state, sub);
     for (ForceTerm* t : shared)
       t->add_forces(state.positions, state.velocities, shared_impulse_);
     for (std::size_t g = 0; g < islands_.size(); ++g) {
@@ -279,7 +338,7 @@ void ExplicitVerlet::step_multirate(SimulationState& state, std::span<ForceTerm*
       const double big = stride * h;
       const StepContext own_sub{context.time + (s + 1 - stride) * h, big, context.step};
       for (ForceTerm* t : own[g])
-        t->prepare(state, own_sub);
+        if (s + 1 > stride || !among(prepared, t)) t->prepare(state, own_sub);
       for (const int i : nodes)
         forces_[static_cast<std::size_t>(i)].setZero();
       for (ForceTerm* t : own[g])

@@ -19,7 +19,10 @@
 /// held during that sub-step (zero-order hold). With one island, or islands that all need the
 /// same count, the step is the uniform one above, bit for bit. Decision: islands come from the
 /// blocks declared at the topology change; contacts that appear later are global terms,
-/// covered by the worst-case stiffness they report for the stable step.
+/// covered by the worst-case stiffness they report for the stable step. A term whose worst case
+/// acts only within reach (ForceTerm::worst_case_within_reach: the instrument's proxy) is
+/// prepared for the step's first sub-step before the plan, and only the islands whose box
+/// meets its reach() are planned with its stiffness; the others with their far stable step.
 
 #include <vector>
 
@@ -50,14 +53,21 @@ class ExplicitVerlet : public Integrator {
  private:
   struct Island {
     std::vector<int> nodes;
-    double stable_step = 0.0;
+    double stable_step = 0.0;      ///< s, with every worst case
+    double far_stable_step = 0.0;  ///< s, out of the reach of terms that act within reach
   };
-  /// Sub-steps each island needs for a step of `h`, in island order.
-  std::vector<int> needed_substeps(double h) const;
+  /// Sub-steps each island needs for a step of `h`, in island order; an island marked in `far`
+  /// is planned without the worst case of the terms that act within reach.
+  std::vector<int> needed_substeps(double h, std::span<const char> far = {}) const;
+  /// Per island, 1 when its nodes' box meets none of the `reaching` terms' reach().
+  std::vector<char> islands_out_of_reach(const SimulationState& state,
+                                         std::span<ForceTerm* const> reaching) const;
+  /// `prepared`: terms already prepared for the first sub-step.
   void step_uniform(SimulationState& state, std::span<ForceTerm* const> terms,
-                    const StepContext& context, int substeps);
+                    const StepContext& context, int substeps, std::span<ForceTerm* const> prepared);
   void step_multirate(SimulationState& state, std::span<ForceTerm* const> terms,
-                      const StepContext& context, int fine, const std::vector<int>& strides);
+                      const StepContext& context, int fine, const std::vector<int>& strides,
+                      std::span<ForceTerm* const> prepared);
 
   double stable_step_ = 0.0;
   bool ready_ = false;

@@ -8,6 +8,7 @@
 #include <span>
 #include <string>
 
+#include "core/math_types.h"
 #include "simulator/dynamics/block_sparse_matrix.h"
 #include "simulator/dynamics/simulation_state.h"
 
@@ -59,6 +60,14 @@ class ForceTerm {
   virtual double worst_case_node_stiffness() const { return 0.0; }
   /// Global nodes to which worst_case_node_stiffness() applies (empty: none).
   virtual std::span<const int> worst_case_nodes() const { return {}; }
+  /// True when the worst-case stiffness can only act within reach() during a step (the
+  /// instrument's proxy: near the tip), not on every node of worst_case_nodes() at once. An
+  /// integrator that steps islands at their own rates then plans it only for the islands
+  /// within reach.
+  virtual bool worst_case_within_reach() const { return false; }
+  /// The box (m) the term acts within during this step, once it was prepared for the step's
+  /// first sub-step (empty: nowhere).
+  virtual core::BoundingBox reach() const { return {}; }
   /// The body whose nodes alone this term touches (its internal energies), or −1 for a term
   /// that may touch any body's nodes (contact, the proxy, gravity, tools). An explicit
   /// integrator that steps bodies at their own rates evaluates a body's own terms only at that

@@ -106,6 +106,15 @@ void ProxySpringTerm::add_stiffness(std::span<const Vec3>, double scale, bool,
       m.add_symmetric(active_[a], active_[b], (k * weight_[a] * weight_[b]) * Mat3::Identity());
 }
 
+core::BoundingBox ProxySpringTerm::reach() const {
+  core::BoundingBox box;
+  box.add(proxy_.proxy());
+  box.add(tip_);
+  box.min -= Vec3::Constant(kReachMargin);
+  box.max += Vec3::Constant(kReachMargin);
+  return box;
+}
+
 int ProxySpringTerm::touched_body() const {
   return proxy_.in_contact() ? face_body_[static_cast<std::size_t>(proxy_.contact().triangle)] : -1;
 }

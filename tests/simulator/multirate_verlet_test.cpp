@@ -91,6 +91,39 @@ class CrossSpring : public ForceTerm {
   Vec3 rest_;
 };
 
+/// A stiff spring pulling `node` towards where it started, planned for on `planned` nodes but
+/// acting only within a box the test moves (as the proxy acts only near the tip).
+class ReachingSpring : public ForceTerm {
+ public:
+  ReachingSpring(int node, std::vector<int> planned, double stiffness, const SimulationState& state)
+      : node_(node), planned_(std::move(planned)), k_(stiffness), anchor_(state.positions[node]) {}
+  std::string name() const override { return "reaching spring"; }
+  void prepare(const SimulationState&, const StepContext&) override { ++prepared; }
+  double energy(std::span<const Vec3> x) const override {
+    return 0.5 * k_ * (x[node_] - anchor_).squaredNorm();
+  }
+  double add_forces(std::span<const Vec3> x, std::span<const Vec3>,
+                    std::span<Vec3> f) const override {
+    f[node_] -= k_ * (x[node_] - anchor_);
+    return energy(x);
+  }
+  void declare_blocks(BlockPattern&) const override {}
+  void add_stiffness(std::span<const Vec3>, double, bool, BlockSparseMatrix&) const override {}
+  double worst_case_node_stiffness() const override { return k_; }
+  std::span<const int> worst_case_nodes() const override { return planned_; }
+  bool worst_case_within_reach() const override { return true; }
+  core::BoundingBox reach() const override { return reach_; }
+
+  core::BoundingBox reach_;
+  int prepared = 0;
+
+ private:
+  int node_;
+  std::vector<int> planned_;
+  double k_;
+  Vec3 anchor_;
+};
+
 /// A pair of free nodes 1 cm apart: `mass` kg each on a spring of `stiffness` N/m.
 void add_pair(SimulationState& state, double mass, double stiffness, const Vec3& at,
               std::vector<std::unique_ptr<ForceTerm>>& terms) {
@@ -193,6 +226,45 @@ TEST(MultirateVerlet, a_term_joining_islands_gives_both_the_same_impulse_so_mome
   EXPECT_GT(cross_work, 1e-4);
   // Symplectic and undamped: the energy stays within a few per cent of where it began.
   EXPECT_NEAR(energy(), e0, 0.05 * e0);
+}
+
+TEST(MultirateVerlet, a_term_acting_within_reach_is_planned_only_for_the_islands_in_reach) {
+  // Two pairs of 1 g knots 10 cm apart on 0.1 N/m springs, each needing one sub-step of a 1 ms
+  // step; 30 kN/m planned on a knot needs 4 (ω² ≈ 3·10⁷ /s², 0.8 · 2/ω = 0.29 ms).
+  SimulationState state;
+  std::vector<std::unique_ptr<ForceTerm>> terms;
+  add_pair(state, kLightMass, kSoft * 1e-3, Vec3::Zero(), terms);
+  add_pair(state, kLightMass, kSoft * 1e-3, Vec3(0.1, 0.0, 0.0), terms);
+  auto reaching = std::make_unique<ReachingSpring>(3, std::vector<int>{0, 1, 2, 3}, 3.0e4, state);
+  ReachingSpring* spring = reaching.get();
+  terms.push_back(std::move(reaching));
+  ExplicitVerlet integrator;
+  const auto t = pointers(terms);
+  integrator.topology_changed(state, t);
+  ASSERT_EQ(integrator.substeps(1e-3), 4);  // the bound: planned on every node
+  const auto box_around = [](const Vec3& c) {
+    core::BoundingBox b;
+    b.add(c - Vec3::Constant(0.02));
+    b.add(c + Vec3::Constant(0.02));
+    return b;
+  };
+  long long step = 0;
+  const auto take = [&] {
+    ++step;
+    return integrator.step(state, t, StepContext{1e-3 * (step - 1), 1e-3, step}).substeps;
+  };
+  spring->reach_ = box_around(Vec3(0.0, 0.0, 1.0));  // far from both
+  EXPECT_EQ(take(), 1);
+  spring->reach_ = box_around(state.positions[2]);  // the second pair only: multi-rate
+  spring->prepared = 0;
+  EXPECT_EQ(take(), 4);
+  EXPECT_EQ(spring->prepared, 4);  // once per fine sub-step, the first before the plan
+  spring->reach_ = box_around(Vec3(0.05, 0.0, 0.0));  // wide enough for both: uniform
+  spring->reach_.add(Vec3(0.2, 0.0, 0.0));
+  spring->reach_.add(Vec3(-0.1, 0.0, 0.0));
+  EXPECT_EQ(take(), 4);
+  for (const Vec3& x : state.positions)
+    EXPECT_TRUE(x.allFinite());
 }
 
 }  // namespace

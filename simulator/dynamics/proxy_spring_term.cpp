@@ -107,11 +107,13 @@ void ProxySpringTerm::add_stiffness(std::span<const Vec3>, double scale, bool,
 }
 
 core::BoundingBox ProxySpringTerm::reach() const {
+  // The proxy only gets nearer the tip: its walk goes to the surface point nearest the tip,
+  // and a released proxy tests the path to the tip. So it stays within |tip − proxy| of the
+  // tip, and the surfaces move by at most the margin.
+  const double radius = (tip_ - proxy_.proxy()).norm() + kReachMargin;
   core::BoundingBox box;
-  box.add(proxy_.proxy());
-  box.add(tip_);
-  box.min -= Vec3::Constant(kReachMargin);
-  box.max += Vec3::Constant(kReachMargin);
+  box.add(tip_ - Vec3::Constant(radius));
+  box.add(tip_ + Vec3::Constant(radius));
   return box;
 }
 

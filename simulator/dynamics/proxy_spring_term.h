@@ -33,9 +33,10 @@ class ProxySpringTerm : public ForceTerm {
   void topology_changed(const SimulationState& state, int body) override;
   double worst_case_node_stiffness() const override { return proxy_.stiffness(); }
   std::span<const int> worst_case_nodes() const override { return surface_nodes_; }
-  /// The proxy acts only near the tip: between steps the tip stands still, so within a step the
-  /// proxy stays in the box of where it starts and the tip (it walks towards the tip, or is
-  /// released and tests the path to it), widened by kReachMargin for the surfaces' own motion.
+  /// The proxy acts only near the tip: within a step the tip stands still and the proxy only
+  /// gets nearer to it (it walks towards the point nearest the tip, or is released and tests
+  /// the path to it), so the reach is the box around the tip of half-width |tip − proxy| +
+  /// kReachMargin, the margin for the surfaces' own motion.
   bool worst_case_within_reach() const override { return true; }
   core::BoundingBox reach() const override;
   static constexpr double kReachMargin = 5e-3;  ///< m: 5 m/s of tissue motion over a 1 ms step

@@ -4,6 +4,7 @@
 #include <array>
 #include <limits>
 
+#include "simulator/collision/segment_box.h"
 #include "simulator/haptics/haptic_proxy.h"
 
 namespace viscera::sim {
@@ -30,19 +31,6 @@ double intersect(const core::Vec3& o, const core::Vec3& d, const core::Vec3& a, 
 }
 
 /// Slab test: entry distance of the ray into the box, or +inf when it misses within tmax.
-double enter_box(const core::Vec3& o, const core::Vec3& inv_d, const core::Vec3& lo,
-                 const core::Vec3& hi, double tmax) {
-  double t0 = 0.0, t1 = tmax;
-  for (int k = 0; k < 3; ++k) {
-    double a = (lo[k] - o[k]) * inv_d[k], b = (hi[k] - o[k]) * inv_d[k];
-    if (a > b) std::swap(a, b);
-    t0 = std::max(t0, a);
-    t1 = std::min(t1, b);
-    if (t0 > t1) return std::numeric_limits<double>::infinity();
-  }
-  return t0;
-}
-
 double box_distance_squared(const core::Vec3& p, const core::Vec3& lo, const core::Vec3& hi) {
   return (p.cwiseMax(lo).cwiseMin(hi) - p).squaredNorm();
 }
@@ -126,7 +114,7 @@ RayHit SurfaceBvh::cast(const core::Vec3& origin, const core::Vec3& direction,
   stack[top++] = 0;
   while (top > 0) {
     const Node& node = nodes_[stack[--top]];
-    if (enter_box(origin, inv, node.lo, node.hi, best) > best) continue;
+    if (segment_enters_box(origin, direction, inv, node.lo, node.hi, best) > best) continue;
     if (node.count > 0) {
       for (int i = node.first; i < node.first + node.count; ++i) {
         const auto& tri = triangles_[order_[i]];
@@ -141,8 +129,10 @@ RayHit SurfaceBvh::cast(const core::Vec3& origin, const core::Vec3& direction,
       continue;
     }
     // Nearer child last so it is popped first.
-    const double l = enter_box(origin, inv, nodes_[node.left].lo, nodes_[node.left].hi, best);
-    const double r = enter_box(origin, inv, nodes_[node.right].lo, nodes_[node.right].hi, best);
+    const double l = segment_enters_box(origin, direction, inv, nodes_[node.left].lo,
+                                        nodes_[node.left].hi, best);
+    const double r = segment_enters_box(origin, direction, inv, nodes_[node.right].lo,
+                                        nodes_[node.right].hi, best);
     if (l < r) {
       stack[top++] = node.right;
       stack[top++] = node.left;

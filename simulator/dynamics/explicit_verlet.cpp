@@ -227,13 +227,19 @@ int divisor_at_least(int fine, int need) {
 
 }  // namespace
 
+ExplicitVerlet::Plan ExplicitVerlet::plan(const std::vector<int>& need) const {
+  const int most = need.empty() ? 1 : *std::max_element(need.begin(), need.end());
+  if (!every_node_in_an_island_ ||
+      std::all_of(need.begin(), need.end(), [&](int k) { return k == most; }))
+    return {most, {}};
+  Plan out{rich_count(most), {}};
+  for (const int k : need)
+    out.strides.push_back(out.fine / divisor_at_least(out.fine, k));
+  return out;
+}
+
 int ExplicitVerlet::substeps(double h) const {
-  const std::vector<int> need = needed_substeps(h);
-  if (need.empty()) return 1;
-  const int most = *std::max_element(need.begin(), need.end());
-  const bool uniform = !every_node_in_an_island_ ||
-                       std::all_of(need.begin(), need.end(), [&](int k) { return k == most; });
-  return uniform ? most : rich_count(most);
+  return plan(needed_substeps(h)).fine;
 }
 
 StepStatistics ExplicitVerlet::step(SimulationState& state, std::span<ForceTerm* const> terms,
@@ -253,19 +259,12 @@ StepStatistics ExplicitVerlet::step(SimulationState& state, std::span<ForceTerm*
       t->prepare(state, first);
     far = islands_out_of_reach(state, reaching);
   }
-  const std::vector<int> need = needed_substeps(context.h, far);
-  const int most = need.empty() ? 1 : *std::max_element(need.begin(), need.end());
-  if (!every_node_in_an_island_ ||
-      std::all_of(need.begin(), need.end(), [&](int k) { return k == most; })) {
-    stats.substeps = most;
-    step_uniform(state, terms, context, most, reaching);
-    return stats;
-  }
-  stats.substeps = rich_count(most);
-  std::vector<int> strides;
-  for (const int k : need)
-    strides.push_back(stats.substeps / divisor_at_least(stats.substeps, k));
-  step_multirate(state, terms, context, stats.substeps, strides, reaching);
+  const Plan step_plan = plan(needed_substeps(context.h, far));
+  stats.substeps = step_plan.fine;
+  if (step_plan.strides.empty())
+    step_uniform(state, terms, context, step_plan.fine, reaching);
+  else
+    step_multirate(state, terms, context, step_plan.fine, step_plan.strides, reaching);
   return stats;
 }
 

@@ -56,6 +56,13 @@ class ExplicitVerlet : public Integrator {
     double stable_step = 0.0;      ///< s, with every worst case
     double far_stable_step = 0.0;  ///< s, out of the reach of terms that act within reach
   };
+  /// The fine sub-steps of a step and, when the islands step at different rates, each island's
+  /// stride in fine sub-steps (empty: every island at every fine sub-step, the uniform step).
+  struct Plan {
+    int fine = 1;
+    std::vector<int> strides;
+  };
+  Plan plan(const std::vector<int>& need) const;
   /// Sub-steps each island needs for a step of `h`, in island order; an island marked in `far`
   /// is planned without the worst case of the terms that act within reach.
   std::vector<int> needed_substeps(double h, std::span<const char> far = {}) const;

@@ -5,30 +5,13 @@
 #include <limits>
 
 #include "simulator/collision/penetration_depth.h"
+#include "simulator/collision/segment_box.h"
 
 namespace viscera::sim {
 
 namespace {
 
 constexpr int kLeafFaces = 4;
-
-/// Whether the segment p + t·d, t ∈ [0, reach], meets the box [lo, hi] (slab test).
-bool segment_meets_box(const core::Vec3& p, const core::Vec3& d, const core::Vec3& inverse,
-                       const core::Vec3& lo, const core::Vec3& hi, double reach) {
-  double t0 = 0.0, t1 = reach;
-  for (int a = 0; a < 3; ++a) {
-    if (d[a] == 0.0) {
-      if (p[a] < lo[a] || p[a] > hi[a]) return false;
-      continue;
-    }
-    double near = (lo[a] - p[a]) * inverse[a], far = (hi[a] - p[a]) * inverse[a];
-    if (near > far) std::swap(near, far);
-    t0 = std::max(t0, near);
-    t1 = std::min(t1, far);
-    if (t0 > t1) return false;
-  }
-  return true;
-}
 
 }  // namespace
 
@@ -128,7 +111,9 @@ void ProxySurfaceTree::along_segment(const core::Vec3& p, const core::Vec3& q, R
   while (top > 0) {
     const int n = stack[--top];
     const Node& node = nodes_[static_cast<std::size_t>(n)];
-    if (!segment_meets_box(p, d, inverse, node.lo, node.hi, reach())) continue;
+    if (segment_enters_box(p, d, inverse, node.lo, node.hi, reach()) ==
+        std::numeric_limits<double>::infinity())
+      continue;
     if (node.count > 0) {
       for (int k = node.first; k < node.first + node.count; ++k)
         visit(order_[static_cast<std::size_t>(k)]);

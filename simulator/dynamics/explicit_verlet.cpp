@@ -309,14 +309,18 @@ void ExplicitVerlet::step_multirate(SimulationState& state, std::span<ForceTerm*
                                     const StepContext& context, int fine,
                                     const std::vector<int>& strides,
                                     std::span<ForceTerm* const> prepared) {
-  std::vector<ForceTerm*> shared;
+  // Terms acting per node (gravity) are prepared with the shared ones at every fine sub-step
+  // but add their forces only at each island's own sub-steps, on its nodes.
+  std::vector<ForceTerm*> shared, coupling, per_node;
   std::vector<std::vector<ForceTerm*>> own(islands_.size());
   for (ForceTerm* t : terms) {
     const int b = t->body();
-    if (b >= 0 && b < static_cast<int>(island_of_body_.size()))
+    if (b >= 0 && b < static_cast<int>(island_of_body_.size())) {
       own[static_cast<std::size_t>(island_of_body_[static_cast<std::size_t>(b)])].push_back(t);
-    else
-      shared.push_back(t);
+      continue;
+    }
+    shared.push_back(t);
+    (t->acts_per_node() ? per_node : coupling).push_back(t);
   }
   const double h = context.h / fine;
   // The shared terms' forces add up in shared_impulse_ over the fine sub-steps until the
@@ -327,7 +331,7 @@ void ExplicitVerlet::step_multirate(SimulationState& state, std::span<ForceTerm*
     const StepContext sub{context.time + s * h, h, context.step};
     for (ForceTerm* t : shared)
       if (s > 0 || !among(prepared, t)) t->prepare(state, sub);
-    for (ForceTerm* t : shared)
+    for (ForceTerm* t : coupling)
       t->add_forces(state.positions, state.velocities, shared_impulse_);
     for (std::size_t g = 0; g < islands_.size(); ++g) {
       const std::vector<int>& nodes = islands_[g].nodes;
@@ -342,6 +346,8 @@ void ExplicitVerlet::step_multirate(SimulationState& state, std::span<ForceTerm*
         forces_[static_cast<std::size_t>(i)].setZero();
       for (ForceTerm* t : own[g])
         t->add_forces(state.positions, state.velocities, forces_);
+      for (ForceTerm* t : per_node)
+        t->add_node_forces(nodes, state.positions, state.velocities, forces_);
       const double mean = 1.0 / stride;
       for (const int node : nodes) {
         const auto i = static_cast<std::size_t>(node);

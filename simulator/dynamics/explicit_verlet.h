@@ -13,8 +13,9 @@
 /// step is cut into N fine sub-steps (N the smallest of 1, 2, 3, 4, 6, 8, 12, 16, 24, … not
 /// below the most any island needs) and an island that needs n advances every N/d of them (d
 /// the smallest divisor of N not below n), its own terms (ForceTerm::body()) evaluated only
-/// then. Terms that may touch any body (contact, the proxy, tools, gravity) are evaluated at
-/// every fine sub-step; a slow island receives their mean over its sub-step — the impulse its
+/// then, as are terms that act per node (gravity: ForceTerm::acts_per_node), on its nodes.
+/// Terms that may touch any body (contact, the proxy, tools) are evaluated at every fine
+/// sub-step; a slow island receives their mean over its sub-step — the impulse its
 /// partners receive, so momentum exchanged between islands is conserved — at the positions it
 /// held during that sub-step (zero-order hold). With one island, or islands that all need the
 /// same count, the step is the uniform one above, bit for bit. Decision: islands come from the

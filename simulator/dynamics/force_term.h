@@ -73,6 +73,14 @@ class ForceTerm {
   /// integrator that steps bodies at their own rates evaluates a body's own terms only at that
   /// body's sub-steps.
   virtual int body() const { return -1; }
+  /// True when the force on each node depends on nothing but that node and the time (gravity):
+  /// an explicit integrator that steps bodies at their own rates then applies it with
+  /// add_node_forces at each island's own sub-steps instead of at every fine sub-step.
+  virtual bool acts_per_node() const { return false; }
+  /// add_forces restricted to `nodes` (global indices), for terms that act_per_node(): each of
+  /// these nodes receives what add_forces would add to it, bit for bit.
+  virtual void add_node_forces(std::span<const int> /*nodes*/, std::span<const Vec3> /*x*/,
+                               std::span<const Vec3> /*v*/, std::span<Vec3> /*f*/) const {}
   /// True while the term moves what it acts on from outside the state (a grasper's jaws, a clip
   /// still closing): a world with such a term neither falls asleep nor stays asleep.
   virtual bool drives() const { return false; }

@@ -21,9 +21,21 @@ double GravityTerm::energy(std::span<const Vec3> x) const {
 double GravityTerm::add_forces(std::span<const Vec3> x, std::span<const Vec3>,
                                std::span<Vec3> f) const {
   if (gravity_.squaredNorm() == 0.0) return 0.0;
-  for (std::size_t i = 0; i < mass_.size(); ++i)
+  double e = 0.0;  // as energy(x), in the same order, in the same pass
+  for (std::size_t i = 0; i < mass_.size(); ++i) {
     f[i] += mass_[i] * gravity_;
-  return energy(x);
+    e -= mass_[i] * gravity_.dot(x[i] - rest_[i]);
+  }
+  return e;
+}
+
+void GravityTerm::add_node_forces(std::span<const int> nodes, std::span<const Vec3>,
+                                  std::span<const Vec3>, std::span<Vec3> f) const {
+  if (gravity_.squaredNorm() == 0.0) return;
+  for (const int node : nodes) {
+    const auto i = static_cast<std::size_t>(node);
+    f[i] += mass_[i] * gravity_;
+  }
 }
 
 }  // namespace viscera::sim

@@ -15,6 +15,9 @@ class GravityTerm : public ForceTerm {
   void declare_blocks(BlockPattern&) const override {}
   void add_stiffness(std::span<const Vec3>, double, bool, BlockSparseMatrix&) const override {}
   void topology_changed(const SimulationState& state, int body) override;
+  bool acts_per_node() const override { return true; }
+  void add_node_forces(std::span<const int> nodes, std::span<const Vec3> x, std::span<const Vec3> v,
+                       std::span<Vec3> f) const override;
   const Vec3& gravity() const { return gravity_; }
 
  private:

@@ -1,6 +1,9 @@
 #include "simulator/physics/kismo_mass_spring.h"
 
+#include <algorithm>
 #include <cmath>
+
+#include "simulator/physics/spring_pulls.h"
 
 namespace viscera::sim {
 
@@ -11,29 +14,43 @@ std::array<double, 3> spring_coefficients_from_cubic(const std::array<double, 3>
 
 namespace {
 
-/// One pass over the springs: the cubic's pull (and with kDamped the damping element's
-/// c (v_j − v_i)·d̂, both along d̂ = d / |d|) into f when kForces, and the springs' energy.
-template <bool kDamped, bool kForces>
+/// Springs computed per chunk before their forces are added: the chunk's springs are
+/// independent of each other, so their square roots and divisions overlap (or go four wide).
+constexpr std::size_t kChunk = 256;
+
+/// Adds the springs' pulls to f when kForces and returns their energy. The pulls of a chunk
+/// are computed first, then added in spring order; a run of springs sharing their first knot
+/// adds into a register instead of memory (nothing else writes that knot during the run: a
+/// spring's knots differ), so every knot receives the same sums in the same order as a
+/// one-pass loop.
+template <bool kForces>
 double spring_pass(std::span<const core::Vec3> x, std::span<const core::Vec3> v,
-                   const CubicSprings& springs, std::span<core::Vec3> f) {
+                   const CubicSprings& springs, bool damped, std::span<core::Vec3> f) {
+  std::array<SpringPull, kChunk> pulls;
   double energy = 0.0;
-  for (std::size_t s = 0; s < springs.knots.size(); ++s) {
-    const auto [i, j] = springs.knots[s];
-    const core::Vec3 d = x[j] - x[i];
-    const double length = d.norm();
-    if (length <= 0.0) continue;
-    const double l0 = springs.rest_length[s];
-    const double e = (length - l0) / l0, a = std::abs(e);
-    const auto& k = springs.coefficients[s];
-    energy += l0 * (k[0] * e * e / 2.0 + k[1] * a * a * a / 3.0 + k[2] * e * e * e * e / 4.0);
-    if constexpr (kForces) {
-      const double inverse = 1.0 / length;
-      double magnitude = k[0] * e + k[1] * e * a + k[2] * e * e * e;
-      if constexpr (kDamped) magnitude += springs.damping[s] * (v[j] - v[i]).dot(d) * inverse;
-      const core::Vec3 pull = (magnitude * inverse) * d;  // towards each other when stretched
-      f[i] += pull;
-      f[j] -= pull;
+  const std::size_t count = springs.knots.size();
+  for (std::size_t begin = 0; begin < count; begin += kChunk) {
+    const std::size_t end = std::min(count, begin + kChunk);
+    compute_spring_pulls(x, v, springs, damped, begin, end, pulls.data());
+    int held = -1;  // the knot whose force is in `sum`
+    core::Vec3 sum = core::Vec3::Zero();
+    for (std::size_t s = begin; s < end; ++s) {
+      const SpringPull& p = pulls[s - begin];
+      if (p.energy < 0.0) continue;
+      energy += p.energy;
+      if constexpr (kForces) {
+        const auto [i, j] = springs.knots[s];
+        const core::Vec3 pull(p.x, p.y, p.z);
+        if (i != held) {
+          if (held >= 0) f[held] = sum;
+          held = i;
+          sum = f[i];
+        }
+        sum += pull;
+        f[j] -= pull;
+      }
     }
+    if (held >= 0) f[held] = sum;
   }
   return energy;
 }
@@ -41,12 +58,12 @@ double spring_pass(std::span<const core::Vec3> x, std::span<const core::Vec3> v,
 }  // namespace
 
 double cubic_spring_energy(std::span<const core::Vec3> x, const CubicSprings& springs) {
-  return spring_pass<false, false>(x, {}, springs, {});
+  return spring_pass<false>(x, {}, springs, false, {});
 }
 
 double add_cubic_spring_forces(std::span<const core::Vec3> x, const CubicSprings& springs,
                                std::span<core::Vec3> f) {
-  return spring_pass<false, true>(x, {}, springs, f);
+  return spring_pass<true>(x, {}, springs, false, f);
 }
 
 void add_spring_damping_forces(std::span<const core::Vec3> x, std::span<const core::Vec3> v,
@@ -65,8 +82,7 @@ void add_spring_damping_forces(std::span<const core::Vec3> x, std::span<const co
 
 double add_damped_cubic_spring_forces(std::span<const core::Vec3> x, std::span<const core::Vec3> v,
                                       const CubicSprings& springs, std::span<core::Vec3> f) {
-  return springs.damping.empty() ? spring_pass<false, true>(x, v, springs, f)
-                                 : spring_pass<true, true>(x, v, springs, f);
+  return spring_pass<true>(x, v, springs, !springs.damping.empty(), f);
 }
 
 void kismo_step(std::span<core::Vec3> x, std::span<core::Vec3> v, std::span<const core::Vec3> f,

@@ -86,12 +86,20 @@ std::vector<ForceTerm*> World::term_pointers() const {
   return pointers;
 }
 
+void World::refresh_integrator() const {
+  if (!integrator_stale_) return;
+  integrator_->topology_changed(state_, term_pointers());
+  integrator_stale_ = false;
+}
+
 int World::substeps() const {
+  refresh_integrator();
   const auto* verlet = dynamic_cast<const ExplicitVerlet*>(integrator_.get());
   return verlet != nullptr ? verlet->substeps(time_step_) : 1;
 }
 
 double World::stable_step() const {
+  refresh_integrator();
   const auto* verlet = dynamic_cast<const ExplicitVerlet*>(integrator_.get());
   return verlet != nullptr ? verlet->stable_step() : std::numeric_limits<double>::infinity();
 }
@@ -104,11 +112,12 @@ int World::body_index(const std::string& name) const {
 
 void World::add_term(std::unique_ptr<ForceTerm> term) {
   terms_.push_back(std::move(term));
-  integrator_->topology_changed(state_, term_pointers());
+  integrator_stale_ = true;
 }
 
 void World::stiffness_changed() {
   integrator_->topology_changed(state_, term_pointers());
+  integrator_stale_ = false;
   wake();  // a term's forces changed: what rested may move
 }
 
@@ -131,6 +140,7 @@ void World::step() {
     }
     calm_steps_ = 0;
   }
+  refresh_integrator();
   const std::vector<ForceTerm*> terms = term_pointers();
   statistics_ = integrator_->step(state_, terms, context);
   ++steps_;

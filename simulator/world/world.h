@@ -85,7 +85,7 @@ class World {
   /// Every force term in evaluation order.
   const std::vector<std::unique_ptr<ForceTerm>>& terms() const { return terms_; }
   /// Adds a force term (e.g. motility, plasticity) evaluated after the built-in ones; the
-  /// integrator's structure is rebuilt.
+  /// integrator's structure is rebuilt before it is next used (terms added in a row: once).
   void add_term(std::unique_ptr<ForceTerm> term);
   const std::vector<std::shared_ptr<BodyModel>>& models() const { return models_; }
   /// Call after changing a term's coefficients in place (coagulated tissue stiffening): the
@@ -190,6 +190,10 @@ class World {
   std::vector<BodyView> views_;
   std::vector<std::unique_ptr<ForceTerm>> terms_;
   std::unique_ptr<Integrator> integrator_;
+  /// Terms were added since the integrator last saw them.
+  mutable bool integrator_stale_ = false;
+  /// Lets the integrator see the terms added since it last did.
+  void refresh_integrator() const;
   BodyContactTerm* contact_ = nullptr;
   ProxySpringTerm* proxy_ = nullptr;
   core::Vec3 gravity_;

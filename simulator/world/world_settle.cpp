@@ -42,6 +42,7 @@ World::Settling World::settle(double h, int max_steps, double tolerance) {
   }
   if (drives_bodies(terms_)) return result;  // motility or a pulse: no rest to settle to
   const double clock = state_.time;
+  refresh_integrator();
   const std::vector<ForceTerm*> terms = term_pointers();
   // The steps are a descent in pseudo-time, not a motion: only where they end matters, so each
   // takes at most kSettleNewtonIterations Newton iterations of at most kSettleCgIterations CG

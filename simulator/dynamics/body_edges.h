@@ -12,6 +12,13 @@
 
 namespace viscera::sim {
 
+/// True when an edge whose squared length is `squared` (m²) is certainly no longer than `limit`
+/// (m): a test without a square root, leaving the exact comparison to the few edges within a
+/// relative 5·10⁻¹⁰ of the limit or past it (so the exact test decides exactly as before).
+inline bool certainly_within(double squared, double limit) {
+  return squared <= limit * limit * (1.0 - 1e-9);
+}
+
 class BodyEdges {
  public:
   explicit BodyEdges(TeschnerDistanceTerm& distance) : distance_(&distance) {}

@@ -1,6 +1,7 @@
 #include "simulator/dynamics/plastic_flow.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace viscera::sim {
 
@@ -11,10 +12,12 @@ int apply_plastic_flow(std::span<const Vec3> x, std::span<const std::array<int, 
   for (std::size_t e = 0; e < edges.size(); ++e) {
     const double yield = yield_strain[e];
     if (!(yield > 0.0)) continue;
-    const double length =
+    const double squared =
         (x[static_cast<std::size_t>(edges[e][1])] - x[static_cast<std::size_t>(edges[e][0])])
-            .norm();
+            .squaredNorm();
     double& rest = rest_length[e];
+    if (certainly_within(squared, (1.0 + yield) * rest)) continue;
+    const double length = std::sqrt(squared);
     if (!(length > (1.0 + yield) * rest)) continue;
     const double flowed = std::min(length / (1.0 + yield), longest[e]);
     if (flowed > rest) {

@@ -1,5 +1,7 @@
 #include "simulator/dynamics/tissue_tearing.h"
 
+#include <cmath>
+
 namespace viscera::sim {
 
 TissueTearing::TissueTearing(BodyEdges edges, const SimulationState& state) : edges_(edges) {
@@ -19,9 +21,11 @@ void TissueTearing::after_step(const SimulationState& state) {
   const auto edges = edges_.edges();
   for (std::size_t e = 0; e < edges.size(); ++e) {
     if (torn_[e] || !(threshold_[e] > 0.0) || !(original_[e] > 0.0)) continue;
-    const double length = (state.positions[static_cast<std::size_t>(edges[e][1])] -
-                           state.positions[static_cast<std::size_t>(edges[e][0])])
-                              .norm();
+    const double squared = (state.positions[static_cast<std::size_t>(edges[e][1])] -
+                            state.positions[static_cast<std::size_t>(edges[e][0])])
+                               .squaredNorm();
+    if (certainly_within(squared, original_[e] * (1.0 + threshold_[e]))) continue;
+    const double length = std::sqrt(squared);
     const double strain = length / original_[e] - 1.0;
     if (strain <= threshold_[e]) continue;
     torn_[e] = 1;

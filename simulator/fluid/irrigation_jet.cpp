@@ -74,10 +74,11 @@ std::vector<JetImpact> IrrigationJet::step(double dt, const core::Vec3& gravity,
   std::vector<JetDrop> thrown;  // by splashes, after the drops already flying
   std::size_t kept = 0;
   long long landed = 0;
+  landings_.clear();
   for (std::size_t i = 0; i < drops_.size(); ++i) {
     JetDrop drop = drops_[i];
     const std::size_t before = thrown.size();
-    if (move(drop, dt, gravity, surfaces, pool, impacts, thrown)) {
+    if (move(drop, dt, gravity, surfaces, pool, impacts, thrown, landings_)) {
       landed += drop.quarters;
       continue;
     }
@@ -96,7 +97,8 @@ std::vector<JetImpact> IrrigationJet::step(double dt, const core::Vec3& gravity,
 
 bool IrrigationJet::move(JetDrop& drop, double dt, const core::Vec3& gravity,
                          const SurfaceQuery& surfaces, const FluidPool& pool,
-                         std::vector<JetImpact>& impacts, std::vector<JetDrop>& thrown) const {
+                         std::vector<JetImpact>& impacts, std::vector<JetDrop>& thrown,
+                         std::vector<PoolLanding>& landings) const {
   const core::Vec3 from = drop.position;
   const core::Vec3 to = from + dt * drop.velocity + 0.5 * dt * dt * gravity;
   drop.age += dt;
@@ -105,7 +107,11 @@ bool IrrigationJet::move(JetDrop& drop, double dt, const core::Vec3& gravity,
   const double depth_from = pool.depth(from), depth_to = pool.depth(to);
   if (depth_to >= 0.0) {
     const double at_pool = depth_from >= 0.0 ? 0.0 : -depth_from / (depth_to - depth_from);
-    if (!hit || hit->fraction >= at_pool) return true;
+    if (!hit || hit->fraction >= at_pool) {
+      landings.push_back({from + at_pool * (to - from), drop.velocity + at_pool * dt * gravity,
+                          0.25 * drop.quarters * options_.drop_volume});
+      return true;
+    }
   }
   if (!hit) {
     drop.position = to;

@@ -100,6 +100,13 @@ struct JetImpact {
   core::Vec3 point = core::Vec3::Zero();  ///< m
 };
 
+/// A drop that fell into the pool's surface (not one that ran down the tissue to it).
+struct PoolLanding {
+  core::Vec3 point = core::Vec3::Zero();     ///< m, on the pool's surface
+  core::Vec3 velocity = core::Vec3::Zero();  ///< m/s as it met the water
+  double volume = 0.0;                       ///< m³
+};
+
 class IrrigationJet {
  public:
   /// Throws core::InputError for a rate, speed, drop volume, density, impact scale or flight
@@ -132,14 +139,16 @@ class IrrigationJet {
     return static_cast<double>(landed_) * (0.25 * options_.drop_volume);
   }
   int splashes() const { return splashes_; }  ///< impacts that broke a drop up
+  /// The drops the last step() let fall into the pool's surface, in drop order.
+  const std::vector<PoolLanding>& last_landings() const { return landings_; }
 
  private:
-  /// Advances one drop; true when it joined the pool.
-  /// Advances one drop; true when it joined the pool. A splash puts the drops it throws off in
+  /// Advances one drop; true when it joined the pool (a fall into its surface also in
+  /// `landings`). A splash puts the drops it throws off in
   /// `thrown` (the drop itself then joins nothing and is replaced by them).
   bool move(JetDrop& drop, double dt, const core::Vec3& gravity, const SurfaceQuery& surfaces,
-            const FluidPool& pool, std::vector<JetImpact>& impacts,
-            std::vector<JetDrop>& thrown) const;
+            const FluidPool& pool, std::vector<JetImpact>& impacts, std::vector<JetDrop>& thrown,
+            std::vector<PoolLanding>& landings) const;
 
   JetOptions options_;
   std::vector<JetDrop> drops_;
@@ -147,6 +156,7 @@ class IrrigationJet {
   long long emitted_ = 0;  ///< drops
   long long landed_ = 0;   ///< quarter drops
   int splashes_ = 0;
+  std::vector<PoolLanding> landings_;
 };
 
 }  // namespace viscera::sim::fluid

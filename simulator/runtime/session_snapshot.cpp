@@ -71,6 +71,7 @@ void capture_snapshot(const SessionRunner& runner, SessionSnapshot& out) {
   out.pool_volume = 0.0;
   out.pool_blood_fraction = 0.0;
   out.pool_radius = 0.0;
+  out.pool_waves.clear();
   if (const SuctionIrrigation* cannula = runner.irrigation()) {
     const fluid::FluidPool& pool = cannula->pool();
     out.pool_volume = pool.contents().total();
@@ -79,6 +80,15 @@ void capture_snapshot(const SessionRunner& runner, SessionSnapshot& out) {
       out.pool_up = -pool.down();
       out.pool_centre = pool.floor() + pool.height() * out.pool_up;
       out.pool_radius = std::sqrt(pool.area() / std::numbers::pi);
+      const fluid::PoolWaves& waves = cannula->waves();
+      out.pool_waves.push_back(static_cast<float>(waves.elevation_at(0.0, 0.0)));
+      for (int k = 1; k <= SessionSnapshot::kPoolRings; ++k)
+        for (int side = 0; side < SessionSnapshot::kPoolSides; ++side) {
+          const double r = out.pool_radius * k / SessionSnapshot::kPoolRings;
+          const double angle = 2.0 * std::numbers::pi * side / SessionSnapshot::kPoolSides;
+          out.pool_waves.push_back(
+              static_cast<float>(waves.elevation_at(r * std::cos(angle), r * std::sin(angle))));
+        }
     }
   }
   if (const fluid::CavityFlow* flow = runner.cavity_flow()) {

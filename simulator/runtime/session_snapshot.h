@@ -65,6 +65,12 @@ struct SessionSnapshot {
   core::Vec3 pool_centre = core::Vec3::Zero();
   core::Vec3 pool_up = core::Vec3::UnitZ();
   double pool_radius = 0.0;
+  /// The waves on it (fluid::PoolWaves): elevations in m at the vertices of a polar mesh over
+  /// the disc — the centre, then kPoolRings rings of kPoolSides vertices from the centre out,
+  /// ring k at k/kPoolRings of the radius, vertex s at 2π s/kPoolSides from up.unitOrthogonal()
+  /// towards up × that. Empty without a pool.
+  static constexpr int kPoolRings = 8, kPoolSides = 64;
+  std::vector<float> pool_waves;
   /// Smoke of coagulation (issue 19 §4): camera-facing puffs, and the steam on the lens (0…1).
   std::vector<SmokeBillboard> smoke;
   double lens_fog = 0.0;

@@ -59,6 +59,7 @@ SuctionIrrigation::SuctionIrrigation(const World& world, SuctionIrrigationOption
       bodies_(surface_bodies(world)),
       jet_(options.jet),
       pool_(pool_under(world, bodies_, options.pool_area)),
+      waves_(pool_.floor(), pool_.down(), pool_.area()),
       surfaces_(bodies_.size()),
       triangles_(bodies_.size()) {}
 
@@ -71,15 +72,20 @@ void SuctionIrrigation::follow(const InstrumentState& state, World& world, doubl
   const bool cannula = state.tool == LaparoscopicTool::Suction;
   if (cannula && state.irrigating) jet_.emit(state.tip, state.axis, dt);
   impacts_.clear();
+  landings_.clear();
   if (!jet_.drops().empty()) {
     refresh_surfaces(world);
     const fluid::SurfaceQuery query = [this](const core::Vec3& from, const core::Vec3& to) {
       return first_hit(from, to);
     };
     impacts_ = jet_.step(dt, world.gravity(), query, pool_);
+    landings_ = jet_.last_landings();
+    for (const fluid::PoolLanding& landing : landings_)
+      waves_.drop_lands(landing.point, landing.velocity, landing.volume, pool_.height());
   }
   apply_impacts(world);
   if (cannula && state.jaws_closed) pool_.suck(state.tip, options_.suction, dt);
+  waves_.step(dt, pool_.height());
   summary.irrigated_volume = jet_.emitted_volume();
   summary.suctioned_volume = pool_.suctioned().total();
   summary.pool_volume = pool_.contents().total();

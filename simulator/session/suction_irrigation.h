@@ -17,6 +17,8 @@
 /// bounding boxes"), refitted to the bodies' positions in every step that has drops in flight
 /// and built anew when a body's surface changes (a cut). The jet and the pool are not part of
 /// the state hash; the forces the drops put on the tissue are, through the knots they move.
+/// Drops that fall into the pool's surface raise waves on it (fluid::PoolWaves), which run and
+/// die out in every step while the pool holds water.
 
 #include <memory>
 #include <optional>
@@ -26,6 +28,7 @@
 #include "simulator/dynamics/impact_forces.h"
 #include "simulator/fluid/fluid_pool.h"
 #include "simulator/fluid/irrigation_jet.h"
+#include "simulator/fluid/pool_waves.h"
 #include "simulator/session/instrument_state.h"
 #include "simulator/session/laparoscopy_summary.h"
 #include "simulator/world/world.h"
@@ -54,8 +57,11 @@ class SuctionIrrigation {
 
   const fluid::IrrigationJet& jet() const { return jet_; }
   const fluid::FluidPool& pool() const { return pool_; }
+  const fluid::PoolWaves& waves() const { return waves_; }
   /// The impacts of the last call, N and m.
   const std::vector<fluid::JetImpact>& last_impacts() const { return impacts_; }
+  /// The drops of the last call that fell into the pool's surface.
+  const std::vector<fluid::PoolLanding>& last_landings() const { return landings_; }
 
  private:
   /// The first surface of the bodies the segment meets (bodies in order, nearest hit).
@@ -68,9 +74,11 @@ class SuctionIrrigation {
   std::vector<int> bodies_;  ///< world bodies the drops collide with
   fluid::IrrigationJet jet_;
   fluid::FluidPool pool_;
+  fluid::PoolWaves waves_;
   std::vector<SurfaceBvh> surfaces_;
   std::vector<std::vector<core::Triangle>> triangles_;  ///< per body, what its hierarchy holds
   std::vector<fluid::JetImpact> impacts_;
+  std::vector<fluid::PoolLanding> landings_;
   ImpactForces* forces_ = nullptr;  ///< added to the world at the first impact
   double blood_seen_ = 0.0;         ///< m³ of the sources' blood already in the pool
 };

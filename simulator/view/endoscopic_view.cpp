@@ -123,7 +123,7 @@ void EndoscopicView::update(const sim::SessionSnapshot& snapshot) {
   debris_->update(snapshot.debris, snapshot.debris_size);
   drops_->update(snapshot.irrigation_drops, snapshot.irrigation_drop_age);
   pool_->update(snapshot.pool_centre, snapshot.pool_up, snapshot.pool_radius,
-                snapshot.pool_blood_fraction);
+                snapshot.pool_blood_fraction, snapshot.pool_waves);
   if (lens_) {
     lens_->haze_density = snapshot.haze_density;
     lens_->lens_fog = snapshot.lens_fog;

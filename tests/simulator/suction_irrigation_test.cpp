@@ -69,7 +69,9 @@ nlohmann::json cannula_script(bool irrigate) {
 struct CannulaRun {
   SessionReport report;
   double landed = 0.0, in_flight = 0.0, pool_water = 0.0, pool_floor = 0.0;
-  double max_impact = 0.0;  ///< N, the largest total impact force of a step
+  double max_impact = 0.0;                     ///< N, the largest total impact force of a step
+  double fallen_in = 0.0;                      ///< m³ of drops that fell into the pool's surface
+  double highest_wave = 0.0, displaced = 0.0;  ///< m, and the waves' ∫η dA at the end, m³
 };
 
 CannulaRun run(const InstrumentInput& input, double duration, bool record) {
@@ -87,7 +89,11 @@ CannulaRun run(const InstrumentInput& input, double duration, bool record) {
     for (const fluid::JetImpact& impact : runner.irrigation()->last_impacts())
       total += impact.force;
     out.max_impact = std::max(out.max_impact, total.norm());
+    for (const fluid::PoolLanding& landing : runner.irrigation()->last_landings())
+      out.fallen_in += landing.volume;
+    out.highest_wave = std::max(out.highest_wave, runner.irrigation()->waves().largest_elevation());
   }
+  out.displaced = runner.irrigation()->waves().displaced_volume();
   const SuctionIrrigation& cannula = *runner.irrigation();
   out.landed = cannula.jet().landed_volume();
   out.in_flight = cannula.jet().in_flight_volume();
@@ -120,6 +126,10 @@ TEST(SuctionIrrigation, irrigation_fills_the_pool_and_suction_draws_it_off_in_th
   EXPECT_EQ(l.pool_blood_fraction, 0.0);
   // The pool lies under the tube's lowest knot.
   EXPECT_NEAR(r.pool_floor, core::bounds(left_tube_patient().objects[0].surface).min.z(), 2e-3);
+  // Drops the splashes threw into the pool raised waves that moved water but made none.
+  EXPECT_GT(r.fallen_in, 0.0);
+  EXPECT_GT(r.highest_wave, 1e-6);
+  EXPECT_LT(std::abs(r.displaced), 1e-9 * r.fallen_in);
   // The report in ml, valid against the schema.
   const nlohmann::json json = report_to_json(r.report);
   EXPECT_NEAR(json["laparoscopy"]["irrigated_ml"].get<double>(), 10.0, 0.02);

@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <numbers>
 
 #include "core/package/scenario_package.h"
 #include "simulator/session/manual_control.h"
@@ -318,6 +319,25 @@ TEST(EndoscopicView, the_pool_shows_as_a_translucent_surface_tinted_by_its_blood
   EXPECT_TRUE(view.pool().visible());
   const FrameStatistics water = frame_statistics(view.capture(), 0.9);
   EXPECT_GT(testing::mean_abs_difference(clear, view.capture(), 0.9), 5.0);
+  // Waves (fluid::PoolWaves' elevations at the mesh's vertices) lift and lower the surface by
+  // what they say and move its highlight; a flat field draws the flat pool.
+  const auto flat = view.capture();
+  constexpr int kRings = sim::SessionSnapshot::kPoolRings,
+                kSides = sim::SessionSnapshot::kPoolSides;
+  snapshot.pool_waves.assign(1 + kRings * kSides, 0.0f);
+  for (int k = 1; k <= kRings; ++k)
+    for (int side = 0; side < kSides; ++side)
+      snapshot.pool_waves[static_cast<std::size_t>(1 + (k - 1) * kSides + side)] =
+          static_cast<float>(0.002 * std::sin(std::numbers::pi * k / 2.0) *
+                             std::cos(6.0 * std::numbers::pi * side / kSides));
+  view.update(snapshot);
+  EXPECT_NEAR(view.pool().relief(), 0.004, 1e-6);
+  EXPECT_GT(testing::mean_abs_difference(flat, view.capture(), 0.9), 0.5);
+  std::fill(snapshot.pool_waves.begin(), snapshot.pool_waves.end(), 0.0f);
+  view.update(snapshot);
+  EXPECT_EQ(view.pool().relief(), 0.0);
+  EXPECT_LT(testing::mean_abs_difference(flat, view.capture(), 0.9), 0.01);
+  snapshot.pool_waves.clear();
   snapshot.pool_blood_fraction = 1.0;
   view.update(snapshot);
   const FrameStatistics blood = frame_statistics(view.capture(), 0.9);

@@ -80,6 +80,13 @@ void capture_snapshot(const SessionRunner& runner, SessionSnapshot& out) {
       out.pool_up = -pool.down();
       out.pool_centre = pool.floor() + pool.height() * out.pool_up;
       out.pool_radius = std::sqrt(pool.area() / std::numbers::pi);
+      for (const fluid::PoolBubble& b : cannula->bubbles().bubbles()) {
+        const fluid::PoolBubbleOptions& o = cannula->bubbles().options();
+        out.bubbles.push_back(b.position);
+        out.bubble_size.push_back(static_cast<float>(
+            o.max_radius > o.min_radius ? (b.radius - o.min_radius) / (o.max_radius - o.min_radius)
+                                        : 1.0));
+      }
       const fluid::PoolWaves& waves = cannula->waves();
       out.pool_waves.push_back(static_cast<float>(waves.elevation_at(0.0, 0.0)));
       for (int k = 1; k <= SessionSnapshot::kPoolRings; ++k)

@@ -48,8 +48,8 @@ struct SessionSnapshot {
   std::vector<core::Vec3> blood;
   std::vector<float> blood_stage;
   double haze_density = 0.0;
-  /// Air bubbles in the cavity's flow: each one's position (m) and its radius within the
-  /// bubbles' range (0 smallest … 1 largest).
+  /// Air bubbles in the cavity's flow, or on the laparoscopy's pool: each one's position (m) and
+  /// its radius within the bubbles' range (0 smallest … 1 largest).
   std::vector<core::Vec3> bubbles;
   std::vector<float> bubble_size;
   /// Tissue debris of the resection in the cavity's flow: each shred's position (m) and its

@@ -80,12 +80,16 @@ void SuctionIrrigation::follow(const InstrumentState& state, World& world, doubl
     };
     impacts_ = jet_.step(dt, world.gravity(), query, pool_);
     landings_ = jet_.last_landings();
-    for (const fluid::PoolLanding& landing : landings_)
+    for (const fluid::PoolLanding& landing : landings_) {
       waves_.drop_lands(landing.point, landing.velocity, landing.volume, pool_.height());
+      bubbles_.drop_lands(landing.point, landing.velocity, pool_);
+    }
   }
   apply_impacts(world);
-  if (cannula && state.jaws_closed) pool_.suck(state.tip, options_.suction, dt);
+  const bool sucking = cannula && state.jaws_closed;
+  if (sucking) pool_.suck(state.tip, options_.suction, dt);
   waves_.step(dt, pool_.height());
+  bubbles_.step(dt, pool_, waves_, sucking, state.tip, options_.suction.reach);
   summary.irrigated_volume = jet_.emitted_volume();
   summary.suctioned_volume = pool_.suctioned().total();
   summary.pool_volume = pool_.contents().total();

@@ -18,7 +18,8 @@
 /// and built anew when a body's surface changes (a cut). The jet and the pool are not part of
 /// the state hash; the forces the drops put on the tissue are, through the knots they move.
 /// Drops that fall into the pool's surface raise waves on it (fluid::PoolWaves), which run and
-/// die out in every step while the pool holds water.
+/// die out in every step while the pool holds water, and the fast ones trap bubbles that float
+/// on it (fluid::PoolBubbles) until they burst or the suction takes them.
 
 #include <memory>
 #include <optional>
@@ -28,6 +29,7 @@
 #include "simulator/dynamics/impact_forces.h"
 #include "simulator/fluid/fluid_pool.h"
 #include "simulator/fluid/irrigation_jet.h"
+#include "simulator/fluid/pool_bubbles.h"
 #include "simulator/fluid/pool_waves.h"
 #include "simulator/session/instrument_state.h"
 #include "simulator/session/laparoscopy_summary.h"
@@ -58,6 +60,7 @@ class SuctionIrrigation {
   const fluid::IrrigationJet& jet() const { return jet_; }
   const fluid::FluidPool& pool() const { return pool_; }
   const fluid::PoolWaves& waves() const { return waves_; }
+  const fluid::PoolBubbles& bubbles() const { return bubbles_; }
   /// The impacts of the last call, N and m.
   const std::vector<fluid::JetImpact>& last_impacts() const { return impacts_; }
   /// The drops of the last call that fell into the pool's surface.
@@ -75,6 +78,7 @@ class SuctionIrrigation {
   fluid::IrrigationJet jet_;
   fluid::FluidPool pool_;
   fluid::PoolWaves waves_;
+  fluid::PoolBubbles bubbles_;
   std::vector<SurfaceBvh> surfaces_;
   std::vector<std::vector<core::Triangle>> triangles_;  ///< per body, what its hierarchy holds
   std::vector<fluid::JetImpact> impacts_;

@@ -72,6 +72,8 @@ struct CannulaRun {
   double max_impact = 0.0;                     ///< N, the largest total impact force of a step
   double fallen_in = 0.0;                      ///< m³ of drops that fell into the pool's surface
   double highest_wave = 0.0, displaced = 0.0;  ///< m, and the waves' ∫η dA at the end, m³
+  long long bubbles_trapped = 0;
+  std::size_t most_bubbles = 0;
 };
 
 CannulaRun run(const InstrumentInput& input, double duration, bool record) {
@@ -92,8 +94,10 @@ CannulaRun run(const InstrumentInput& input, double duration, bool record) {
     for (const fluid::PoolLanding& landing : runner.irrigation()->last_landings())
       out.fallen_in += landing.volume;
     out.highest_wave = std::max(out.highest_wave, runner.irrigation()->waves().largest_elevation());
+    out.most_bubbles = std::max(out.most_bubbles, runner.irrigation()->bubbles().bubbles().size());
   }
   out.displaced = runner.irrigation()->waves().displaced_volume();
+  out.bubbles_trapped = runner.irrigation()->bubbles().trapped();
   const SuctionIrrigation& cannula = *runner.irrigation();
   out.landed = cannula.jet().landed_volume();
   out.in_flight = cannula.jet().in_flight_volume();
@@ -130,6 +134,9 @@ TEST(SuctionIrrigation, irrigation_fills_the_pool_and_suction_draws_it_off_in_th
   EXPECT_GT(r.fallen_in, 0.0);
   EXPECT_GT(r.highest_wave, 1e-6);
   EXPECT_LT(std::abs(r.displaced), 1e-9 * r.fallen_in);
+  // The fast ones trapped air: bubbles floated on the pool.
+  EXPECT_GT(r.bubbles_trapped, 0);
+  EXPECT_GT(r.most_bubbles, 0u);
   // The report in ml, valid against the schema.
   const nlohmann::json json = report_to_json(r.report);
   EXPECT_NEAR(json["laparoscopy"]["irrigated_ml"].get<double>(), 10.0, 0.02);

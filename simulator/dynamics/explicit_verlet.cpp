@@ -182,8 +182,8 @@ std::vector<int> ExplicitVerlet::needed_substeps(double h, std::span<const char>
   for (std::size_t g = 0; g < islands_.size(); ++g) {
     const double stable =
         !far.empty() && far[g] != 0 ? islands_[g].far_stable_step : islands_[g].stable_step;
-    out.push_back(
-        std::isfinite(stable) ? std::max(1, static_cast<int>(std::ceil(h / stable - 1e-12))) : 1);
+    const bool needs = std::isfinite(stable) && !islands_[g].asleep;
+    out.push_back(needs ? std::max(1, static_cast<int>(std::ceil(h / stable - 1e-12))) : 1);
   }
   return out;
 }
@@ -258,14 +258,69 @@ StepStatistics ExplicitVerlet::step(SimulationState& state, std::span<ForceTerm*
     for (ForceTerm* t : reaching)
       t->prepare(state, first);
     far = islands_out_of_reach(state, reaching);
+    for (std::size_t g = 0; g < islands_.size(); ++g)
+      if (far[g] == 0) islands_[g].asleep = false, islands_[g].calm_steps = 0;  // within reach
   }
   const Plan step_plan = plan(needed_substeps(context.h, far));
   stats.substeps = step_plan.fine;
-  if (step_plan.strides.empty())
+  if (step_plan.strides.empty()) {
+    wake();  // the uniform step moves every node
     step_uniform(state, terms, context, step_plan.fine, reaching);
-  else
+  } else {
     step_multirate(state, terms, context, step_plan.fine, step_plan.strides, reaching);
+  }
   return stats;
+}
+
+void ExplicitVerlet::wake() {
+  for (Island& island : islands_) {
+    island.asleep = false;
+    island.calm_steps = 0;
+  }
+}
+
+int ExplicitVerlet::islands_asleep() const {
+  return static_cast<int>(
+      std::count_if(islands_.begin(), islands_.end(), [](const Island& i) { return i.asleep; }));
+}
+
+void ExplicitVerlet::update_sleep(SimulationState& state, std::span<ForceTerm* const> terms,
+                                  double h, int fine, const std::vector<char>& touched) {
+  const double fine_h = h / fine;  // the forces a sleeping island received acted this long
+  std::vector<char> driven(islands_.size(), 0);
+  for (const ForceTerm* t : terms) {
+    const int b = t->body();
+    if (b >= 0 && b < static_cast<int>(island_of_body_.size()) && t->drives())
+      driven[static_cast<std::size_t>(island_of_body_[static_cast<std::size_t>(b)])] = 1;
+  }
+  for (std::size_t g = 0; g < islands_.size(); ++g) {
+    Island& island = islands_[g];
+    if (island.asleep) {
+      // Woken by an impulse: it takes what it received while asleep, whole.
+      bool pushed = false;
+      for (const int node : island.nodes)
+        pushed = pushed || shared_impulse_[static_cast<std::size_t>(node)] != Vec3::Zero();
+      if (!pushed) continue;
+      island.asleep = false;
+      island.calm_steps = 0;
+      for (const int node : island.nodes) {
+        const auto i = static_cast<std::size_t>(node);
+        state.velocities[i] += (fine_h * state.inverse_masses[i]) * shared_impulse_[i];
+        shared_impulse_[i].setZero();
+      }
+      continue;
+    }
+    if (!(sleep_threshold_ > 0.0)) continue;
+    double fastest = 0.0;
+    for (const int node : island.nodes)
+      fastest = std::max(fastest, state.velocities[static_cast<std::size_t>(node)].squaredNorm());
+    const bool calm = std::sqrt(fastest) * h < sleep_threshold_ && !touched[g] && !driven[g];
+    island.calm_steps = calm ? island.calm_steps + 1 : 0;
+    if (island.calm_steps < kCalmStepsToSleep) continue;
+    for (const int node : island.nodes)
+      state.velocities[static_cast<std::size_t>(node)].setZero();
+    island.asleep = true;
+  }
 }
 
 namespace {
@@ -325,7 +380,12 @@ void ExplicitVerlet::step_multirate(SimulationState& state, std::span<ForceTerm*
   const double h = context.h / fine;
   // The shared terms' forces add up in shared_impulse_ over the fine sub-steps until the
   // island of each node takes their mean and clears them.
-  std::fill(shared_impulse_.begin(), shared_impulse_.end(), Vec3::Zero());
+  // A sleeping island's nodes keep what they received in earlier steps (update_sleep).
+  for (std::size_t g = 0; g < islands_.size(); ++g)
+    if (!islands_[g].asleep)
+      for (const int node : islands_[g].nodes)
+        shared_impulse_[static_cast<std::size_t>(node)].setZero();
+  std::vector<char> touched(islands_.size(), 0);  // a term of any body pushed its nodes
   for (int s = 0; s < fine; ++s) {
     const bool last = s + 1 == fine;
     const StepContext sub{context.time + s * h, h, context.step};
@@ -336,7 +396,7 @@ void ExplicitVerlet::step_multirate(SimulationState& state, std::span<ForceTerm*
     for (std::size_t g = 0; g < islands_.size(); ++g) {
       const std::vector<int>& nodes = islands_[g].nodes;
       const int stride = strides[g];
-      if ((s + 1) % stride != 0) continue;
+      if (islands_[g].asleep || (s + 1) % stride != 0) continue;
       // The island's own sub-step, from the fine sub-step it began at.
       const double big = stride * h;
       const StepContext own_sub{context.time + (s + 1 - stride) * h, big, context.step};
@@ -352,6 +412,7 @@ void ExplicitVerlet::step_multirate(SimulationState& state, std::span<ForceTerm*
       for (const int node : nodes) {
         const auto i = static_cast<std::size_t>(node);
         const double w = state.inverse_masses[i];
+        if (shared_impulse_[i] != Vec3::Zero()) touched[g] = 1;
         const Vec3 force = forces_[i] + mean * shared_impulse_[i];
         shared_impulse_[i].setZero();
         if (w == 0.0) {
@@ -368,6 +429,7 @@ void ExplicitVerlet::step_multirate(SimulationState& state, std::span<ForceTerm*
     for (ForceTerm* t : shared)
       if (last || t->after_each_substep()) t->after_step(state);
   }
+  update_sleep(state, terms, context.h, fine, touched);
 }
 
 }  // namespace viscera::sim

@@ -24,6 +24,15 @@
 /// acts only within reach (ForceTerm::worst_case_within_reach: the instrument's proxy) is
 /// prepared for the step's first sub-step before the plan, and only the islands whose box
 /// meets its reach() are planned with its stiffness; the others with their far stable step.
+///
+/// Islands sleep (set_sleep_threshold; the deactivation of rigid-body engines, per island):
+/// in a multi-rate step, an island none of whose nodes moved more than the threshold (m per
+/// step) for kCalmStepsToSleep steps, with no own term that drives() and no impulse from the
+/// terms of any body, stops: its velocities are set to zero and neither its terms nor its
+/// nodes are stepped. It wakes at the next step when a term of any body put an impulse on one
+/// of its nodes (the impulse it received while asleep is then applied whole: momentum is
+/// kept), when a term that acts within reach reaches it, on wake() and at a topology change.
+/// Decision: a quiet vein beside a pulsing artery costs nothing until something touches it.
 
 #include <vector>
 
@@ -51,12 +60,27 @@ class ExplicitVerlet : public Integrator {
   /// Each island's stable sub-step in s, islands in the order of their lowest body.
   std::vector<double> island_stable_steps() const;
 
+  /// Islands fall asleep once calm (above); 0 (the default) keeps every island awake.
+  void set_sleep_threshold(double threshold) { sleep_threshold_ = threshold; }
+  static constexpr int kCalmStepsToSleep = 200;
+  /// Wakes every island: something outside the terms' view changed.
+  void wake();
+  /// How many islands sleep now.
+  int islands_asleep() const;
+
  private:
   struct Island {
     std::vector<int> nodes;
     double stable_step = 0.0;      ///< s, with every worst case
     double far_stable_step = 0.0;  ///< s, out of the reach of terms that act within reach
+    int calm_steps = 0;
+    bool asleep = false;
   };
+  /// After a multi-rate step of `h` s in `fine` sub-steps: islands that received an impulse
+  /// while asleep wake and take it; the awake ones not `touched` by a term of any body count
+  /// their calm steps and fall asleep.
+  void update_sleep(SimulationState& state, std::span<ForceTerm* const> terms, double h, int fine,
+                    const std::vector<char>& touched);
   /// The fine sub-steps of a step and, when the islands step at different rates, each island's
   /// stride in fine sub-steps (empty: every island at every fine sub-step, the uniform step).
   struct Plan {
@@ -82,6 +106,7 @@ class ExplicitVerlet : public Integrator {
   std::vector<Island> islands_;
   std::vector<int> island_of_body_;
   bool every_node_in_an_island_ = true;  ///< else the uniform step (no node left unstepped)
+  double sleep_threshold_ = 0.0;
   std::vector<Vec3> forces_, shared_impulse_;
 };
 

@@ -86,6 +86,18 @@ std::vector<ForceTerm*> World::term_pointers() const {
   return pointers;
 }
 
+void World::set_sleep_threshold(double threshold) {
+  sleep_threshold_ = threshold;
+  if (auto* verlet = dynamic_cast<ExplicitVerlet*>(integrator_.get()))
+    verlet->set_sleep_threshold(threshold);
+}
+
+void World::wake() {
+  asleep_ = false;
+  calm_steps_ = 0;
+  if (auto* verlet = dynamic_cast<ExplicitVerlet*>(integrator_.get())) verlet->wake();
+}
+
 void World::refresh_integrator() const {
   if (!integrator_stale_) return;
   integrator_->topology_changed(state_, term_pointers());

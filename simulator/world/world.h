@@ -155,14 +155,12 @@ class World {
   /// `threshold` m per step for kCalmStepsToSleep steps and the instrument touches nothing, the
   /// world stops integrating (velocities set to zero) until the proxy meets a surface again.
   /// 0 disables (the default); sessions enable it.
-  void set_sleep_threshold(double threshold) { sleep_threshold_ = threshold; }
+  /// The explicit integrator's islands sleep with the same threshold (explicit_verlet.h).
+  void set_sleep_threshold(double threshold);
   bool asleep() const { return asleep_; }
   /// Wakes a sleeping world: something outside the terms' view moved (e.g. the hydrometra's
   /// target shape after a pressure change), so the next step integrates again.
-  void wake() {
-    asleep_ = false;
-    calm_steps_ = 0;
-  }
+  void wake();
   static constexpr int kCalmStepsToSleep = 200;
   /// A term drives the bodies from outside the state (ForceTerm::drives: a grasper's jaws, a
   /// closing clip): the world does not sleep while one does.

@@ -125,6 +125,27 @@ class ReachingSpring : public ForceTerm {
   Vec3 anchor_;
 };
 
+/// A constant force on one node while `on` (a term of any body, as a tool that starts
+/// pushing).
+class Push : public ForceTerm {
+ public:
+  Push(int node, const Vec3& force) : node_(node), force_(force) {}
+  std::string name() const override { return "push"; }
+  double energy(std::span<const Vec3>) const override { return 0.0; }
+  double add_forces(std::span<const Vec3>, std::span<const Vec3>,
+                    std::span<Vec3> f) const override {
+    if (on) f[static_cast<std::size_t>(node_)] += force_;
+    return 0.0;
+  }
+  void declare_blocks(BlockPattern&) const override {}
+  void add_stiffness(std::span<const Vec3>, double, bool, BlockSparseMatrix&) const override {}
+  bool on = false;
+
+ private:
+  int node_;
+  Vec3 force_;
+};
+
 /// A pair of free nodes 1 cm apart: `mass` kg each on a spring of `stiffness` N/m.
 void add_pair(SimulationState& state, double mass, double stiffness, const Vec3& at,
               std::vector<std::unique_ptr<ForceTerm>>& terms) {
@@ -286,6 +307,62 @@ TEST(MultirateVerlet, a_term_acting_within_reach_is_planned_only_for_the_islands
   EXPECT_EQ(take(), 4);
   for (const Vec3& x : state.positions)
     EXPECT_TRUE(x.allFinite());
+}
+
+}  // namespace
+}  // namespace viscera::sim
+
+namespace viscera::sim {
+namespace {
+
+TEST(MultirateVerlet, a_quiet_island_sleeps_and_a_push_wakes_it_with_its_whole_impulse) {
+  // The heavy pair rests; the light pair rings (undamped) beside it. With sleeping on, the
+  // heavy pair stops after kCalmStepsToSleep calm steps and stays exactly still while the light
+  // pair moves as it would alone; a push on the heavy pair wakes it, and its momentum is the
+  // push's impulse to rounding, the step it slept through included.
+  SimulationState both, light_alone;
+  std::vector<std::unique_ptr<ForceTerm>> terms, light_terms;
+  add_pair(both, kHeavyMass, kSoft, Vec3::Zero(), terms);
+  add_pair(both, kLightMass, kStiff, Vec3(0.0, 0.05, 0.0), terms);
+  add_pair(light_alone, kLightMass, kStiff, Vec3(0.0, 0.05, 0.0), light_terms);
+  auto push = std::make_unique<Push>(0, Vec3(0.0, 0.0, 0.5));
+  Push* pusher = push.get();
+  terms.push_back(std::move(push));
+  both.velocities[2] = light_alone.velocities[0] = Vec3(0.0, 0.0, 0.01);
+  ExplicitVerlet integrator, alone;
+  integrator.set_sleep_threshold(1e-9);
+  const auto t = pointers(terms), t_alone = pointers(light_terms);
+  integrator.topology_changed(both, t);
+  alone.topology_changed(light_alone, t_alone);
+  const std::vector<Vec3> rest = both.positions;
+  int step = 0;
+  const auto advance = [&] {
+    ++step;
+    const StepContext context{1e-3 * step, 1e-3, step};
+    integrator.step(both, t, context);
+    alone.step(light_alone, t_alone, context);
+  };
+  while (step < ExplicitVerlet::kCalmStepsToSleep - 1)
+    advance();
+  EXPECT_EQ(integrator.islands_asleep(), 0);
+  advance();
+  ASSERT_EQ(integrator.islands_asleep(), 1);  // the heavy pair; the light one rings on
+  for (int k = 0; k < 100; ++k)
+    advance();
+  EXPECT_EQ(both.positions[0], rest[0]);
+  EXPECT_EQ(both.positions[1], rest[1]);
+  EXPECT_EQ(both.positions[2], light_alone.positions[0]);
+  EXPECT_EQ(both.velocities[3], light_alone.velocities[1]);
+  pusher->on = true;
+  const int pushed_from = step;
+  advance();  // pushed while asleep: it wakes after this step with what it received
+  EXPECT_EQ(integrator.islands_asleep(), 0);
+  for (int k = 0; k < 50; ++k)
+    advance();
+  const Vec3 momentum = kHeavyMass * (both.velocities[0] + both.velocities[1]);
+  const double impulse = 0.5 * 1e-3 * (step - pushed_from);
+  EXPECT_NEAR(momentum.z(), impulse, 1e-12 * impulse);
+  EXPECT_GT(both.positions[0].z(), rest[0].z());
 }
 
 }  // namespace

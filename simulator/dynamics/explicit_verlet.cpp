@@ -259,7 +259,7 @@ StepStatistics ExplicitVerlet::step(SimulationState& state, std::span<ForceTerm*
       t->prepare(state, first);
     far = islands_out_of_reach(state, reaching);
     for (std::size_t g = 0; g < islands_.size(); ++g)
-      if (far[g] == 0) islands_[g].asleep = false, islands_[g].calm_steps = 0;  // within reach
+      if (far[g] == 0) islands_[g].wake();  // within reach
   }
   const Plan step_plan = plan(needed_substeps(context.h, far));
   stats.substeps = step_plan.fine;
@@ -273,10 +273,8 @@ StepStatistics ExplicitVerlet::step(SimulationState& state, std::span<ForceTerm*
 }
 
 void ExplicitVerlet::wake() {
-  for (Island& island : islands_) {
-    island.asleep = false;
-    island.calm_steps = 0;
-  }
+  for (Island& island : islands_)
+    island.wake();
 }
 
 int ExplicitVerlet::islands_asleep() const {
@@ -301,8 +299,7 @@ void ExplicitVerlet::update_sleep(SimulationState& state, std::span<ForceTerm* c
       for (const int node : island.nodes)
         pushed = pushed || shared_impulse_[static_cast<std::size_t>(node)] != Vec3::Zero();
       if (!pushed) continue;
-      island.asleep = false;
-      island.calm_steps = 0;
+      island.wake();
       for (const int node : island.nodes) {
         const auto i = static_cast<std::size_t>(node);
         state.velocities[i] += (fine_h * state.inverse_masses[i]) * shared_impulse_[i];

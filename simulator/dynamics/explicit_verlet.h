@@ -75,6 +75,10 @@ class ExplicitVerlet : public Integrator {
     double far_stable_step = 0.0;  ///< s, out of the reach of terms that act within reach
     int calm_steps = 0;
     bool asleep = false;
+    void wake() {
+      asleep = false;
+      calm_steps = 0;
+    }
   };
   /// After a multi-rate step of `h` s in `fine` sub-steps: islands that received an impulse
   /// while asleep wake and take it; the awake ones not `touched` by a term of any body count

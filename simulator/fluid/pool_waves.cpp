@@ -58,13 +58,11 @@ std::size_t PoolWaves::cell_at(double u, double v) const {
   return static_cast<std::size_t>(j * n_ + i);
 }
 
-void PoolWaves::remove_mean(std::vector<double>& field) const {
-  double sum = 0.0;
-  for (std::size_t c = 0; c < field.size(); ++c)
-    if (inside_[c]) sum += field[c];
-  const double mean = sum / inside_count_;
-  for (std::size_t c = 0; c < field.size(); ++c)
-    if (inside_[c]) field[c] -= mean;
+void PoolWaves::spread(std::vector<double>& field, std::size_t c, double amount) const {
+  const double share = amount / inside_count_;
+  for (std::size_t k = 0; k < field.size(); ++k)
+    if (inside_[k]) field[k] -= share;
+  field[c] += amount;
 }
 
 void PoolWaves::drop_lands(const core::Vec3& point, const core::Vec3& velocity, double volume,
@@ -73,25 +71,19 @@ void PoolWaves::drop_lands(const core::Vec3& point, const core::Vec3& velocity, 
   const core::Vec3 d = point - floor_;
   const std::size_t c = cell_at(d.dot(u_), d.dot(v_));
   const double cell_area = dx_ * dx_;
-  std::vector<double> bump(eta_.size(), 0.0);
-  bump[c] = volume / cell_area;
-  remove_mean(bump);
-  for (std::size_t k = 0; k < eta_.size(); ++k)
-    eta_[k] += bump[k];
+  still_ = false;
+  spread(eta_, c, volume / cell_area);
   if (depth < kShallowest) return;
   const double falling = std::max(0.0, -velocity.dot(up_));  // m/s into the water
-  std::fill(bump.begin(), bump.end(), 0.0);
-  bump[c] = -volume * falling / (cell_area * depth);
-  remove_mean(bump);
-  for (std::size_t k = 0; k < rate_.size(); ++k)
-    rate_[k] += bump[k];
+  spread(rate_, c, -volume * falling / (cell_area * depth));
 }
 
 void PoolWaves::step(double dt, double depth) {
-  if (!(dt > 0.0)) return;
+  if (!(dt > 0.0) || still_) return;
   if (!(depth >= kShallowest)) {
     std::fill(eta_.begin(), eta_.end(), 0.0);
     std::fill(rate_.begin(), rate_.end(), 0.0);
+    still_ = true;
     return;
   }
   const double c2 = kGravity * depth;

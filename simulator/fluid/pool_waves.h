@@ -62,8 +62,9 @@ class PoolWaves {
   bool inside(int i, int j) const { return inside_[static_cast<std::size_t>(j * n_ + i)] != 0; }
   /// The cell under in-plane (u, v), clamped into the disc.
   std::size_t cell_at(double u, double v) const;
-  /// Subtracts the mean of `field` over the disc's cells from each of them.
-  void remove_mean(std::vector<double>& field) const;
+  /// Adds `amount` to cell c of `field` and takes it back evenly from every cell of the disc
+  /// (the field's integral over the disc is unchanged).
+  void spread(std::vector<double>& field, std::size_t c, double amount) const;
 
   core::Vec3 floor_, up_, u_, v_;
   double radius_ = 0.0, dx_ = 0.0;
@@ -71,6 +72,7 @@ class PoolWaves {
   std::vector<char> inside_;
   int inside_count_ = 0;
   std::vector<double> eta_, rate_, laplacian_;
+  bool still_ = true;  ///< η and ∂η/∂t are zero everywhere: nothing to step
 };
 
 }  // namespace viscera::sim::fluid

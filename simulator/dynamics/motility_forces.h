@@ -41,6 +41,8 @@ class MotilityForces : public BodyTerm {
   void declare_blocks(BlockPattern&) const override {}  // diagonal blocks only
   void add_stiffness(std::span<const Vec3> x, double scale, bool project,
                      BlockSparseMatrix&) const override;
+  /// The organ moves by itself: its body never falls asleep.
+  bool drives() const override { return true; }
 
   const OrganMotility& motility() const { return *motility_; }
   /// Where the springs pull the body's nodes (body-local order), m.

@@ -38,6 +38,9 @@ class PulseWaves : public BodyTerm {
                     std::span<Vec3> f) const override;
   void declare_blocks(BlockPattern&) const override {}
   void add_stiffness(std::span<const Vec3>, double, bool, BlockSparseMatrix&) const override {}
+  /// The heart drives the vessels: a pulsing vessel never falls asleep between beats (its
+  /// next beat comes from the clock, not from the state).
+  bool drives() const override { return true; }
 
   /// A clip or a coagulated spot on segment `segment` (index into the tree's segments), `along`
   /// m from its proximal end: the wave no longer passes it, so no knot downstream of it (further

@@ -126,9 +126,12 @@ class World {
   /// of `h` s with the velocities zeroed after each (a damped Newton descent on the potential
   /// energy, each step regularised by M/h²) until no node moves more than `tolerance` m in a
   /// step, or `max_steps`; the scene then starts there at rest and the clock stays at zero.
-  /// Only with the implicit integrator and only when every body is held — a fixed node, or an
-  /// attachment or connection to another body: a free body has no rest to settle to — and
-  /// without motility or a pulse, whose driven motion has none either.
+  /// Only when every body is held — a fixed node, or an attachment or connection to another
+  /// body: a free body has no rest to settle to. An implicit world settles only without
+  /// motility or a pulse, whose driven motion has no rest either. An explicit world (KisMo
+  /// nets) settles with a backward Euler of its own under every term but the pulse (zero
+  /// between its wave fronts), with motility held at the session's start: its undriven islands
+  /// then start at rest instead of ringing down from the authored shape.
   /// Per node of `body`, 1 for a node that holds it in place: a fixed node, a node attached to
   /// another body's tets (a pathology on its wall), or a node of a connection spring to another
   /// body. What settle() requires of every body, and what a cut piece needs to stay the

@@ -1,10 +1,12 @@
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "simulator/dynamics/attachment_term.h"
 #include "simulator/dynamics/authored_terms.h"
 #include "simulator/dynamics/backward_euler.h"
 #include "simulator/dynamics/connection_spring_term.h"
+#include "simulator/dynamics/pulse_waves.h"
 #include "simulator/world/world.h"
 
 namespace viscera::sim {
@@ -33,17 +35,33 @@ std::vector<std::uint8_t> World::held_nodes(int body) const {
 
 World::Settling World::settle(double h, int max_steps, double tolerance) {
   Settling result;
-  auto* implicit = dynamic_cast<BackwardEuler*>(integrator_.get());
-  if (implicit == nullptr) return result;
   if (state_.node_count() == 0) return result;
   for (int b = 0; b < static_cast<int>(state_.bodies().size()); ++b) {
     const auto held = held_nodes(b);
     if (std::find(held.begin(), held.end(), std::uint8_t{1}) == held.end()) return result;
   }
-  if (drives_bodies(terms_)) return result;  // motility or a pulse: no rest to settle to
-  const double clock = state_.time;
+  auto* implicit = dynamic_cast<BackwardEuler*>(integrator_.get());
   refresh_integrator();
-  const std::vector<ForceTerm*> terms = term_pointers();
+  std::vector<ForceTerm*> terms = term_pointers();
+  const double clock = state_.time;
+  // The steps' clock: an explicit world's motility holds its anchors where they are at the
+  // session's start (MotilityForces pulls towards the rest shape moved to time + h).
+  double step_clock = clock;
+  // An explicit world (the KisMo nets of a laparoscopy) settles with a backward Euler of its
+  // own, under every term but the pulse — an impulsive load, zero between the wave fronts, so
+  // the vessels' rest between beats is the passive one — and with the organs' motility at the
+  // session's start. Its driven islands move from there, and its undriven ones (the veins)
+  // start at rest and fall asleep instead of ringing down from the authored shape for seconds.
+  std::unique_ptr<BackwardEuler> descent_integrator;
+  if (implicit == nullptr) {
+    std::erase_if(terms, [](const ForceTerm* t) { return dynamic_cast<const PulseWaves*>(t); });
+    descent_integrator = std::make_unique<BackwardEuler>();
+    descent_integrator->topology_changed(state_, terms);
+    implicit = descent_integrator.get();
+    step_clock = clock - h;
+  } else if (drives_bodies(terms_)) {
+    return result;  // motility or a pulse: no rest to settle to
+  }
   // The steps are a descent in pseudo-time, not a motion: only where they end matters, so each
   // takes at most kSettleNewtonIterations Newton iterations of at most kSettleCgIterations CG
   // iterations instead of converging (at 50 ms the mass no longer conditions the stiffness for
@@ -56,7 +74,7 @@ World::Settling World::settle(double h, int max_steps, double tolerance) {
   implicit->set_settings(descent);
   while (result.steps < max_steps && !result.at_rest) {
     std::fill(state_.velocities.begin(), state_.velocities.end(), Vec3::Zero());
-    const StepStatistics step = integrator_->step(state_, terms, StepContext{clock, h, 0});
+    const StepStatistics step = implicit->step(state_, terms, StepContext{step_clock, h, 0});
     ++result.steps;
     double fastest = 0.0;
     for (const Vec3& v : state_.velocities)

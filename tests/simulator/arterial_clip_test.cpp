@@ -32,7 +32,18 @@ InstrumentState jaws_at(const core::Vec3& point, const core::Vec3& along, Laparo
   return s;
 }
 
-/// Cuts the distal segment at its middle at 0.3 s, then clips at `clip` (m) at 0.7 s.
+/// jaws_at, kept on the artery where it is now: the tip follows the displacement of the
+/// artery's knots nearest `point` (its rest position), as a trainee's hand follows what he sees.
+InstrumentState jaws_on_artery(const core::Vec3& point, const core::Vec3& along,
+                               LaparoscopicTool tool, bool closed) {
+  InstrumentState s = jaws_at(point, along, tool, closed);
+  s.follow = 1.0;
+  s.anchor = point;
+  s.anchor_body = "artery-uterine-left";
+  return s;
+}
+
+/// Cuts the distal segment at its middle at 0.3 s, then clips at `clip` (m, rest) at 0.7 s.
 SessionReport cut_then_clip(const core::Vec3& clip, const core::Vec3& clip_along) {
   const core::VesselTree& tree = artery_patient().vessel_trees.at(0);
   const auto& distal = tree.segments.at(1);
@@ -40,14 +51,15 @@ SessionReport cut_then_clip(const core::Vec3& clip, const core::Vec3& clip_along
   const core::Vec3 cut = 0.5 * (distal.proximal + distal.distal);
   InstrumentState away =
       jaws_at(cut - 0.03 * core::Vec3::UnitY(), along, LaparoscopicTool::None, false);
-  const RecordedInput input({{0, away},
-                             {100, jaws_at(cut, along, LaparoscopicTool::Scissors, false)},
-                             {300, jaws_at(cut, along, LaparoscopicTool::Scissors, true)},
-                             {400, jaws_at(cut, along, LaparoscopicTool::Scissors, false)},
-                             {500, jaws_at(clip, clip_along, LaparoscopicTool::ClipApplier, false)},
-                             {700, jaws_at(clip, clip_along, LaparoscopicTool::ClipApplier, true)},
-                             {800, jaws_at(clip, clip_along, LaparoscopicTool::ClipApplier, false)},
-                             {900, away}});
+  const RecordedInput input(
+      {{0, away},
+       {100, jaws_at(cut, along, LaparoscopicTool::Scissors, false)},
+       {300, jaws_at(cut, along, LaparoscopicTool::Scissors, true)},
+       {400, jaws_at(cut, along, LaparoscopicTool::Scissors, false)},
+       {500, jaws_on_artery(clip, clip_along, LaparoscopicTool::ClipApplier, false)},
+       {700, jaws_on_artery(clip, clip_along, LaparoscopicTool::ClipApplier, true)},
+       {800, jaws_on_artery(clip, clip_along, LaparoscopicTool::ClipApplier, false)},
+       {900, away}});
   HeadlessRunOptions options;
   options.duration = 1.5;
   options.instrument = &input;
@@ -56,16 +68,21 @@ SessionReport cut_then_clip(const core::Vec3& clip, const core::Vec3& clip_along
   return run_headless(artery_patient(), options);
 }
 
+/// The session's events, one a line, for failure messages.
+std::string event_lines(const SessionReport& r) {
+  std::string text;
+  for (const auto& e : r.events)
+    text += std::to_string(e.time) + " " + e.kind + ": " + e.message + "\n";
+  return text;
+}
+
 /// The opened artery's source, or null (with the session's events in the failure message).
 const fluid::BleedingSource* artery_source(const SessionReport& r) {
   const auto& sources = *r.bleeding;
   const auto it =
       std::find_if(sources.begin(), sources.end(), [](const auto& s) { return !s.capillary; });
   if (it != sources.end()) return &*it;
-  std::string text;
-  for (const auto& e : r.events)
-    text += std::to_string(e.time) + " " + e.kind + ": " + e.message + "\n";
-  ADD_FAILURE() << "no artery opened; " << sources.size() << " source(s)\n" << text;
+  ADD_FAILURE() << "no artery opened; " << sources.size() << " source(s)\n" << event_lines(r);
   return nullptr;
 }
 
@@ -85,7 +102,7 @@ TEST(ArterialClip, a_clip_between_the_root_and_the_cut_stops_the_bleeding_one_be
   const SessionReport right = cut_then_clip(0.5 * (root.proximal + root.distal), root_along);
   ASSERT_TRUE(right.bleeding.has_value());
   ASSERT_EQ(right.laparoscopy->cuts.size(), 1u);
-  ASSERT_EQ(right.laparoscopy->clips.size(), 1u);
+  ASSERT_EQ(right.laparoscopy->clips.size(), 1u) << event_lines(right);
   const fluid::BleedingSource* opened = artery_source(right);
   ASSERT_NE(opened, nullptr);
   const fluid::BleedingSource& stopped = *opened;
@@ -102,7 +119,7 @@ TEST(ArterialClip, a_clip_between_the_root_and_the_cut_stops_the_bleeding_one_be
 
   const SessionReport wrong =
       cut_then_clip(distal.proximal + 0.8 * (distal.distal - distal.proximal), distal_along);
-  ASSERT_EQ(wrong.laparoscopy->clips.size(), 1u);
+  ASSERT_EQ(wrong.laparoscopy->clips.size(), 1u) << event_lines(wrong);
   const fluid::BleedingSource* open = artery_source(wrong);
   ASSERT_NE(open, nullptr);
   const fluid::BleedingSource& still = *open;

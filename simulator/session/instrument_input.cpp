@@ -33,15 +33,16 @@ nlohmann::json resolve_script_landmarks(const nlohmann::json& script,
   const auto frame_offset = [](const core::Landmark& mark, const nlohmann::json& abc) {
     return core::landmark_frame(mark.normal).offset(abc.get<core::Vec3>());
   };
-  for (std::size_t i = 0; i < out["waypoints"].size(); ++i) {
+  // The places of a waypoint, or of the second port's tool in it (`holder`, at `base`).
+  const auto resolve = [&](nlohmann::json& holder, const std::string& base) {
     // Directions in a landmark's frame: {"landmark": id, "frame": [a, b, c]}.
     for (const char* key : {"axis", "up"}) {
-      nlohmann::json& direction = out["waypoints"][i][key];
+      nlohmann::json& direction = holder[key];
       if (!direction.is_object()) {
-        if (direction.is_null()) out["waypoints"][i].erase(key);
+        if (direction.is_null()) holder.erase(key);
         continue;
       }
-      const std::string pointer = "/waypoints/" + std::to_string(i) + "/" + key;
+      const std::string pointer = base + "/" + key;
       try {
         const core::Landmark mark = find(direction.at("landmark").get<std::string>(), pointer);
         direction = frame_offset(mark, direction.at("frame"));
@@ -53,10 +54,10 @@ nlohmann::json resolve_script_landmarks(const nlohmann::json& script,
       }
     }
     for (const char* key : {"tip", "look_at"}) {
-      nlohmann::json& place = out["waypoints"][i][key];
-      const std::string pointer = "/waypoints/" + std::to_string(i) + "/" + key;
+      nlohmann::json& place = holder[key];
+      const std::string pointer = base + "/" + key;
       if (!place.is_object()) {
-        if (place.is_null()) out["waypoints"][i].erase(key);
+        if (place.is_null()) holder.erase(key);
         continue;
       }
       try {
@@ -71,8 +72,8 @@ nlohmann::json resolve_script_landmarks(const nlohmann::json& script,
         if (place.contains("frame")) p += frame_offset(from, place["frame"]);
         // A tip that follows the tissue is anchored where its landmark lies.
         if (key == std::string("tip") && place.value("follow", false)) {
-          out["waypoints"][i]["tip_anchor"] = from.position;
-          if (!from.object.empty()) out["waypoints"][i]["tip_anchor_body"] = from.object;
+          holder["tip_anchor"] = from.position;
+          if (!from.object.empty()) holder["tip_anchor_body"] = from.object;
         }
         place = p;
       } catch (const nlohmann::json::exception& e) {
@@ -84,9 +85,86 @@ nlohmann::json resolve_script_landmarks(const nlohmann::json& script,
                                {file, pointer, ""});
       }
     }
+  };
+  for (std::size_t i = 0; i < out["waypoints"].size(); ++i) {
+    nlohmann::json& waypoint = out["waypoints"][i];
+    const std::string pointer = "/waypoints/" + std::to_string(i);
+    resolve(waypoint, pointer);
+    if (waypoint.contains("left") && waypoint["left"].is_object())
+      resolve(waypoint["left"], pointer + "/left");
   }
   return out;
 }
+
+namespace {
+
+/// A switch of a waypoint, `key`: 0 or 1, held from this waypoint until a later one changes it.
+void read_switch(const nlohmann::json& w, const char* key, const std::string& file,
+                 const std::string& pointer, bool& out) {
+  if (!w.contains(key)) return;
+  const auto& value = w[key];
+  if (!core::whole_number_fits<int>(value) || (value != 0 && value != 1))
+    throw core::InputError(std::string(key) + " must be 0 or 1", {file, pointer + "/" + key, ""});
+  out = value == 1;
+}
+
+/// The laparoscopic tool of a waypoint's port, held the same way.
+void read_tool(const nlohmann::json& w, const std::string& file, const std::string& pointer,
+               LaparoscopicTool& out) {
+  if (!w.contains("tool")) return;
+  const auto& name = w["tool"];
+  const auto tool = name.is_string() ? tool_from_name(name.get<std::string>()) : std::nullopt;
+  if (!tool)
+    throw core::InputError(
+        "tool must be one of \"none\", \"grasper\", \"clip-applier\", "
+        "\"scissors\", \"bipolar\", \"suction\", \"hook\"",
+        {file, pointer + "/tool", ""});
+  out = *tool;
+}
+
+/// The second port's tool at a waypoint, `left` at `pointer`: {"tip", "axis", "up", "tool",
+/// "close", "coagulate", "activate", "irrigate"} held as the working port's, or
+/// {"withdraw": true} to take it out. A tool put in needs a tip.
+void read_second_port(const nlohmann::json& left, const std::string& file,
+                      const std::string& pointer, SecondPort& port) {
+  if (!left.is_object())
+    throw core::InputError("the second port's tool must be an object", {file, pointer, ""});
+  if (left.value("withdraw", false)) {
+    port = SecondPort{};
+    return;
+  }
+  if (left.contains("tip_anchor"))
+    throw core::InputError("the second port's tip does not follow the tissue (no \"follow\")",
+                           {file, pointer + "/tip", ""});
+  if (!port.inserted && !left.contains("tip"))
+    throw core::InputError("a tool put into the second port needs a \"tip\" [x, y, z] (m)",
+                           {file, pointer, ""});
+  try {
+    if (left.contains("tip")) port.tip = left["tip"].get<core::Vec3>();
+    if (left.contains("axis")) port.axis = left["axis"].get<core::Vec3>();
+    if (left.contains("up")) port.up = left["up"].get<core::Vec3>();
+  } catch (const nlohmann::json::exception& e) {
+    throw core::InputError(
+        std::string("the second port's tip, axis and up are [x, y, z]: ") + e.what(),
+        {file, pointer, ""});
+  }
+  if (!port.tip.allFinite() || !port.axis.allFinite() || port.axis.norm() == 0.0 ||
+      !port.up.allFinite())
+    throw core::InputError("the second port's tip and axis must be finite, the axis non-zero",
+                           {file, pointer, ""});
+  port.inserted = true;
+  read_tool(left, file, pointer, port.tool);
+  read_switch(left, "close", file, pointer, port.jaws_closed);
+  read_switch(left, "coagulate", file, pointer, port.coagulation);
+  read_switch(left, "activate", file, pointer, port.electrode);
+  read_switch(left, "irrigate", file, pointer, port.irrigating);
+  port.axis.normalize();
+  port.up -= port.up.dot(port.axis) * port.axis;
+  if (port.up.norm() < 1e-12) port.up = port.axis.unitOrthogonal();
+  port.up.normalize();
+}
+
+}  // namespace
 
 ScriptedTrajectory ScriptedTrajectory::from_json(const nlohmann::json& json,
                                                  const std::string& file, double optics_angle) {
@@ -133,43 +211,14 @@ ScriptedTrajectory ScriptedTrajectory::from_json(const nlohmann::json& json,
       s.inflow = w.value("inflow", s.inflow);
       s.outflow = w.value("outflow", s.outflow);
       s.abort = w.value("abort", false);
-      // The pedal, 0 or 1, held from this waypoint until a later one changes it.
-      if (w.contains("activate")) {
-        const auto& pedal = w["activate"];
-        if (!core::whole_number_fits<int>(pedal) || (pedal != 0 && pedal != 1))
-          fail(pointer + "/activate", "activate must be 0 or 1");
-        s.electrode = pedal == 1;
-      }
-      // The coagulation pedal, 0 or 1, held the same way.
-      if (w.contains("coagulate")) {
-        const auto& pedal = w["coagulate"];
-        if (!core::whole_number_fits<int>(pedal) || (pedal != 0 && pedal != 1))
-          fail(pointer + "/coagulate", "coagulate must be 0 or 1");
-        s.coagulation = pedal == 1;
-      }
-      // The laparoscopic tool in the working port and its jaws, held like the pedals.
-      if (w.contains("tool")) {
-        const auto& name = w["tool"];
-        const auto tool = name.is_string() ? tool_from_name(name.get<std::string>()) : std::nullopt;
-        if (!tool)
-          fail(pointer + "/tool",
-               "tool must be one of \"none\", \"grasper\", \"clip-applier\", \"scissors\", "
-               "\"bipolar\", \"suction\", \"hook\"");
-        s.tool = *tool;
-      }
-      if (w.contains("close")) {
-        const auto& jaws = w["close"];
-        if (!core::whole_number_fits<int>(jaws) || (jaws != 0 && jaws != 1))
-          fail(pointer + "/close", "close must be 0 or 1");
-        s.jaws_closed = jaws == 1;
-      }
-      // The irrigation valve of the suction–irrigation cannula, 0 or 1, held the same way.
-      if (w.contains("irrigate")) {
-        const auto& valve = w["irrigate"];
-        if (!core::whole_number_fits<int>(valve) || (valve != 0 && valve != 1))
-          fail(pointer + "/irrigate", "irrigate must be 0 or 1");
-        s.irrigating = valve == 1;
-      }
+      // The pedals, the laparoscopic tool in the working port, its jaws and the irrigation
+      // valve of the suction–irrigation cannula: 0 or 1, held until a later waypoint changes them.
+      read_switch(w, "activate", file, pointer, s.electrode);
+      read_switch(w, "coagulate", file, pointer, s.coagulation);
+      read_tool(w, file, pointer, s.tool);
+      read_switch(w, "close", file, pointer, s.jaws_closed);
+      read_switch(w, "irrigate", file, pointer, s.irrigating);
+      if (w.contains("left")) read_second_port(w["left"], file, pointer + "/left", s.second);
       s.loop_extension = w.value("loop_extension", s.loop_extension);
       // A tip anchored on the tissue follows it; a tip without an anchor does not.
       s.follow = w.contains("tip_anchor") ? 1.0 : 0.0;

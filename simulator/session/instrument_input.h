@@ -62,7 +62,12 @@ class InstrumentInput {
 /// "activate", the cutting pedal (0 or 1), which switches at its waypoint, and
 /// "loop_extension", the resection loop's travel in front of the sheath (m, 0 … 0.02). "body"
 /// names the object the tool touches (optional: the first simulated body). "tip" and "look_at"
-/// may name landmarks once resolve_script_landmarks has replaced them.
+/// may name landmarks once resolve_script_landmarks has replaced them. A laparoscopic script
+/// also holds the working port's "tool" ("grasper", …), "close", "coagulate" and "irrigate"
+/// (0 or 1), and the second port's tool (the left hand, SecondPort) as "left": {"tip", "axis",
+/// "up", "tool", "close", "coagulate", "activate", "irrigate"} — held until a later waypoint's
+/// "left" changes it, its pose blended between the waypoints that give it — or
+/// {"withdraw": true}.
 class ScriptedTrajectory final : public InstrumentInput {
  public:
   /// Parses a script; throws core::InputError naming `file` and the JSON pointer of a bad

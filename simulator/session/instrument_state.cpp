@@ -84,7 +84,37 @@ InstrumentState blend(const InstrumentState& a, const InstrumentState& b, double
     s.anchor = from_a ? a.anchor : b.anchor;
     s.anchor_body = from_a ? a.anchor_body : b.anchor_body;
   }
+  s.second = blend(a.second, b.second, f);
   orthonormalise(s);
+  return s;
+}
+
+SecondPort blend(const SecondPort& a, const SecondPort& b, double f) {
+  if (!a.inserted) {
+    SecondPort s = b;
+    s.inserted = f >= 1.0 && b.inserted;
+    return s;
+  }
+  SecondPort s = f >= 1.0 ? b : a;  // the switches
+  if (!b.inserted) return s;
+  s.tip = (1.0 - f) * a.tip + f * b.tip;
+  s.axis = ((1.0 - f) * a.axis + f * b.axis).normalized();
+  s.up = (1.0 - f) * a.up + f * b.up;
+  s.up = (s.up - s.up.dot(s.axis) * s.axis).normalized();
+  return s;
+}
+
+InstrumentState in_port(const InstrumentState& state, int port) {
+  if (port == 0) return state;
+  InstrumentState s;
+  s.tip = state.second.tip;
+  s.axis = state.second.axis;
+  s.up = state.second.up;
+  s.tool = state.second.tool;
+  s.jaws_closed = state.second.jaws_closed;
+  s.coagulation = state.second.coagulation;
+  s.electrode = state.second.electrode;
+  s.irrigating = state.second.irrigating;
   return s;
 }
 

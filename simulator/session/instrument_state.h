@@ -39,6 +39,25 @@ std::optional<LaparoscopicTool> tool_from_name(std::string_view name);
 /// Longest travel of a resection loop in front of the sheath, m.
 inline constexpr double kMaxLoopExtension = 0.02;
 
+/// The tool in the second instrument port of a laparoscopic session (issue 19 §3; seed 001
+/// §3.1: the trainer's two instrument ports beside the laparoscope): the other hand's
+/// instrument through its own trocar, with its own pose and controls. The laparoscope's working
+/// port (InstrumentState's own tool) is the right hand and carries the camera; this is the
+/// left hand. Empty (`inserted` false) until a script, the keyboard or a device puts a tool in.
+struct SecondPort {
+  bool inserted = false;                  ///< a tool is in the port, in the abdomen
+  core::Vec3 tip = core::Vec3::Zero();    ///< m
+  core::Vec3 axis = core::Vec3::UnitZ();  ///< shaft direction, from the handle towards the tip
+  core::Vec3 up = core::Vec3::UnitY();    ///< the jaws' closing direction
+  LaparoscopicTool tool = LaparoscopicTool::None;  ///< None: a blunt probe
+  bool jaws_closed = false;
+  bool coagulation = false;  ///< coagulation pedal (bipolar forceps, hook)
+  bool electrode = false;    ///< cutting pedal (hook)
+  bool irrigating = false;   ///< irrigation valve (suction–irrigation cannula)
+
+  bool operator==(const SecondPort&) const = default;
+};
+
 /// Instrument pose and controls. Positions in m; `axis` and `up` unit and orthogonal.
 struct InstrumentState {
   core::Vec3 tip = core::Vec3::Zero();
@@ -75,9 +94,19 @@ struct InstrumentState {
   double follow = 0.0;
   core::Vec3 anchor = core::Vec3::Zero();
   std::string anchor_body = {};
+  /// The second instrument port (the left hand) of a laparoscopic session.
+  SecondPort second = {};
 
   bool operator==(const InstrumentState&) const = default;
 };
+
+/// The instruments of a laparoscopic session: the working port (0, the right hand) and the
+/// second port (1, the left hand).
+inline constexpr int kInstrumentPorts = 2;
+
+/// The tool in port `port` (0 or 1) as an instrument state of its own: port 0 is `state`; port 1
+/// is `state.second`'s pose and controls with everything else at its default.
+InstrumentState in_port(const InstrumentState& state, int port);
 
 /// The optics' viewing direction: the shaft axis tilted by `optics_angle` degrees towards `up`
 /// (a 30° hysteroscope looks 30° off its shaft, on the side its light post marks).
@@ -96,7 +125,9 @@ InstrumentState look_at(const core::Vec3& tip, const core::Vec3& target,
 /// Blends two states: positions linearly, directions by normalised linear blend, valves
 /// linearly; `f` in [0, 1]. Abort is taken from `b` once f reaches 1; the electrode, the
 /// coagulation, the tool, its jaws and the irrigation valve (switches, not blends) stay as in `a`
-/// until then.
+/// until then. The second port blends the same way; a port empty in `a` takes `b`'s pose (a tool
+/// is put in where it is first placed) and stays empty until f reaches 1.
 InstrumentState blend(const InstrumentState& a, const InstrumentState& b, double f);
+SecondPort blend(const SecondPort& a, const SecondPort& b, double f);
 
 }  // namespace viscera::sim

@@ -69,13 +69,19 @@ bool LaparoscopicTools::cut_links(AgentTissueTerm& agents,
 }
 
 double LaparoscopicTools::grasp_stretch(const World& world) const {
-  if (!grasp_->holding()) return 0.0;
-  // The grasper holds knots of one body (tissue_between_jaws): only its links are looked at.
+  double largest = 0.0;
+  for (const Port& port : ports_)
+    if (port.grasp->holding()) largest = std::max(largest, grasp_stretch(world, *port.grasp));
+  return largest;
+}
+
+double LaparoscopicTools::grasp_stretch(const World& world, const GraspTerm& grasp) const {
+  // A grasper holds knots of one body (tissue_between_jaws): only its links are looked at.
   const SimulationState& s = world.state();
-  const int body = grasp_->held().front().body;
+  const int body = grasp.held().front().body;
   const BodyNodes& range = s.body(body);
   std::vector<std::uint8_t> held(static_cast<std::size_t>(range.count), 0);
-  for (const NodeReference& r : grasp_->held())
+  for (const NodeReference& r : grasp.held())
     held[static_cast<std::size_t>(r.node)] = 1;
   double largest = 0.0;
   const auto strain = [&](int a, int b, double rest) {  // global nodes of the body

@@ -115,7 +115,7 @@ core::Vec3 local_axis(const World& world, int body, const core::Vec3& point, dou
 }
 
 LaparoscopicTools::LaparoscopicTools(World& world, LaparoscopicToolOptions options)
-    : options_(options), hook_(options.hook) {
+    : options_(options) {
   for (const auto& model : world.models()) {
     if (model->kind == BodyModelKind::CellAgent) continue;
     if (!model->mesh.tets.empty()) bodies_.push_back(model->body);
@@ -133,9 +133,12 @@ LaparoscopicTools::LaparoscopicTools(World& world, LaparoscopicToolOptions optio
     dose_[b].assign(static_cast<std::size_t>(world.state().body(static_cast<int>(b)).count), 0.0);
     coagulated_[b].assign(dose_[b].size(), 0);
   }
-  auto grasp = std::make_unique<GraspTerm>(options_.grasp_stiffness);
-  grasp_ = grasp.get();
-  world.add_term(std::move(grasp));
+  for (int p = 0; p < kInstrumentPorts; ++p) {
+    Port& port = ports_.emplace_back(options_.hook);
+    auto grasp = std::make_unique<GraspTerm>(options_.grasp_stiffness);
+    port.grasp = grasp.get();
+    world.add_term(std::move(grasp));
+  }
 }
 
 std::vector<NodeReference> LaparoscopicTools::tissue_between_jaws(const World& world,
@@ -213,74 +216,109 @@ std::vector<NodeReference> LaparoscopicTools::tissue_at_hook(const World& world,
 
 void LaparoscopicTools::follow(const InstrumentState& state, World& world, double time, double dt,
                                LaparoscopySummary& summary, std::vector<SessionEvent>& events) {
-  if (first_) {
-    previous_ = state;
-    first_ = false;
+  coagulating_at_.reset();
+  follow_port(ports_[0], state, "right", world, time, dt, summary, events);
+  if (state.second.inserted)
+    follow_port(ports_[1], in_port(state, 1), "left", world, time, dt, summary, events);
+  else if (!ports_[1].first)
+    withdraw(ports_[1], world, time, events);
+  const core::Vec3 up = world.gravity().norm() > 0.0 ? core::Vec3(-world.gravity().normalized())
+                                                     : core::Vec3(core::Vec3::UnitZ());
+  smoke_.step(time, dt, coagulating_at_, up, state.tip);
+  for (int p = 0; p < kInstrumentPorts; ++p) {
+    const InstrumentState port = in_port(state, p);
+    if ((p == 0 || state.second.inserted) && port.tool == LaparoscopicTool::Suction &&
+        port.jaws_closed)
+      summary.smoke_puffs_suctioned += smoke_.suck(port.tip, options_.suction_reach, time);
   }
-  summary.path_per_tool[std::string(tool_name(state.tool))] += (state.tip - previous_.tip).norm();
-  if (state.tool != previous_.tool) {
+  summary.smoke_time = smoke_.smoke_time();
+  summary.peak_lens_fog = smoke_.peak_lens_fog();
+  summary.smoke_puffs = smoke_.puffs_emitted();
+  refresh_clips(world, summary);
+}
+
+void LaparoscopicTools::withdraw(Port& port, World& world, double time,
+                                 std::vector<SessionEvent>& events) {
+  if (port.grasp->holding()) {
+    port.grasp->release();
+    world.stiffness_changed();
+    events.push_back({time, "grasp-released", "the grasper left the abdomen"});
+  }
+  events.push_back({time, "tool-withdrawn",
+                    "the " + std::string(tool_name(port.previous.tool)) + " left the second port"});
+  port.first = true;
+}
+
+void LaparoscopicTools::follow_port(Port& port, const InstrumentState& state, const char* hand,
+                                    World& world, double time, double dt,
+                                    LaparoscopySummary& summary,
+                                    std::vector<SessionEvent>& events) {
+  GraspTerm& grasp = *port.grasp;
+  if (port.first) {
+    port.previous = state;
+    port.first = false;
+    if (&port != &ports_[0])
+      events.push_back({time, "tool-inserted",
+                        "a " + std::string(tool_name(state.tool)) + " entered the second port"});
+  }
+  const double travel = (state.tip - port.previous.tip).norm();
+  summary.path_per_tool[std::string(tool_name(state.tool))] += travel;
+  summary.path_per_hand[hand] += travel;
+  if (state.tool != port.previous.tool) {
     ++summary.tool_switches;
-    if (grasp_->holding()) {
-      grasp_->release();
+    if (grasp.holding()) {
+      grasp.release();
       world.stiffness_changed();
     }
-    events.push_back(
-        {time, "tool-changed",
-         std::string(tool_name(previous_.tool)) + " → " + std::string(tool_name(state.tool))});
+    events.push_back({time, "tool-changed",
+                      std::string(&port == &ports_[0] ? "" : "left hand: ") +
+                          std::string(tool_name(port.previous.tool)) + " → " +
+                          std::string(tool_name(state.tool))});
   }
   const bool closing =
-      state.jaws_closed && (!previous_.jaws_closed || state.tool != previous_.tool);
-  if (closing) close_jaws(state, world, time, summary, events);
-  if (!state.jaws_closed && grasp_->holding()) {
-    grasp_->release();
+      state.jaws_closed && (!port.previous.jaws_closed || state.tool != port.previous.tool);
+  if (closing) close_jaws(port, state, world, time, summary, events);
+  if (!state.jaws_closed && grasp.holding()) {
+    grasp.release();
     world.stiffness_changed();
     events.push_back({time, "grasp-released", "the grasper opened"});
   }
-  if (grasp_->holding()) {
-    grasp_->move_jaws(state.tip, jaw_frame(state));
+  if (grasp.holding()) {
+    grasp.move_jaws(state.tip, jaw_frame(state));
     const auto x = std::span<const core::Vec3>(world.state().positions);
-    summary.max_grasp_force = std::max(summary.max_grasp_force, grasp_->force_on_jaws(x).norm());
-    if (const int torn = grasp_->tear_out(x, options_.grasp_slip_force); torn > 0) {
+    summary.max_grasp_force = std::max(summary.max_grasp_force, grasp.force_on_jaws(x).norm());
+    if (const int torn = grasp.tear_out(x, options_.grasp_slip_force); torn > 0) {
       world.stiffness_changed();
       summary.knots_torn_out += torn;
       events.push_back(
           {time, "grasp-torn", std::to_string(torn) + " knot(s) tore out of the grasper's jaws"});
     }
   }
-  coagulating_at_.reset();
   if (state.tool == LaparoscopicTool::Bipolar && state.jaws_closed && state.coagulation)
     heat(tissue_between_jaws(world, state, options_.jaw_width), world, time, dt, summary, events);
   if (state.tool == LaparoscopicTool::Hook && state.coagulation)
     heat(tissue_at_hook(world, state), world, time, dt, summary, events);
-  if (auto sweep = hook_.follow(state)) cut_with_hook(*sweep, world, time, summary, events);
+  if (auto sweep = port.hook.follow(state)) cut_with_hook(*sweep, world, time, summary, events);
   // Cutting current vaporises the tissue at the wire: the plume rises from there as well.
-  if (hook_.recording() && !coagulating_at_ && !tissue_at_hook(world, state).empty())
+  if (port.hook.recording() && !coagulating_at_ && !tissue_at_hook(world, state).empty())
     coagulating_at_ = state.tip;
-  const core::Vec3 up = world.gravity().norm() > 0.0 ? core::Vec3(-world.gravity().normalized())
-                                                     : core::Vec3(core::Vec3::UnitZ());
-  smoke_.step(time, dt, coagulating_at_, up, state.tip);
-  if (state.tool == LaparoscopicTool::Suction && state.jaws_closed)
-    summary.smoke_puffs_suctioned += smoke_.suck(state.tip, options_.suction_reach, time);
-  summary.smoke_time = smoke_.smoke_time();
-  summary.peak_lens_fog = smoke_.peak_lens_fog();
-  summary.smoke_puffs = smoke_.puffs_emitted();
-  refresh_clips(world, summary);
-  previous_ = state;
+  port.previous = state;
 }
 
-void LaparoscopicTools::close_jaws(const InstrumentState& state, World& world, double time,
-                                   LaparoscopySummary& summary, std::vector<SessionEvent>& events) {
+void LaparoscopicTools::close_jaws(Port& port, const InstrumentState& state, World& world,
+                                   double time, LaparoscopySummary& summary,
+                                   std::vector<SessionEvent>& events) {
   switch (state.tool) {
     case LaparoscopicTool::Grasper: {
       auto held = tissue_between_jaws(world, state, options_.jaw_width);
       if (held.empty()) return;
       const std::string body = world.models()[static_cast<std::size_t>(held[0].body)]->name;
-      grasp_->hold(world.state(), std::move(held), state.tip, jaw_frame(state));
+      port.grasp->hold(world.state(), std::move(held), state.tip, jaw_frame(state));
       world.stiffness_changed();
       ++summary.grasps;
-      events.push_back(
-          {time, "grasp",
-           "the grasper holds " + std::to_string(grasp_->held().size()) + " knot(s) of " + body});
+      events.push_back({time, "grasp",
+                        "the grasper holds " + std::to_string(port.grasp->held().size()) +
+                            " knot(s) of " + body});
       return;
     }
     case LaparoscopicTool::ClipApplier:
@@ -515,8 +553,8 @@ void LaparoscopicTools::stiffen_coagulated(World& world, int body) {
   }
 }
 
-core::Vec3 LaparoscopicTools::force(const World& world) const {
-  return grasp_->force_on_jaws(world.state().positions);
+core::Vec3 LaparoscopicTools::force(const World& world, int port) const {
+  return ports_[static_cast<std::size_t>(port)].grasp->force_on_jaws(world.state().positions);
 }
 
 }  // namespace viscera::sim

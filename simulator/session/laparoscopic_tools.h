@@ -93,15 +93,20 @@ class LaparoscopicTools {
   /// grasper's term is added to the world.
   LaparoscopicTools(World& world, LaparoscopicToolOptions options = {});
 
-  /// After every physics step of `dt` s with the instrument in `state`: switches tools, opens
-  /// and closes jaws, moves what the grasper holds, heats tissue; records in `summary` and
-  /// `events` at `time` s.
+  /// After every physics step of `dt` s with the instruments in `state` (the working port and,
+  /// when a tool is in it, the second port: in_port): switches tools, opens and closes jaws,
+  /// moves what each grasper holds, heats tissue; records in `summary` and `events` at `time`
+  /// s. The lens the smoke steams is the laparoscope's, at the working port's tip.
   void follow(const InstrumentState& state, World& world, double time, double dt,
               LaparoscopySummary& summary, std::vector<SessionEvent>& events);
 
-  /// Force of the held tissue on the grasper's jaws, N (zero when it holds nothing).
-  core::Vec3 force(const World& world) const;
-  const GraspTerm& grasp() const { return *grasp_; }
+  /// Force of the held tissue on the jaws of port `port`'s grasper, N (zero when it holds
+  /// nothing).
+  core::Vec3 force(const World& world, int port = 0) const;
+  /// The grasper of port `port` (0: the working port, 1: the second port).
+  const GraspTerm& grasp(int port = 0) const {
+    return *ports_[static_cast<std::size_t>(port)].grasp;
+  }
   /// The clips placed so far, in order.
   const std::vector<ClipTerm*>& clips() const { return clips_; }
   /// Per world body and node: 1 for a coagulated knot.
@@ -111,7 +116,7 @@ class LaparoscopicTools {
   /// cut are not among them: they have no tets to cut or tear).
   const std::vector<int>& bodies() const { return bodies_; }
   /// The largest strain (length over rest length − 1) of the links — a net's springs, a cell
-  /// tissue's connections — at the knots the grasper holds; 0 when it holds none.
+  /// tissue's connections — at the knots either grasper holds; 0 when they hold none.
   double grasp_stretch(const World& world) const;
   /// The smoke of coagulation and the fog on the lens (at the instrument's tip).
   const SurgicalSmoke& smoke() const { return smoke_; }
@@ -138,7 +143,21 @@ class LaparoscopicTools {
   std::vector<NodeReference> tissue_at_hook(const World& world, const InstrumentState& state) const;
 
  private:
-  void close_jaws(const InstrumentState& state, World& world, double time,
+  /// One port's tool and what it keeps from step to step.
+  struct Port {
+    explicit Port(const HookOptions& hook_options) : hook(hook_options) {}
+    InstrumentState previous;
+    bool first = true;  ///< no step seen with a tool in the port yet
+    GraspTerm* grasp = nullptr;
+    HookSweep hook;
+  };
+  /// follow() for one port's tool in `state`; `hand` names it in the path per hand.
+  void follow_port(Port& port, const InstrumentState& state, const char* hand, World& world,
+                   double time, double dt, LaparoscopySummary& summary,
+                   std::vector<SessionEvent>& events);
+  /// The port's tool left the abdomen: what it held is let go.
+  void withdraw(Port& port, World& world, double time, std::vector<SessionEvent>& events);
+  void close_jaws(Port& port, const InstrumentState& state, World& world, double time,
                   LaparoscopySummary& summary, std::vector<SessionEvent>& events);
   void place_clip(const InstrumentState& state, World& world, double time,
                   LaparoscopySummary& summary, std::vector<SessionEvent>& events);
@@ -165,27 +184,26 @@ class LaparoscopicTools {
   /// the set or of the body's topology).
   void stiffen_coagulated(World& world, int body);
   void refresh_clips(const World& world, LaparoscopySummary& summary) const;
+  /// grasp_stretch at the knots `grasp` holds (it holds some).
+  double grasp_stretch(const World& world, const GraspTerm& grasp) const;
 
   LaparoscopicToolOptions options_;
   std::vector<int> bodies_;               ///< world bodies with tets the tools act on
   std::vector<AgentTissueTerm*> agents_;  ///< the cell-agent tissues, grasped and cut by links
   std::vector<int> touchable_;            ///< bodies_ and the agents' bodies
-  GraspTerm* grasp_ = nullptr;
+  std::vector<Port> ports_;               ///< kInstrumentPorts: the working port, the second port
   std::vector<ClipTerm*> clips_;
   std::vector<int> clip_bodies_;
   std::vector<std::vector<double>> dose_;  ///< per body and node, s of current
   std::vector<std::vector<std::uint8_t>> coagulated_;
   /// Per body, per spring of its KisMo term: 1 once stiffened (reset when a cut rebuilds it).
   std::vector<std::vector<std::uint8_t>> stiffened_;
-  InstrumentState previous_;
-  bool first_ = true;
   SurgicalSmoke smoke_;
   std::optional<core::Vec3> coagulating_at_;  ///< m, where current flowed this step
   ClipObserver clip_observer_;
   CoagulationObserver coagulation_observer_;
   CutObserver cut_observer_;
   VisibleSurfaces* visible_ = nullptr;
-  HookSweep hook_;
 };
 
 /// Where a tool with jaws touches tissue: the hinge, `jaw_length` m behind the tip along the

@@ -61,7 +61,8 @@ nlohmann::json laparoscopy_json(const LaparoscopySummary& s, double blood_loss) 
           {"coagulated_length", length},
           {"coagulated", coagulated},
           {"blood_loss", blood_loss},
-          {"path_per_tool", s.path_per_tool}};
+          {"path_per_tool", s.path_per_tool},
+          {"path_per_hand", s.path_per_hand}};
 }
 
 }  // namespace viscera::sim

@@ -77,7 +77,10 @@ struct LaparoscopySummary {
   std::vector<ClipPlacement> clips;
   std::vector<TissueCut> cuts;
   std::vector<CoagulatedTissue> coagulated;
-  std::map<std::string, double> path_per_tool;  ///< m of tip travel with each tool in the port
+  std::map<std::string, double> path_per_tool;  ///< m of tip travel with each tool in a port
+  /// m of tip travel per hand: "right" (the laparoscope's working port) and, once a tool was in
+  /// the second port, "left".
+  std::map<std::string, double> path_per_hand;
 
   const CoagulatedTissue* coagulated_of(const std::string& body) const {
     for (const auto& c : coagulated)
@@ -88,9 +91,9 @@ struct LaparoscopySummary {
 
 /// The summary as JSON, with `blood_loss` m³ (the report's bleeding sources) among the
 /// metrics of issue 19 §6: clips placed and secure, coagulated length (m), coagulation time (s),
-/// tool path per tool (m), and the irrigation, suction and pool volumes in ml (the unit on the
-/// operating room's fluid chart; their names end in "_ml"). Positions in m, times in s, forces
-/// in N.
+/// tool path per tool and per hand (m), and the irrigation, suction and pool volumes in ml (the
+/// unit on the operating room's fluid chart; their names end in "_ml"). Positions in m, times in s,
+/// forces in N.
 nlohmann::json laparoscopy_json(const LaparoscopySummary& summary, double blood_loss);
 
 }  // namespace viscera::sim

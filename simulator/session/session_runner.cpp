@@ -313,6 +313,7 @@ void SessionRunner::step(const InstrumentState& input) {
     input_ = input;
     state_ = followed(input, world_.bodies(), tissue_->body());
     move_tissue();
+    move_second_port();
   }
   step_world();
   const double now = world_.time();
@@ -476,10 +477,12 @@ void SessionRunner::sample() {
   context.cutting = report_.cutting ? &*report_.cutting : nullptr;
   if (tools_) {
     context.laparoscopy = &*report_.laparoscopy;
-    for (const NodeReference& r : tools_->grasp().held()) {
-      context.grasped_object = world_.models()[static_cast<std::size_t>(r.body)]->name;
-      context.grasped_rest.push_back(r.rest);
-    }
+    // What a grasper holds: the working port's, or else the second port's.
+    for (int port = 0; port < kInstrumentPorts && context.grasped_rest.empty(); ++port)
+      for (const NodeReference& r : tools_->grasp(port).held()) {
+        context.grasped_object = world_.models()[static_cast<std::size_t>(r.body)]->name;
+        context.grasped_rest.push_back(r.rest);
+      }
     context.grasp_stretch = tools_->grasp_stretch(world_);
   }
   for (auto& m : monitors_) {

@@ -30,6 +30,8 @@
 
 namespace viscera::sim {
 
+class ProxySpringTerm;
+
 /// Options of a session.
 struct HeadlessRunOptions {
   double duration = 2.0;  ///< s the session may last at most (the scenario's limit also applies)
@@ -87,6 +89,9 @@ class SessionRunner {
   /// Force of the tissue on the instrument, N (zero without instrument): on its tip, plus what
   /// a grasper holds.
   core::Vec3 instrument_force() const;
+  /// Force of the tissue on the second port's tool, N: on its jaws' hinge, plus what its
+  /// grasper holds (zero while the port is empty).
+  core::Vec3 second_port_force() const;
   /// The laparoscopic tools, or null when the instrument carries none.
   const LaparoscopicTools* tools() const { return tools_.get(); }
   /// The resection loop, or null without a resectoscope.
@@ -188,6 +193,12 @@ class SessionRunner {
   void start_tears(std::vector<int> bodies);
   /// Moves the instrument's contact point to state_ (a tool's jaws touch with their hinge).
   void move_tissue();
+  /// The second port's tool touches every body through a proxy spring of its own (the
+  /// instrument's stiffness), put into the world when a tool first enters the port; a tool
+  /// taken out is drawn back along its shaft, out of the tissue.
+  ProxySpringTerm* second_proxy_ = nullptr;
+  /// Moves the second port's contact point to state_.second (before the world steps).
+  void move_second_port();
   /// The jet, the pool and the suction of the suction–irrigation cannula (issue 19 §3).
   std::unique_ptr<SuctionIrrigation> irrigation_;
   /// After a physics step of `dt` s and its bleeding: the jet flies, the pool fills with its

@@ -2,6 +2,7 @@
 // step loop in session_runner.cpp.
 #include <algorithm>
 
+#include "simulator/dynamics/proxy_spring_term.h"
 #include "simulator/dynamics/pulse_waves.h"
 #include "simulator/dynamics/vessel_wave_paths.h"
 #include "simulator/session/session_runner.h"
@@ -20,6 +21,37 @@ core::Vec3 SessionRunner::instrument_force() const {
   core::Vec3 force = tissue_ ? tissue_->force() : core::Vec3::Zero();
   if (tools_) force += tools_->force(world_);
   return force;
+}
+
+core::Vec3 SessionRunner::second_port_force() const {
+  if (!tools_ || second_proxy_ == nullptr || !state_.second.inserted) return core::Vec3::Zero();
+  return second_proxy_->proxy().force() + tools_->force(world_, 1);
+}
+
+void SessionRunner::move_second_port() {
+  if (!tools_) return;
+  const InstrumentState port = in_port(state_, 1);
+  if (!state_.second.inserted) {
+    // Taken out: the tool slides back along its shaft, out of the abdomen.
+    if (second_proxy_ != nullptr) second_proxy_->set_tip(second_proxy_->tip() - 0.1 * port.axis);
+    return;
+  }
+  const core::Vec3 touch = hinge(port, tools_->options());
+  if (second_proxy_ == nullptr) {
+    std::vector<std::shared_ptr<const BodyModel>> models(world_.models().begin(),
+                                                         world_.models().end());
+    auto proxy = std::make_unique<ProxySpringTerm>(std::move(models), options_.instrument_stiffness,
+                                                   world_.state(), touch);
+    second_proxy_ = proxy.get();
+    world_.add_term(std::move(proxy));
+  }
+  second_proxy_->set_tip(touch);
+  // A world asleep wakes when this tool touches, as it does for the working port's.
+  if (world_.asleep()) {
+    second_proxy_->prepare(world_.state(),
+                           StepContext{world_.time(), world_.time_step(), world_.steps() + 1});
+    if (second_proxy_->proxy().in_contact()) world_.wake();
+  }
 }
 
 void SessionRunner::move_tissue() {

@@ -40,7 +40,10 @@ nlohmann::json state_to_json(long long step, const InstrumentState& s) {
           s.irrigating,
           s.follow,
           s.anchor,
-          s.anchor_body};
+          s.anchor_body,
+          nlohmann::json::array({s.second.inserted, s.second.tip, s.second.axis, s.second.up,
+                                 std::string(tool_name(s.second.tool)), s.second.jaws_closed,
+                                 s.second.coagulation, s.second.electrode, s.second.irrigating})};
 }
 
 std::pair<long long, InstrumentState> state_from_json(const nlohmann::json& j) {
@@ -66,6 +69,20 @@ std::pair<long long, InstrumentState> state_from_json(const nlohmann::json& j) {
     j.at(13).get_to(s.follow);
     j.at(14).get_to(s.anchor);
     j.at(15).get_to(s.anchor_body);
+  }
+  if (j.size() > 16) {  // since the second instrument port
+    const nlohmann::json& port = j.at(16);
+    port.at(0).get_to(s.second.inserted);
+    port.at(1).get_to(s.second.tip);
+    port.at(2).get_to(s.second.axis);
+    port.at(3).get_to(s.second.up);
+    const auto tool = tool_from_name(port.at(4).get<std::string>());
+    if (!tool) throw core::ValidationError("an input names an unknown laparoscopic tool", {});
+    s.second.tool = *tool;
+    port.at(5).get_to(s.second.jaws_closed);
+    port.at(6).get_to(s.second.coagulation);
+    port.at(7).get_to(s.second.electrode);
+    port.at(8).get_to(s.second.irrigating);
   }
   return {core::whole_number<long long>(j.at(0), "", ""), s};
 }

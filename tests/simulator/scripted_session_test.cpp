@@ -177,6 +177,12 @@ TEST(SessionTrace, round_trips_through_json_exactly) {
   b.follow = 0.25;
   b.anchor = {0.01, -0.02, 0.030000000000000002};
   b.anchor_body = "polyp-1";
+  b.second.inserted = true;
+  b.second.tip = {0.02, -0.01, 0.07000000000000001};
+  b.second.axis = core::Vec3(-1.0, 0.5, 2.0).normalized();
+  b.second.tool = LaparoscopicTool::Hook;
+  b.second.jaws_closed = true;
+  b.second.electrode = true;
   trace.inputs = {{0, a}, {17, b}};
   trace.checkpoints = {{100, "x"}, {200, "y"}};
   trace.final_state_hash = "z";

@@ -87,7 +87,12 @@ TEST(Sterilisation, the_expert_completes_every_task_with_none_unavailable) {
   }
   ASSERT_TRUE(r.laparoscopy.has_value());
   const LaparoscopySummary& l = *r.laparoscopy;
-  EXPECT_EQ(l.grasps, 1);
+  // The right hand grasps and pulls the isthmus; the left hand's grasper, through the second
+  // port, holds the tube beside it from the first bite to the cut.
+  EXPECT_EQ(l.grasps, 2);
+  EXPECT_EQ(events(r, "tool-inserted"), 1) << events_text(r);
+  EXPECT_GT(l.path_per_hand.at("left"), 0.03);  // in 3 cm along its shaft to the tube
+  EXPECT_GT(l.path_per_hand.at("right"), l.path_per_hand.at("left"));
   EXPECT_EQ(secure_clips(r), 2);
   // Each clip squeezed its knots to the crushed walls' gap, from the tube's width.
   for (const ClipPlacement& c : l.clips) {
@@ -150,6 +155,10 @@ TEST(Sterilisation, expert_and_novice_separate_on_every_metric) {
   for (const auto& [tool, m] : n.laparoscopy->path_per_tool)
     novice_path += m;
   EXPECT_LT(expert_path, novice_path);
+  // Per hand: the novice's left hand wanders (a grasp beside the tube, a jerk) and so does
+  // his right.
+  for (const char* hand : {"right", "left"})
+    EXPECT_LT(e.laparoscopy->path_per_hand.at(hand), n.laparoscopy->path_per_hand.at(hand)) << hand;
   EXPECT_LT(e.simulated_time, n.simulated_time);
   // Three bipolar bites raise more smoke and steam the lens more than one: the metrics differ
   // (thorough coagulation costs smoke; suction would clear it).

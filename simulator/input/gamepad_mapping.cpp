@@ -36,6 +36,9 @@ GamepadCommand map_gamepad(const GamepadState& now, const GamepadState& before, 
   if (went_down(GamepadButton::Back)) command.pressed.push_back(ManualCommand::Abort);
   if (went_down(GamepadButton::DpadRight)) command.pressed.push_back(ManualCommand::NextTool);
   if (went_down(GamepadButton::DpadLeft)) command.pressed.push_back(ManualCommand::PreviousTool);
+  // Start switches hands (the second port's tool), Guide takes the second port's tool out.
+  if (went_down(GamepadButton::Start)) command.pressed.push_back(ManualCommand::SwitchHand);
+  if (went_down(GamepadButton::Guide)) command.pressed.push_back(ManualCommand::WithdrawSecondTool);
   // Held buttons: X the cutting pedal, Y the coagulation pedal, the right stick's click the
   // laparoscopic tool's jaws (the suction valve), the left stick's click the irrigation valve.
   const auto hold = [&](GamepadButton b, ManualCommand c) {
@@ -54,7 +57,8 @@ std::string gamepad_bindings_text() {
          "LB/RB: roll the optics\n"
          "Pad: A/B inflow/outflow valve   X cutting pedal   Y coagulation pedal   right stick "
          "click: jaws/suction   left stick click: irrigation   d-pad left/right: tool   Back: "
-         "abort";
+         "abort\n"
+         "Pad: Start switch hands (the left hand's tool in the second port)   Guide: take it out";
 }
 
 }  // namespace viscera::sim

@@ -22,35 +22,38 @@ ManualControl::ManualControl(const InstrumentState& start, ManualRates rates)
 }
 
 std::optional<ManualCommand> ManualControl::command_for_key(const std::string& key) {
-  static const std::map<std::string, ManualCommand> keys = {{"w", ManualCommand::Advance},
-                                                            {"Up", ManualCommand::Advance},
-                                                            {"s", ManualCommand::Withdraw},
-                                                            {"Down", ManualCommand::Withdraw},
-                                                            {"a", ManualCommand::SwingLeft},
-                                                            {"Left", ManualCommand::SwingLeft},
-                                                            {"d", ManualCommand::SwingRight},
-                                                            {"Right", ManualCommand::SwingRight},
-                                                            {"r", ManualCommand::SwingUp},
-                                                            {"f", ManualCommand::SwingDown},
-                                                            {"q", ManualCommand::RollLeft},
-                                                            {"e", ManualCommand::RollRight},
-                                                            {"i", ManualCommand::ToggleInflow},
-                                                            {"o", ManualCommand::ToggleOutflow},
-                                                            {"t", ManualCommand::ExtendLoop},
-                                                            {"g", ManualCommand::RetractLoop},
-                                                            {"space", ManualCommand::CuttingPedal},
-                                                            {"c", ManualCommand::CoagulationPedal},
-                                                            {"j", ManualCommand::CloseJaws},
-                                                            {"l", ManualCommand::Irrigate},
-                                                            {"0", ManualCommand::ToolNone},
-                                                            {"1", ManualCommand::ToolGrasper},
-                                                            {"2", ManualCommand::ToolClipApplier},
-                                                            {"3", ManualCommand::ToolScissors},
-                                                            {"4", ManualCommand::ToolBipolar},
-                                                            {"5", ManualCommand::ToolSuction},
-                                                            {"6", ManualCommand::ToolHook},
-                                                            {"Escape", ManualCommand::Abort},
-                                                            {"x", ManualCommand::Abort}};
+  static const std::map<std::string, ManualCommand> keys = {
+      {"w", ManualCommand::Advance},
+      {"Up", ManualCommand::Advance},
+      {"s", ManualCommand::Withdraw},
+      {"Down", ManualCommand::Withdraw},
+      {"a", ManualCommand::SwingLeft},
+      {"Left", ManualCommand::SwingLeft},
+      {"d", ManualCommand::SwingRight},
+      {"Right", ManualCommand::SwingRight},
+      {"r", ManualCommand::SwingUp},
+      {"f", ManualCommand::SwingDown},
+      {"q", ManualCommand::RollLeft},
+      {"e", ManualCommand::RollRight},
+      {"i", ManualCommand::ToggleInflow},
+      {"o", ManualCommand::ToggleOutflow},
+      {"t", ManualCommand::ExtendLoop},
+      {"g", ManualCommand::RetractLoop},
+      {"space", ManualCommand::CuttingPedal},
+      {"c", ManualCommand::CoagulationPedal},
+      {"j", ManualCommand::CloseJaws},
+      {"l", ManualCommand::Irrigate},
+      {"0", ManualCommand::ToolNone},
+      {"1", ManualCommand::ToolGrasper},
+      {"2", ManualCommand::ToolClipApplier},
+      {"3", ManualCommand::ToolScissors},
+      {"4", ManualCommand::ToolBipolar},
+      {"5", ManualCommand::ToolSuction},
+      {"6", ManualCommand::ToolHook},
+      {"Tab", ManualCommand::SwitchHand},
+      {"BackSpace", ManualCommand::WithdrawSecondTool},
+      {"Escape", ManualCommand::Abort},
+      {"x", ManualCommand::Abort}};
   const auto it = keys.find(key);
   if (it == keys.end()) return std::nullopt;
   return it->second;
@@ -63,33 +66,45 @@ std::string ManualControl::bindings_text() {
          "1 grasper  2 clip applier  3 scissors  4 bipolar  5 suction  6 hook  0 none\n"
          "J: jaws/suction   Space with the hook: cutting current   C: coagulating current\n"
          "L: irrigation (lavage) valve of the suction–irrigation cannula\n"
+         "Tab: switch hands (the left hand's tool in the second port)   Backspace: take it out\n"
          "Left-drag: swing the shaft   Wheel: advance/withdraw   Esc or X: abort";
 }
 
 void ManualControl::press(ManualCommand command) {
+  InstrumentState& tool = held_tool();
   if (const int index = held_index(command); index >= 0) {
     held_[index] = true;
   } else if (command == ManualCommand::CuttingPedal) {
-    state_.electrode = true;
+    tool.electrode = true;
   } else if (command == ManualCommand::CoagulationPedal) {
-    state_.coagulation = true;
+    tool.coagulation = true;
   } else if (command == ManualCommand::CloseJaws) {
-    state_.jaws_closed = true;
+    tool.jaws_closed = true;
   } else if (command == ManualCommand::Irrigate) {
-    state_.irrigating = true;
+    tool.irrigating = true;
   } else if (command >= ManualCommand::ToolNone && command <= ManualCommand::ToolHook) {
     // Switching opens the jaws and shuts the irrigation valve: a tool comes in through the port
     // with them open and its valves shut.
-    state_.tool = static_cast<LaparoscopicTool>(static_cast<int>(command) -
-                                                static_cast<int>(ManualCommand::ToolNone));
-    state_.jaws_closed = false;
-    state_.irrigating = false;
+    tool.tool = static_cast<LaparoscopicTool>(static_cast<int>(command) -
+                                              static_cast<int>(ManualCommand::ToolNone));
+    tool.jaws_closed = false;
+    tool.irrigating = false;
   } else if (command == ManualCommand::NextTool || command == ManualCommand::PreviousTool) {
     const int count = static_cast<int>(kLastLaparoscopicTool) + 1;
     const int step = command == ManualCommand::NextTool ? 1 : count - 1;
-    state_.tool = static_cast<LaparoscopicTool>((static_cast<int>(state_.tool) + step) % count);
-    state_.jaws_closed = false;
-    state_.irrigating = false;
+    tool.tool = static_cast<LaparoscopicTool>((static_cast<int>(tool.tool) + step) % count);
+    tool.jaws_closed = false;
+    tool.irrigating = false;
+  } else if (command == ManualCommand::SwitchHand) {
+    std::fill(std::begin(held_), std::end(held_), false);  // the other hand's keys start up
+    if (hand_ == 0 && !state_.second.inserted) {
+      state_.second = second_port_entry(state_);
+      left_ = in_port(state_, 1);
+    }
+    hand_ = 1 - hand_;
+  } else if (command == ManualCommand::WithdrawSecondTool) {
+    state_.second = SecondPort{};
+    hand_ = 0;
   } else if (command == ManualCommand::ToggleInflow) {
     state_.inflow = state_.inflow > 0.0 ? 0.0 : 1.0;
   } else if (command == ManualCommand::ToggleOutflow) {
@@ -97,37 +112,58 @@ void ManualControl::press(ManualCommand command) {
   } else if (command == ManualCommand::Abort) {
     state_.abort = true;
   }
+  sync_second();
 }
 
 void ManualControl::release(ManualCommand command) {
+  InstrumentState& tool = held_tool();
   if (const int index = held_index(command); index >= 0) held_[index] = false;
-  if (command == ManualCommand::CuttingPedal) state_.electrode = false;
-  if (command == ManualCommand::CoagulationPedal) state_.coagulation = false;
-  if (command == ManualCommand::CloseJaws) state_.jaws_closed = false;
-  if (command == ManualCommand::Irrigate) state_.irrigating = false;
+  if (command == ManualCommand::CuttingPedal) tool.electrode = false;
+  if (command == ManualCommand::CoagulationPedal) tool.coagulation = false;
+  if (command == ManualCommand::CloseJaws) tool.jaws_closed = false;
+  if (command == ManualCommand::Irrigate) tool.irrigating = false;
+  sync_second();
+}
+
+void ManualControl::sync_second() {
+  if (hand_ != 1) return;
+  SecondPort& port = state_.second;
+  port.tip = left_.tip;
+  port.axis = left_.axis;
+  port.up = left_.up;
+  port.tool = left_.tool;
+  port.jaws_closed = left_.jaws_closed;
+  port.coagulation = left_.coagulation;
+  port.electrode = left_.electrode;
+  port.irrigating = left_.irrigating;
 }
 
 void ManualControl::drag(double dx, double dy) {
   swing(-dx * rates_.mouse, dy * rates_.mouse);
+  sync_second();
 }
 
 void ManualControl::wheel(int notches) {
-  state_.tip += notches * rates_.wheel * state_.axis;
+  InstrumentState& tool = held_tool();
+  tool.tip += notches * rates_.wheel * tool.axis;
+  sync_second();
 }
 
 void ManualControl::swing(double yaw, double pitch) {
-  const core::Vec3 side = state_.axis.cross(state_.up).normalized();
-  const Eigen::AngleAxisd turn_yaw(yaw, state_.up);
+  InstrumentState& tool = held_tool();
+  const core::Vec3 side = tool.axis.cross(tool.up).normalized();
+  const Eigen::AngleAxisd turn_yaw(yaw, tool.up);
   const Eigen::AngleAxisd turn_pitch(pitch, side);
   const Eigen::Matrix3d rotation = (turn_pitch * turn_yaw).toRotationMatrix();
-  state_.axis = rotation * state_.axis;
-  state_.up = rotation * state_.up;
-  orthonormalise(state_);
+  tool.axis = rotation * tool.axis;
+  tool.up = rotation * tool.up;
+  orthonormalise(tool);
 }
 
 void ManualControl::roll(double angle) {
-  state_.up = Eigen::AngleAxisd(angle, state_.axis) * state_.up;
-  orthonormalise(state_);
+  InstrumentState& tool = held_tool();
+  tool.up = Eigen::AngleAxisd(angle, tool.axis) * tool.up;
+  orthonormalise(tool);
 }
 
 const InstrumentState& ManualControl::advance(double dt) {
@@ -135,7 +171,7 @@ const InstrumentState& ManualControl::advance(double dt) {
   const auto rate = [](double keys, double analog) { return std::clamp(keys + analog, -1.0, 1.0); };
   const double along =
       rate(held(ManualCommand::Advance) - held(ManualCommand::Withdraw), analog_.advance);
-  if (along != 0.0) state_.tip += along * rates_.advance * dt * state_.axis;
+  if (along != 0.0) held_tool().tip += along * rates_.advance * dt * held_tool().axis;
   const double yaw =
       rate(held(ManualCommand::SwingLeft) - held(ManualCommand::SwingRight), analog_.yaw);
   const double pitch =
@@ -149,7 +185,24 @@ const InstrumentState& ManualControl::advance(double dt) {
     state_.loop_extension =
         std::clamp(state_.loop_extension + travel * rates_.loop * dt, 0.0, kMaxLoopExtension);
   }
+  sync_second();
   return state_;
+}
+
+SecondPort second_port_entry(const InstrumentState& laparoscope) {
+  InstrumentState pose = laparoscope;
+  orthonormalise(pose);
+  const core::Vec3 side = pose.axis.cross(pose.up).normalized();  // the image's right
+  const core::Vec3 trocar = pose.tip - 0.03 * side;
+  const core::Vec3 focus = pose.tip + 0.05 * pose.axis;
+  SecondPort port;
+  port.inserted = true;
+  port.axis = (focus - trocar).normalized();
+  port.tip = trocar + 0.5 * (focus - trocar);
+  port.up = pose.up - pose.up.dot(port.axis) * port.axis;
+  port.up = port.up.norm() > 1e-9 ? port.up.normalized() : port.axis.unitOrthogonal();
+  port.tool = LaparoscopicTool::Grasper;
+  return port;
 }
 
 InstrumentState starting_pose(const core::Scenario& scenario, double optics_angle) {

@@ -40,7 +40,12 @@ enum class ManualCommand {
   ToolHook,          ///< a monopolar L-hook
   NextTool,          ///< the next tool in the order above (after the hook: none)
   PreviousTool,      ///< the previous one
-  Abort              ///< the trainee ends the session
+  /// The keys, mouse and gamepad move the other hand: the working port's tool (the right hand,
+  /// which carries the laparoscope) or the second port's (the left hand). The first switch to
+  /// the left hand puts a grasper into the second port (second_port_entry).
+  SwitchHand,
+  WithdrawSecondTool,  ///< the second port's tool out of the abdomen (the right hand again)
+  Abort                ///< the trainee ends the session
 };
 
 /// Motion rates of the manual controls.
@@ -88,16 +93,29 @@ class ManualControl {
   /// Applies the held motions for `dt` s and returns the state.
   const InstrumentState& advance(double dt);
   const InstrumentState& state() const { return state_; }
+  /// The hand the controls move: 0 the right (working port), 1 the left (second port).
+  int hand() const { return hand_; }
 
  private:
+  /// The pose and controls the keys act on: the working port's, or the second port's tool
+  /// as an instrument state (copied back into state_.second by sync_second()).
+  InstrumentState& held_tool() { return hand_ == 0 ? state_ : left_; }
+  void sync_second();
   void swing(double yaw, double pitch);
   void roll(double angle);
 
   InstrumentState state_;
+  InstrumentState left_;  ///< the second port's tool while it is in
+  int hand_ = 0;
   ManualRates rates_;
   bool held_[static_cast<int>(ManualCommand::CuttingPedal)] = {};
   AnalogMotion analog_;
 };
+
+/// Where the second port's tool enters when a trainee first takes the left hand: a grasper
+/// from a trocar 3 cm to the left of the laparoscope (in the image), its tip half-way to the
+/// point 5 cm in front of the optics, so it comes into view.
+SecondPort second_port_entry(const InstrumentState& laparoscope);
 
 /// Where a manual session starts: 3 mm off the landmark "cervix-internal-os" (else the first
 /// landmark) along its normal, the optics looking at the mean of the other landmarks (those of the

@@ -16,6 +16,7 @@
 #include "simulator/view/image_files.h"
 #include "simulator/view/particle_billboards.h"
 #include "simulator/view/pool_surface.h"
+#include "simulator/view/port_instrument.h"
 #include "simulator/view/scene_surfaces.h"
 #include "simulator/view/smoke_billboards.h"
 #include "simulator/view/x_display.h"
@@ -53,6 +54,7 @@ EndoscopicView::EndoscopicView(const core::Scenario& scenario, const std::filesy
   debris_ = std::make_unique<ParticleBillboards>(scene_, kDebrisLook);
   drops_ = std::make_unique<ParticleBillboards>(scene_, kDropLook);
   pool_ = std::make_unique<PoolSurface>(scene_);
+  left_tool_ = std::make_unique<PortInstrument>(scene_);
   smoke_ = std::make_unique<SmokeBillboards>(scene_);
 
   // The head light: a spot at the tip along the optics, dimming with distance.
@@ -128,6 +130,7 @@ void EndoscopicView::update(const sim::SessionSnapshot& snapshot) {
     lens_->haze_density = snapshot.haze_density;
     lens_->lens_fog = snapshot.lens_fog;
   }
+  left_tool_->update(snapshot.instrument.second);
   set_instrument(snapshot.instrument, snapshot.optics_angle);
   {
     // The smoke faces the camera just placed.
@@ -156,6 +159,10 @@ void EndoscopicView::update(const sim::SessionSnapshot& snapshot) {
     state.lens_fog = snapshot.lens_fog;
     state.pool_ml = snapshot.pool_volume * 1e6;
     state.pool_blood_fraction = snapshot.pool_blood_fraction;
+    if (snapshot.instrument.second.inserted) {
+      state.left_tool = std::string(sim::tool_name(snapshot.instrument.second.tool));
+      state.left_jaws_closed = snapshot.instrument.second.jaws_closed;
+    }
   }
   overlay_->update(state);
 }

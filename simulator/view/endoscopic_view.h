@@ -26,6 +26,7 @@ namespace viscera::view {
 
 class ParticleBillboards;
 class PoolSurface;
+class PortInstrument;
 class SmokeBillboards;
 class EndoscopeLensPass;
 class SceneSurfaces;
@@ -89,6 +90,8 @@ class EndoscopicView {
   const ParticleBillboards& debris() const { return *debris_; }
   const ParticleBillboards& irrigation_drops() const { return *drops_; }
   const PoolSurface& pool() const { return *pool_; }
+  /// The second port's tool as drawn.
+  const PortInstrument& left_tool() const { return *left_tool_; }
   const SmokeBillboards& smoke() const { return *smoke_; }
   /// The steam on the lens in the lens pass, 0…1 (0 without lens effects).
   double lens_fog() const;
@@ -106,6 +109,7 @@ class EndoscopicView {
   std::unique_ptr<SessionOverlay> overlay_;
   std::unique_ptr<ParticleBillboards> blood_, bubbles_, debris_, drops_;
   std::unique_ptr<PoolSurface> pool_;
+  std::unique_ptr<PortInstrument> left_tool_;
   std::unique_ptr<SmokeBillboards> smoke_;
   sim::SessionSnapshot captured_;  ///< reused by update(runner)
 };

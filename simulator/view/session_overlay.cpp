@@ -142,6 +142,9 @@ void SessionOverlay::update(const OverlayState& state) {
               std::to_string(std::lround(100.0 * state.pool_blood_fraction)) + " % blood)";
     if (state.lens_fog > 0.05)
       tool += "   lens steamed " + std::to_string(std::lround(100.0 * state.lens_fog)) + " %";
+    if (!state.left_tool.empty())
+      tool +=
+          "\nLeft    " + state.left_tool + ", jaws " + (state.left_jaws_closed ? "closed" : "open");
   }
   char buffer[640];
   std::snprintf(buffer, sizeof buffer,

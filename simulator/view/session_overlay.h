@@ -35,6 +35,8 @@ struct OverlayState {
   double lens_fog = 0.0;    ///< 0…1, the steam on the lens
   double pool_ml = 0.0;     ///< ml of fluid pooled at the lowest point of the scene
   double pool_blood_fraction = 0.0;  ///< 0…1
+  std::string left_tool;  ///< the second port's tool (the left hand), "" while it is empty
+  bool left_jaws_closed = false;
 };
 
 /// How close the force is to the warning level: "" below 80 %, "approaching" up to the level,

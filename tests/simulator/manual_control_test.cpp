@@ -1,4 +1,5 @@
-// Keyboard and mouse control of the instrument: exact motions for held keys, toggles, abort.
+// Keyboard and mouse control of the instrument: exact motions for held keys, toggles, abort, and
+// the two hands of a laparoscopy (the working port and the second port).
 
 #include "simulator/session/manual_control.h"
 
@@ -102,6 +103,50 @@ TEST(ManualControl, valves_toggle_abort_latches_and_unknown_keys_do_nothing) {
   control.wheel(3);
   EXPECT_NEAR(control.state().tip.z(), 0.003, 1e-12) << "the shaft starts along +z";
   EXPECT_NE(ManualControl::bindings_text().find("Esc"), std::string::npos);
+}
+
+TEST(ManualControl, tab_puts_the_left_hands_tool_in_and_the_keys_then_move_it_alone) {
+  InstrumentState start;
+  start.tip = core::Vec3(0.0, 0.0, 0.1);
+  start.axis = -core::Vec3::UnitZ();
+  start.up = core::Vec3::UnitY();
+  ManualRates rates;
+  rates.advance = 0.02;
+  ManualControl control(start, rates);
+  EXPECT_FALSE(control.state().second.inserted);
+  control.press(*ManualControl::command_for_key("Tab"));
+  EXPECT_EQ(control.hand(), 1);
+  const SecondPort entered = control.state().second;
+  ASSERT_TRUE(entered.inserted);
+  EXPECT_EQ(entered.tool, LaparoscopicTool::Grasper);
+  // From a trocar 3 cm to the image's left, its tip half-way to 5 cm in front of the optics.
+  EXPECT_NEAR((entered.tip - core::Vec3(-0.015, 0.0, 0.075)).norm(), 0.0, 1e-12);
+  EXPECT_NEAR(entered.axis.dot(core::Vec3(0.03, 0.0, -0.05).normalized()), 1.0, 1e-12);
+  // The keys now move, switch and close the left hand's tool; the right hand stays put.
+  control.press(ManualCommand::Advance);
+  control.advance(0.5);
+  control.release(ManualCommand::Advance);
+  control.press(ManualCommand::ToolBipolar);
+  control.press(ManualCommand::CloseJaws);
+  const InstrumentState& s = control.state();
+  EXPECT_NEAR((s.second.tip - entered.tip - 0.01 * entered.axis).norm(), 0.0, 1e-12);
+  EXPECT_EQ(s.second.tool, LaparoscopicTool::Bipolar);
+  EXPECT_TRUE(s.second.jaws_closed);
+  EXPECT_EQ(s.tip, start.tip);
+  EXPECT_EQ(s.tool, LaparoscopicTool::None);
+  EXPECT_FALSE(s.jaws_closed);
+  // Back to the right hand: the left tool stays where it was, jaws still closed.
+  control.press(ManualCommand::SwitchHand);
+  EXPECT_EQ(control.hand(), 0);
+  control.press(ManualCommand::Advance);
+  control.advance(0.5);
+  EXPECT_NEAR(control.state().tip.z(), 0.09, 1e-12);
+  EXPECT_TRUE(control.state().second.jaws_closed);
+  EXPECT_NEAR((control.state().second.tip - s.second.tip).norm(), 0.0, 1e-15);
+  // Backspace takes it out.
+  control.press(*ManualControl::command_for_key("BackSpace"));
+  EXPECT_FALSE(control.state().second.inserted);
+  EXPECT_EQ(control.hand(), 0);
 }
 
 }  // namespace

@@ -16,6 +16,7 @@
 #include "simulator/session/manual_control.h"
 #include "simulator/view/particle_billboards.h"
 #include "simulator/view/pool_surface.h"
+#include "simulator/view/port_instrument.h"
 #include "simulator/view/scene_surfaces.h"
 #include "simulator/view/smoke_billboards.h"
 #include "tests/support/command_runner.h"
@@ -348,6 +349,31 @@ TEST(EndoscopicView, the_pool_shows_as_a_translucent_surface_tinted_by_its_blood
   EXPECT_LT(testing::mean_abs_difference(clear, view.capture(), 0.9), 0.5);
 }
 
+TEST(EndoscopicView, the_second_ports_tool_shows_in_front_of_the_optics) {
+  // Issue 19 §3: the left hand's grasper, in from the side, its jaws 15 mm ahead of the lens,
+  // darkens part of the picture as steel does; taken out, the picture comes back exactly.
+  ClearStartingView start;
+  auto& [patient, view, snapshot, clear, before] = start;
+  const core::Vec3 view_line = sim::view_direction(snapshot.instrument, snapshot.optics_angle);
+  sim::SecondPort& left = snapshot.instrument.second;
+  left.inserted = true;
+  left.tool = sim::LaparoscopicTool::Grasper;
+  left.tip = start.ahead(0.015);
+  left.axis = (view_line + view_line.unitOrthogonal()).normalized();
+  left.up = view_line.cross(left.axis).normalized();
+  view.update(snapshot);
+  EXPECT_TRUE(view.left_tool().visible());
+  const auto open = view.capture();
+  EXPECT_GT(testing::mean_abs_difference(clear, open, 0.9), 2.0);
+  left.jaws_closed = true;  // the jaws close: a different picture
+  view.update(snapshot);
+  EXPECT_GT(testing::mean_abs_difference(open, view.capture(), 0.9), 0.05);
+  left = sim::SecondPort{};
+  view.update(snapshot);
+  EXPECT_FALSE(view.left_tool().visible());
+  start.expect_the_clear_picture_again();
+}
+
 TEST(SessionOverlay, force_bars_fill_and_warn_as_the_force_nears_the_limit) {
   EXPECT_EQ(view::force_alert(0.5, 1.0), "");
   EXPECT_EQ(view::force_alert(0.9, 1.0), "approaching");
@@ -390,6 +416,11 @@ TEST(SessionOverlay, shows_the_suction_irrigation_cannulas_valves_and_the_pool) 
   overlay.update(state);
   EXPECT_NE(overlay.info_text().find("grasper, jaws closed"), std::string::npos);
   EXPECT_EQ(overlay.info_text().find("pool"), std::string::npos);
+  EXPECT_EQ(overlay.info_text().find("Left"), std::string::npos);
+  state.left_tool = "bipolar";  // the second port's tool
+  overlay.update(state);
+  EXPECT_NE(overlay.info_text().find("Left    bipolar, jaws open"), std::string::npos)
+      << overlay.info_text();
 }
 
 }  // namespace

@@ -151,6 +151,21 @@ void BlockSparseMatrix::multiply(std::span<const Vec3> x, std::span<Vec3> y) con
   }
 }
 
+void BlockSparseMatrix::multiply_rows(std::span<const Vec3> x, std::span<Vec3> y,
+                                      std::span<const char> rows) const {
+  for (std::size_t i = 0; i + 1 < row_start_.size(); ++i) {
+    if (rows[i] == 0) {
+      y[i].setZero();
+      continue;
+    }
+    Vec3 sum = Vec3::Zero();
+    for (int s = row_start_[i]; s < row_start_[i + 1]; ++s)
+      sum.noalias() += blocks_[static_cast<std::size_t>(s)] *
+                       x[static_cast<std::size_t>(columns_[static_cast<std::size_t>(s)])];
+    y[i] = sum;
+  }
+}
+
 void BlockSparseMatrix::multiply_add(std::span<const Vec3> x, double scale,
                                      std::span<Vec3> y) const {
   for (std::size_t i = 0; i + 1 < row_start_.size(); ++i) {

@@ -76,6 +76,9 @@ class BlockSparseMatrix {
   void multiply(std::span<const Vec3> x, std::span<Vec3> y) const;
   /// y += scale · A x.
   void multiply_add(std::span<const Vec3> x, double scale, std::span<Vec3> y) const;
+  /// y = A x on the rows i with rows[i] ≠ 0 (the bits multiply() gives there), zero on the
+  /// others: products restricted to some independent blocks of a block-diagonal matrix.
+  void multiply_rows(std::span<const Vec3> x, std::span<Vec3> y, std::span<const char> rows) const;
   /// Row i's columns and slots, for solvers.
   std::span<const int> row_columns(int i) const;
   int row_begin(int i) const { return row_start_[static_cast<std::size_t>(i)]; }

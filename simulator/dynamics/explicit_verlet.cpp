@@ -1,8 +1,10 @@
 #include "simulator/dynamics/explicit_verlet.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <map>
 
 #include "simulator/physics/stable_step.h"
 
@@ -33,7 +35,7 @@ std::vector<double> largest_eigenvalues(const BlockSparseMatrix& a,
     }
   std::vector<double> lambda(g_count, 0.0), checkpoint(g_count, 0.0), norm(g_count),
       quotient(g_count);
-  std::vector<char> running(g_count, 1);
+  std::vector<char> running(g_count, 1), row_on(n, 0);
   int still_running = groups;
   const auto group = [&](std::size_t i) { return static_cast<std::size_t>(group_of_node[i]); };
   for (int it = 0; it < max_iterations && still_running > 0; ++it) {
@@ -53,9 +55,12 @@ std::vector<double> largest_eigenvalues(const BlockSparseMatrix& a,
     if (still_running == 0) break;
     for (std::size_t i = 0; i < n; ++i) {
       const bool on = group_of_node[i] >= 0 && running[group(i)] != 0;
+      row_on[i] = on ? 1 : 0;
       scaled[i] = on ? Vec3(x[i] * (scale[i] / norm[group(i)])) : Vec3::Zero();
     }
-    a.multiply(scaled, y);
+    // No block joins two groups: the rows of the groups that converged (or that are not
+    // asked for) would be zero, so only the running groups' rows are multiplied.
+    a.multiply_rows(scaled, y, row_on);
     std::fill(quotient.begin(), quotient.end(), 0.0);
     for (std::size_t i = 0; i < n; ++i) {
       y[i] *= scale[i];
@@ -79,16 +84,15 @@ std::vector<double> largest_eigenvalues(const BlockSparseMatrix& a,
   return lambda;
 }
 
-void ExplicitVerlet::topology_changed(const SimulationState& state,
-                                      std::span<ForceTerm* const> terms) {
-  BlockPattern pattern(state.node_count());
-  for (ForceTerm* t : terms)
-    t->declare_blocks(pattern);
-  BlockSparseMatrix stiffness, damping;
+namespace {
+
+/// Rest Hessians (positive semi-definite parts) and damping matrices of `terms` at the current
+/// state, plus k·I on every node a contact-like term may press on later.
+void assemble(const SimulationState& state, std::span<ForceTerm* const> terms,
+              const BlockPattern& pattern, BlockSparseMatrix& stiffness,
+              BlockSparseMatrix& damping) {
   stiffness.set_pattern(pattern);
   damping.set_structure_of(stiffness);
-  // Rest Hessians (positive semi-definite parts) and damping matrices at the current state,
-  // plus k·I on every node a contact-like term may press on later.
   for (ForceTerm* t : terms) {
     t->add_stiffness(state.positions, 1.0, true, stiffness);
     t->add_damping(state.positions, 1.0, damping);
@@ -97,6 +101,70 @@ void ExplicitVerlet::topology_changed(const SimulationState& state,
       for (const int node : t->worst_case_nodes())
         stiffness.block(stiffness.diagonal_slot(node)) += k * Mat3::Identity();
   }
+}
+
+}  // namespace
+
+void ExplicitVerlet::plan_islands(const SimulationState& state, std::span<ForceTerm* const> terms,
+                                  BlockSparseMatrix& stiffness, const BlockSparseMatrix& damping,
+                                  std::span<const int> group_of_node,
+                                  std::span<const int> island_of_group) {
+  const int groups = static_cast<int>(island_of_group.size());
+  const auto damping_rate =
+      largest_eigenvalues(damping, state.inverse_masses, group_of_node, groups);
+  // Out of the reach of a term whose worst case acts only within reach (the proxy far from an
+  // island), then with it everywhere (the plan for islands within reach, and the bound).
+  const auto far_omega_squared =
+      largest_eigenvalues(stiffness, state.inverse_masses, group_of_node, groups);
+  bool reaching = false;
+  for (ForceTerm* t : terms) {
+    const double k = t->worst_case_node_stiffness();
+    if (k <= 0.0 || !t->worst_case_within_reach()) continue;
+    reaching = true;
+    for (const int node : t->worst_case_nodes())
+      stiffness.block(stiffness.diagonal_slot(node)) += k * Mat3::Identity();
+  }
+  const auto omega_squared =
+      reaching ? largest_eigenvalues(stiffness, state.inverse_masses, group_of_node, groups)
+               : far_omega_squared;
+  for (std::size_t g = 0; g < island_of_group.size(); ++g) {
+    Island& island = islands_[static_cast<std::size_t>(island_of_group[g])];
+    island.stable_step = kStableStepSafety * verlet_stable_step(omega_squared[g], damping_rate[g]);
+    island.far_stable_step =
+        kStableStepSafety * verlet_stable_step(far_omega_squared[g], damping_rate[g]);
+  }
+  stable_step_ = std::numeric_limits<double>::infinity();
+  for (const Island& island : islands_)
+    stable_step_ = std::min(stable_step_, island.stable_step);
+  if (islands_.empty()) stable_step_ = kStableStepSafety * verlet_stable_step(0.0, 0.0);
+}
+
+void ExplicitVerlet::stiffness_changed(const SimulationState& state,
+                                       std::span<ForceTerm* const> terms, int body) {
+  const bool planned = ready_ && shared_impulse_.size() == state.node_count() && body >= 0 &&
+                       body < static_cast<int>(island_of_body_.size()) &&
+                       island_of_body_[static_cast<std::size_t>(body)] >= 0;
+  if (!planned) return topology_changed(state, terms);
+  BlockPattern pattern(state.node_count());
+  for (ForceTerm* t : terms)
+    t->declare_blocks(pattern);
+  BlockSparseMatrix stiffness, damping;
+  assemble(state, terms, pattern, stiffness, damping);
+  const int island = island_of_body_[static_cast<std::size_t>(body)];
+  std::vector<int> group_of_node(state.node_count(), -1);
+  for (const int node : islands_[static_cast<std::size_t>(island)].nodes)
+    group_of_node[static_cast<std::size_t>(node)] = 0;
+  const std::array<int, 1> only{island};
+  plan_islands(state, terms, stiffness, damping, group_of_node, only);
+}
+
+void ExplicitVerlet::topology_changed(const SimulationState& state,
+                                      std::span<ForceTerm* const> terms) {
+  BlockPattern pattern(state.node_count());
+  for (ForceTerm* t : terms)
+    t->declare_blocks(pattern);
+  BlockSparseMatrix stiffness, damping;
+  assemble(state, terms, pattern, stiffness, damping);
 
   // Islands: bodies joined by a declared block, numbered in the order of their lowest body.
   const auto& bodies = state.bodies();
@@ -119,6 +187,11 @@ void ExplicitVerlet::topology_changed(const SimulationState& state,
     const int ra = find(a), rb = find(b);
     if (ra != rb) root[static_cast<std::size_t>(std::max(ra, rb))] = std::min(ra, rb);
   }
+  // A re-plan with the same nodes (a stiffness changed, a term was added) keeps the sleep of
+  // the islands whose nodes it leaves as they were, and what they received asleep: a grasp on
+  // the tube must not wake a quiet vein. Any other island starts awake.
+  const std::vector<Island> before = std::move(islands_);
+  const bool same_nodes = shared_impulse_.size() == state.node_count();
   islands_.clear();
   island_of_body_.assign(bodies.size(), -1);
   for (std::size_t b = 0; b < bodies.size(); ++b) {
@@ -138,35 +211,29 @@ void ExplicitVerlet::topology_changed(const SimulationState& state,
   for (std::size_t i = 0; i < group_of_node.size(); ++i)
     if (body_of_node[i] >= 0)
       group_of_node[i] = island_of_body_[static_cast<std::size_t>(body_of_node[i])];
-  const int groups = static_cast<int>(islands_.size());
-  const auto damping_rate =
-      largest_eigenvalues(damping, state.inverse_masses, group_of_node, groups);
-  // Out of the reach of a term whose worst case acts only within reach (the proxy far from an
-  // island), then with it everywhere (the plan for islands within reach, and the bound).
-  const auto far_omega_squared =
-      largest_eigenvalues(stiffness, state.inverse_masses, group_of_node, groups);
-  bool reaching = false;
-  for (ForceTerm* t : terms) {
-    const double k = t->worst_case_node_stiffness();
-    if (k <= 0.0 || !t->worst_case_within_reach()) continue;
-    reaching = true;
-    for (const int node : t->worst_case_nodes())
-      stiffness.block(stiffness.diagonal_slot(node)) += k * Mat3::Identity();
-  }
-  const auto omega_squared =
-      reaching ? largest_eigenvalues(stiffness, state.inverse_masses, group_of_node, groups)
-               : far_omega_squared;
-  stable_step_ = std::numeric_limits<double>::infinity();
-  for (std::size_t g = 0; g < islands_.size(); ++g) {
-    islands_[g].stable_step =
-        kStableStepSafety * verlet_stable_step(omega_squared[g], damping_rate[g]);
-    islands_[g].far_stable_step =
-        kStableStepSafety * verlet_stable_step(far_omega_squared[g], damping_rate[g]);
-    stable_step_ = std::min(stable_step_, islands_[g].stable_step);
-  }
-  if (islands_.empty()) stable_step_ = kStableStepSafety * verlet_stable_step(0.0, 0.0);
+  std::vector<int> every_island(islands_.size());
+  for (std::size_t g = 0; g < every_island.size(); ++g)
+    every_island[g] = static_cast<int>(g);
+  plan_islands(state, terms, stiffness, damping, group_of_node, every_island);
   forces_.assign(state.node_count(), Vec3::Zero());
-  shared_impulse_.assign(state.node_count(), Vec3::Zero());
+  if (same_nodes) {
+    std::map<int, const Island*> by_first_node;
+    for (const Island& island : before)
+      if (!island.nodes.empty()) by_first_node[island.nodes.front()] = &island;
+    for (Island& island : islands_) {
+      if (island.nodes.empty()) continue;
+      const auto it = by_first_node.find(island.nodes.front());
+      if (it == by_first_node.end() || it->second->nodes != island.nodes) continue;
+      island.asleep = it->second->asleep;
+      island.calm_steps = it->second->calm_steps;
+    }
+    for (const Island& island : islands_)
+      if (!island.asleep)
+        for (const int node : island.nodes)
+          shared_impulse_[static_cast<std::size_t>(node)].setZero();
+  } else {
+    shared_impulse_.assign(state.node_count(), Vec3::Zero());
+  }
   ready_ = true;
 }
 
@@ -275,6 +342,12 @@ StepStatistics ExplicitVerlet::step(SimulationState& state, std::span<ForceTerm*
 void ExplicitVerlet::wake() {
   for (Island& island : islands_)
     island.wake();
+}
+
+void ExplicitVerlet::wake_body(int body) {
+  if (body < 0 || body >= static_cast<int>(island_of_body_.size())) return wake();
+  const int island = island_of_body_[static_cast<std::size_t>(body)];
+  if (island >= 0) islands_[static_cast<std::size_t>(island)].wake();
 }
 
 int ExplicitVerlet::islands_asleep() const {

@@ -31,7 +31,9 @@
 /// terms of any body, stops: its velocities are set to zero and neither its terms nor its
 /// nodes are stepped. It wakes at the next step when a term of any body put an impulse on one
 /// of its nodes (the impulse it received while asleep is then applied whole: momentum is
-/// kept), when a term that acts within reach reaches it, on wake() and at a topology change.
+/// kept), when a term that acts within reach reaches it, on wake() and at a topology change
+/// that changes the node count. A re-plan with the same nodes (a stiffness changed, a term
+/// added) keeps the sleep of the islands whose nodes it leaves unchanged.
 /// Decision: a quiet vein beside a pulsing artery costs nothing until something touches it.
 
 #include <vector>
@@ -39,6 +41,8 @@
 #include "simulator/dynamics/integrator.h"
 
 namespace viscera::sim {
+
+class BlockSparseMatrix;
 
 class ExplicitVerlet : public Integrator {
  public:
@@ -51,6 +55,12 @@ class ExplicitVerlet : public Integrator {
                       const StepContext& context) override;
   /// Recomputes the stable step (also done on the first step).
   void topology_changed(const SimulationState& state, std::span<ForceTerm* const> terms) override;
+  /// A term's coefficients changed in place on body `body` (a grasp, coagulated tissue
+  /// stiffening) with the nodes and islands as they were: re-plans that body's island alone —
+  /// its stable sub-steps are the bits a whole topology_changed gives it, the others' plans
+  /// and sleep stay. Falls back to topology_changed before the first plan, after the node
+  /// count changed, or for a body out of range.
+  void stiffness_changed(const SimulationState& state, std::span<ForceTerm* const> terms, int body);
 
   /// Largest stable sub-step in s found at the last topology change (the smallest of the
   /// islands').
@@ -65,6 +75,8 @@ class ExplicitVerlet : public Integrator {
   static constexpr int kCalmStepsToSleep = 200;
   /// Wakes every island: something outside the terms' view changed.
   void wake();
+  /// Wakes the island of body `body` (every island for a body out of range).
+  void wake_body(int body);
   /// How many islands sleep now.
   int islands_asleep() const;
 
@@ -92,6 +104,12 @@ class ExplicitVerlet : public Integrator {
     std::vector<int> strides;
   };
   Plan plan(const std::vector<int>& need) const;
+  /// Stable sub-steps of the islands `island_of_group` (group g of group_of_node is island
+  /// island_of_group[g]) from the assembled matrices; `stiffness` takes the within-reach worst
+  /// cases on top. Then the smallest over every island.
+  void plan_islands(const SimulationState& state, std::span<ForceTerm* const> terms,
+                    BlockSparseMatrix& stiffness, const BlockSparseMatrix& damping,
+                    std::span<const int> group_of_node, std::span<const int> island_of_group);
   /// Sub-steps each island needs for a step of `h`, in island order; an island marked in `far`
   /// is planned without the worst case of the terms that act within reach.
   std::vector<int> needed_substeps(double h, std::span<const char> far = {}) const;

@@ -56,7 +56,7 @@ bool LaparoscopicTools::cut_links(AgentTissueTerm& agents,
     record.position += (t[0] + t[1] + t[2]) / (3.0 * static_cast<double>(triangles.size()));
   }
   if (removed == 0) return false;
-  world.stiffness_changed();
+  world.stiffness_changed(body);
   record.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   record.links_removed = removed;
   record.pieces_after = linked_pieces(agents, cells.size());

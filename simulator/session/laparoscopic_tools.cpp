@@ -240,8 +240,9 @@ void LaparoscopicTools::follow(const InstrumentState& state, World& world, doubl
 void LaparoscopicTools::withdraw(Port& port, World& world, double time,
                                  std::vector<SessionEvent>& events) {
   if (port.grasp->holding()) {
+    const int body = port.grasp->held().front().body;
     port.grasp->release();
-    world.stiffness_changed();
+    world.stiffness_changed(body);
     events.push_back({time, "grasp-released", "the grasper left the abdomen"});
   }
   events.push_back({time, "tool-withdrawn",
@@ -267,8 +268,9 @@ void LaparoscopicTools::follow_port(Port& port, const InstrumentState& state, co
   if (state.tool != port.previous.tool) {
     ++summary.tool_switches;
     if (grasp.holding()) {
+      const int body = grasp.held().front().body;
       grasp.release();
-      world.stiffness_changed();
+      world.stiffness_changed(body);
     }
     events.push_back({time, "tool-changed",
                       std::string(&port == &ports_[0] ? "" : "left hand: ") +
@@ -279,16 +281,18 @@ void LaparoscopicTools::follow_port(Port& port, const InstrumentState& state, co
       state.jaws_closed && (!port.previous.jaws_closed || state.tool != port.previous.tool);
   if (closing) close_jaws(port, state, world, time, summary, events);
   if (!state.jaws_closed && grasp.holding()) {
+    const int body = grasp.held().front().body;
     grasp.release();
-    world.stiffness_changed();
+    world.stiffness_changed(body);
     events.push_back({time, "grasp-released", "the grasper opened"});
   }
   if (grasp.holding()) {
     grasp.move_jaws(state.tip, jaw_frame(state));
     const auto x = std::span<const core::Vec3>(world.state().positions);
     summary.max_grasp_force = std::max(summary.max_grasp_force, grasp.force_on_jaws(x).norm());
+    const int body = grasp.held().front().body;
     if (const int torn = grasp.tear_out(x, options_.grasp_slip_force); torn > 0) {
-      world.stiffness_changed();
+      world.stiffness_changed(body);
       summary.knots_torn_out += torn;
       events.push_back(
           {time, "grasp-torn", std::to_string(torn) + " knot(s) tore out of the grasper's jaws"});
@@ -313,8 +317,9 @@ void LaparoscopicTools::close_jaws(Port& port, const InstrumentState& state, Wor
       auto held = tissue_between_jaws(world, state, options_.jaw_width);
       if (held.empty()) return;
       const std::string body = world.models()[static_cast<std::size_t>(held[0].body)]->name;
+      const int held_body = held[0].body;
       port.grasp->hold(world.state(), std::move(held), state.tip, jaw_frame(state));
-      world.stiffness_changed();
+      world.stiffness_changed(held_body);
       ++summary.grasps;
       events.push_back({time, "grasp",
                         "the grasper holds " + std::to_string(port.grasp->held().size()) +
@@ -549,7 +554,7 @@ void LaparoscopicTools::stiffen_coagulated(World& world, int body) {
       stiffened_[b][k] = 1;
       changed = true;
     }
-    if (changed) world.stiffness_changed();
+    if (changed) world.stiffness_changed(body);
   }
 }
 

@@ -127,10 +127,17 @@ void World::add_term(std::unique_ptr<ForceTerm> term) {
   integrator_stale_ = true;
 }
 
-void World::stiffness_changed() {
-  integrator_->topology_changed(state_, term_pointers());
+void World::stiffness_changed(int body) {
+  auto* verlet = dynamic_cast<ExplicitVerlet*>(integrator_.get());
+  if (verlet != nullptr && body >= 0 && !integrator_stale_)
+    verlet->stiffness_changed(state_, term_pointers(), body);
+  else
+    integrator_->topology_changed(state_, term_pointers());
   integrator_stale_ = false;
-  wake();  // a term's forces changed: what rested may move
+  // A term's forces changed: what rested may move.
+  asleep_ = false;
+  calm_steps_ = 0;
+  if (verlet != nullptr) verlet->wake_body(body);
 }
 
 bool World::driven() const {

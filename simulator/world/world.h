@@ -89,8 +89,10 @@ class World {
   void add_term(std::unique_ptr<ForceTerm> term);
   const std::vector<std::shared_ptr<BodyModel>>& models() const { return models_; }
   /// Call after changing a term's coefficients in place (coagulated tissue stiffening): the
-  /// integrator plans its step anew (the explicit one its stable sub-step).
-  void stiffness_changed();
+  /// integrator plans its step anew (the explicit one its stable sub-step) and the world wakes
+  /// — with `body` ≥ 0 (the body whose tissue changed) only that body's explicit island, the
+  /// other sleeping islands sleep on; with −1 every island.
+  void stiffness_changed(int body = -1);
 
   /// Puts a haptic instrument into the world: a proxy point over the surfaces of EVERY body with
   /// a proxy–tip spring of `stiffness` N/m (seed 000 §8.2); `body` is the body the session

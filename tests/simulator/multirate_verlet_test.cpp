@@ -27,6 +27,7 @@ class OffsetSprings : public ForceTerm {
                       state.positions[static_cast<std::size_t>(i)]);
   }
   std::string name() const override { return "offset springs"; }
+  void set_stiffness(double k) { k_ = k; }  ///< N/m: the coefficients changed in place
   int body() const override { return body_; }
   double energy(std::span<const Vec3> x) const override {
     double e = 0.0;
@@ -366,4 +367,62 @@ TEST(MultirateVerlet, a_quiet_island_sleeps_and_a_push_wakes_it_with_its_whole_i
 }
 
 }  // namespace
+TEST(MultirateVerlet, a_replan_with_the_same_nodes_keeps_the_quiet_islands_asleep) {
+  // A stiffness change or a new term re-plans the step (topology_changed with the same
+  // nodes): the sleeping heavy pair sleeps on, and wake_body wakes only the island named.
+  SimulationState both;
+  std::vector<std::unique_ptr<ForceTerm>> terms;
+  add_pair(both, kHeavyMass, kSoft, Vec3::Zero(), terms);
+  add_pair(both, kLightMass, kStiff, Vec3(0.0, 0.05, 0.0), terms);
+  both.velocities[2] = Vec3(0.0, 0.0, 0.01);
+  ExplicitVerlet integrator;
+  integrator.set_sleep_threshold(1e-9);
+  const auto t = pointers(terms);
+  integrator.topology_changed(both, t);
+  for (int step = 1; step <= ExplicitVerlet::kCalmStepsToSleep; ++step)
+    integrator.step(both, t, StepContext{1e-3 * step, 1e-3, step});
+  ASSERT_EQ(integrator.islands_asleep(), 1);
+  integrator.topology_changed(both, t);  // the same nodes: a re-plan
+  EXPECT_EQ(integrator.islands_asleep(), 1);
+  integrator.wake_body(1);  // the ringing light pair's body: the heavy one sleeps on
+  EXPECT_EQ(integrator.islands_asleep(), 1);
+  integrator.wake_body(0);
+  EXPECT_EQ(integrator.islands_asleep(), 0);
+  // A state with other nodes (a cut) starts every island awake.
+  for (int step = 1; step <= ExplicitVerlet::kCalmStepsToSleep; ++step)
+    integrator.step(both, t, StepContext{1e-3 * step, 1e-3, step});
+  ASSERT_EQ(integrator.islands_asleep(), 1);
+  SimulationState more = both;
+  add_pair(more, kHeavyMass, kSoft, Vec3(0.0, -0.05, 0.0), terms);
+  integrator.topology_changed(more, pointers(terms));
+  EXPECT_EQ(integrator.islands_asleep(), 0);
+}
+
+TEST(MultirateVerlet, a_stiffness_change_replans_its_island_alone_as_a_whole_replan_would) {
+  // The light pair stiffened 4× in place: stiffness_changed re-plans its island to the bits a
+  // whole topology_changed gives (halving its stable sub-step) and leaves the sleeping heavy
+  // pair's plan and sleep alone.
+  SimulationState both;
+  std::vector<std::unique_ptr<ForceTerm>> terms;
+  add_pair(both, kHeavyMass, kSoft, Vec3::Zero(), terms);
+  add_pair(both, kLightMass, kStiff, Vec3(0.0, 0.05, 0.0), terms);
+  ExplicitVerlet integrator;
+  integrator.set_sleep_threshold(1e-9);
+  const auto t = pointers(terms);
+  integrator.topology_changed(both, t);
+  const std::vector<double> before = integrator.island_stable_steps();
+  for (int step = 1; step <= ExplicitVerlet::kCalmStepsToSleep; ++step)
+    integrator.step(both, t, StepContext{1e-3 * step, 1e-3, step});
+  ASSERT_EQ(integrator.islands_asleep(), 2);
+  static_cast<OffsetSprings*>(terms[1].get())->set_stiffness(4.0 * kStiff);
+  integrator.stiffness_changed(both, t, 1);
+  ExplicitVerlet whole;
+  whole.topology_changed(both, t);
+  EXPECT_EQ(integrator.island_stable_steps(), whole.island_stable_steps());
+  EXPECT_EQ(integrator.stable_step(), whole.stable_step());
+  EXPECT_EQ(integrator.island_stable_steps()[0], before[0]);
+  EXPECT_NEAR(integrator.island_stable_steps()[1], 0.5 * before[1], 1e-6 * before[1]);
+  EXPECT_EQ(integrator.islands_asleep(), 2);  // waking is the world's call (wake_body)
+}
+
 }  // namespace viscera::sim

@@ -110,6 +110,25 @@ void SessionOverlay::add_to(vtkRenderer* renderer) const {
   renderer->AddActor2D(legend_);
 }
 
+void SessionOverlay::lay_out_info(const OverlayState& state, double magnitude,
+                                  const std::string& tool) {
+  char buffer[640];
+  std::snprintf(buffer, sizeof buffer,
+                "Elapsed %6.1f s / %.1f s\n"
+                "Force   %5.2f N  (%+.2f %+.2f %+.2f)\n"
+                "Tip     %+6.1f %+6.1f %+6.1f mm\n"
+                "Optics  %.0f deg   inflow %.0f%%  outflow %.0f%%\n"
+                "Seen    %4.1f %% of the cavity\n"
+                "Step    %s%s%s%s",
+                state.elapsed, state.time_limit, magnitude, state.force.x(), state.force.y(),
+                state.force.z(), 1000.0 * state.tip.x(), 1000.0 * state.tip.y(),
+                1000.0 * state.tip.z(), state.optics_angle, 100.0 * state.inflow,
+                100.0 * state.outflow, 100.0 * state.surface_seen,
+                state.step.empty() ? "-" : state.step.c_str(),
+                state.ended.empty() ? "" : "\nEnded   ", state.ended.c_str(), tool.c_str());
+  info_->SetInput(buffer);
+}
+
 void SessionOverlay::update(const OverlayState& state) {
   const double magnitude = state.force.norm();
   // Full scale: 1.5 × the warning level, or 2 N without one.
@@ -146,21 +165,14 @@ void SessionOverlay::update(const OverlayState& state) {
       tool +=
           "\nLeft    " + state.left_tool + ", jaws " + (state.left_jaws_closed ? "closed" : "open");
   }
-  char buffer[640];
-  std::snprintf(buffer, sizeof buffer,
-                "Elapsed %6.1f s / %.1f s\n"
-                "Force   %5.2f N  (%+.2f %+.2f %+.2f)\n"
-                "Tip     %+6.1f %+6.1f %+6.1f mm\n"
-                "Optics  %.0f deg   inflow %.0f%%  outflow %.0f%%\n"
-                "Seen    %4.1f %% of the cavity\n"
-                "Step    %s%s%s%s",
-                state.elapsed, state.time_limit, magnitude, state.force.x(), state.force.y(),
-                state.force.z(), 1000.0 * state.tip.x(), 1000.0 * state.tip.y(),
-                1000.0 * state.tip.z(), state.optics_angle, 100.0 * state.inflow,
-                100.0 * state.outflow, 100.0 * state.surface_seen,
-                state.step.empty() ? "-" : state.step.c_str(),
-                state.ended.empty() ? "" : "\nEnded   ", state.ended.c_str(), tool.c_str());
-  info_->SetInput(buffer);
+  const std::string lines = state.step + "\n" + state.ended + "\n" + tool;
+  const bool due = laid_out_at_ < 0.0 || state.elapsed < laid_out_at_ ||
+                   state.elapsed >= laid_out_at_ + kTextInterval || lines != laid_out_lines_;
+  if (due) {
+    lay_out_info(state, magnitude, tool);
+    laid_out_at_ = state.elapsed;
+    laid_out_lines_ = lines;
+  }
 
   const std::string alert = force_alert(magnitude, state.force_warning);
   if (alert == "excessive") {

@@ -398,6 +398,30 @@ TEST(SessionOverlay, force_bars_fill_and_warn_as_the_force_nears_the_limit) {
   EXPECT_NE(overlay.warning_text().find("EXCESSIVE"), std::string::npos);
 }
 
+TEST(SessionOverlay, lays_its_numbers_out_ten_times_a_second_and_its_tool_lines_at_once) {
+  view::SessionOverlay overlay("");
+  view::OverlayState state;
+  state.elapsed = 1.0;
+  state.force = core::Vec3(0.0, 0.0, 0.25);
+  overlay.update(state);
+  EXPECT_NE(overlay.info_text().find("0.25 N"), std::string::npos) << overlay.info_text();
+  state.elapsed = 1.05;  // within 0.1 s of session time: the numbers stay, the bars move
+  state.force = core::Vec3(0.0, 0.0, 0.5);
+  overlay.update(state);
+  EXPECT_NE(overlay.info_text().find("0.25 N"), std::string::npos) << overlay.info_text();
+  EXPECT_DOUBLE_EQ(overlay.bar_fill()[3], 0.25);
+  state.tool = "grasper";  // a tool line changes: laid out at once
+  overlay.update(state);
+  EXPECT_NE(overlay.info_text().find("0.50 N"), std::string::npos) << overlay.info_text();
+  state.elapsed = 1.1;
+  state.force = core::Vec3(0.0, 0.0, 0.75);
+  overlay.update(state);
+  EXPECT_NE(overlay.info_text().find("0.50 N"), std::string::npos) << overlay.info_text();
+  state.elapsed = 1.151;
+  overlay.update(state);
+  EXPECT_NE(overlay.info_text().find("0.75 N"), std::string::npos) << overlay.info_text();
+}
+
 TEST(SessionOverlay, shows_the_suction_irrigation_cannulas_valves_and_the_pool) {
   view::SessionOverlay overlay("");
   view::OverlayState state;

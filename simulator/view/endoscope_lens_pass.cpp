@@ -71,8 +71,12 @@ const char* kBody = R"(
   float z = eyeDepth(uv);
   float radius = min(maxBlur, blurPerDioptre * abs(1.0 / z - focusDioptres));
   // Condensation on the lens: blotches (two octaves of value noise), denser towards the rim.
-  float blotch = 0.6 * fogNoise(p * 5.0) + 0.4 * fogNoise(p * 13.0 + 7.0);
-  float steam = clamp(lensFog * (0.55 + 0.45 * blotch + 0.3 * r2), 0.0, 1.0);
+  // A clear lens skips the noise (eight sines a pixel, a software renderer's largest cost here).
+  float steam = 0.0;
+  if (lensFog > 0.0) {
+    float blotch = 0.6 * fogNoise(p * 5.0) + 0.4 * fogNoise(p * 13.0 + 7.0);
+    steam = clamp(lensFog * (0.55 + 0.45 * blotch + 0.3 * r2), 0.0, 1.0);
+  }
   radius = max(radius, steam * maxBlur);
   // The circle of confusion as one trilinear fetch from the scene's mipmap chain: level L
   // averages 2^L texels, so L = log2(diameter in scene texels) blurs over about the disc.

@@ -86,6 +86,10 @@ struct SceneSurfaces::Surface {
   std::string texture_preset;  ///< the object's TextureSpec preset ("": none)
   std::uint64_t texture_seed = 0;
   std::shared_ptr<const CutFaceColours> inside;  ///< made at the first cut
+  /// The body's node positions and coagulated flags last shown: a body that did not move (an
+  /// island asleep) keeps its geometry and colours, and nothing is computed or uploaded again.
+  std::vector<core::Vec3> shown_positions;
+  std::vector<float> shown_coagulated;
 };
 
 namespace {
@@ -279,11 +283,18 @@ void SceneSurfaces::update(const std::vector<sim::BodyPositions>& bodies) {
     if (surface.body.empty()) continue;
     for (const sim::BodyPositions& body : bodies) {
       if (body.name != surface.body) continue;
-      if (body.cut_surface && body.cut_surface != surface.cut) show_cut(surface, body.cut_surface);
-      set_geometry(surface.mesh,
-                   core::embedded_positions(*surface.embedding, surface.tets, body.positions),
-                   surface.triangles, surface.weld);
-      tint_coagulated(surface, body.coagulated);
+      const bool recut = body.cut_surface && body.cut_surface != surface.cut;
+      if (recut) show_cut(surface, body.cut_surface);
+      if (recut || body.positions != surface.shown_positions) {
+        set_geometry(surface.mesh,
+                     core::embedded_positions(*surface.embedding, surface.tets, body.positions),
+                     surface.triangles, surface.weld);
+        surface.shown_positions = body.positions;
+      }
+      if (recut || body.coagulated != surface.shown_coagulated) {
+        tint_coagulated(surface, body.coagulated);
+        surface.shown_coagulated = body.coagulated;
+      }
     }
   }
 }

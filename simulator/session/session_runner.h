@@ -197,6 +197,8 @@ class SessionRunner {
   /// instrument's stiffness), put into the world when a tool first enters the port; a tool
   /// taken out is drawn back along its shaft, out of the tissue.
   ProxySpringTerm* second_proxy_ = nullptr;
+  core::Vec3 second_axis_ = core::Vec3::UnitZ();  ///< the second tool's shaft when last in
+  bool second_withdrawn_ = false;                 ///< its proxy already drawn back out
   /// Moves the second port's contact point to state_.second (before the world steps).
   void move_second_port();
   /// The jet, the pool and the suction of the suction–irrigation cannula (issue 19 §3).

@@ -32,10 +32,14 @@ void SessionRunner::move_second_port() {
   if (!tools_) return;
   const InstrumentState port = in_port(state_, 1);
   if (!state_.second.inserted) {
-    // Taken out: the tool slides back along its shaft, out of the abdomen.
-    if (second_proxy_ != nullptr) second_proxy_->set_tip(second_proxy_->tip() - 0.1 * port.axis);
+    // Taken out: the tool slides back along its shaft, once, out of the abdomen.
+    if (second_proxy_ != nullptr && !second_withdrawn_)
+      second_proxy_->set_tip(second_proxy_->tip() - 0.1 * second_axis_);
+    second_withdrawn_ = true;
     return;
   }
+  second_withdrawn_ = false;
+  second_axis_ = port.axis;
   const core::Vec3 touch = hinge(port, tools_->options());
   if (second_proxy_ == nullptr) {
     std::vector<std::shared_ptr<const BodyModel>> models(world_.models().begin(),

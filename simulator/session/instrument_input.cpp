@@ -92,6 +92,8 @@ nlohmann::json resolve_script_landmarks(const nlohmann::json& script,
     resolve(waypoint, pointer);
     if (waypoint.contains("left") && waypoint["left"].is_object())
       resolve(waypoint["left"], pointer + "/left");
+    if (waypoint.contains("camera") && waypoint["camera"].is_object())
+      resolve(waypoint["camera"], pointer + "/camera");
   }
   return out;
 }
@@ -164,6 +166,46 @@ void read_second_port(const nlohmann::json& left, const std::string& file,
   port.up.normalize();
 }
 
+/// The laparoscope held as a camera at a waypoint, `block` at `pointer`: {"tip", "look_at"} (the
+/// angled optics aimed at a point) or {"tip", "axis", "up"}, held as the working port's pose, or
+/// {"release": true} to give the optics back to the working port.
+void read_camera(const nlohmann::json& block, const std::string& file, const std::string& pointer,
+                 double optics_angle, LaparoscopeCamera& camera) {
+  if (!block.is_object())
+    throw core::InputError("the camera must be an object", {file, pointer, ""});
+  if (block.value("release", false)) {
+    camera = LaparoscopeCamera{};
+    return;
+  }
+  if (!camera.held && !block.contains("tip"))
+    throw core::InputError("a laparoscope taken up as the camera needs a \"tip\" [x, y, z] (m)",
+                           {file, pointer, ""});
+  try {
+    if (block.contains("tip")) camera.tip = block["tip"].get<core::Vec3>();
+    if (block.contains("axis")) camera.axis = block["axis"].get<core::Vec3>();
+    if (block.contains("up")) camera.up = block["up"].get<core::Vec3>();
+    if (block.contains("look_at")) {
+      const InstrumentState aimed =
+          look_at(camera.tip, block["look_at"].get<core::Vec3>(), camera.axis, optics_angle);
+      camera.axis = aimed.axis;
+      camera.up = aimed.up;
+    }
+  } catch (const nlohmann::json::exception& e) {
+    throw core::InputError(
+        std::string("the camera's tip, axis, up and look_at are [x, y, z]: ") + e.what(),
+        {file, pointer, ""});
+  }
+  if (!camera.tip.allFinite() || !camera.axis.allFinite() || camera.axis.norm() == 0.0 ||
+      !camera.up.allFinite())
+    throw core::InputError("the camera's tip and axis must be finite, the axis non-zero",
+                           {file, pointer, ""});
+  camera.held = true;
+  camera.axis.normalize();
+  camera.up -= camera.up.dot(camera.axis) * camera.axis;
+  if (camera.up.norm() < 1e-12) camera.up = camera.axis.unitOrthogonal();
+  camera.up.normalize();
+}
+
 }  // namespace
 
 ScriptedTrajectory ScriptedTrajectory::from_json(const nlohmann::json& json,
@@ -219,6 +261,8 @@ ScriptedTrajectory ScriptedTrajectory::from_json(const nlohmann::json& json,
       read_switch(w, "close", file, pointer, s.jaws_closed);
       read_switch(w, "irrigate", file, pointer, s.irrigating);
       if (w.contains("left")) read_second_port(w["left"], file, pointer + "/left", s.second);
+      if (w.contains("camera"))
+        read_camera(w["camera"], file, pointer + "/camera", optics_angle, s.camera);
       s.loop_extension = w.value("loop_extension", s.loop_extension);
       // A tip anchored on the tissue follows it; a tip without an anchor does not.
       s.follow = w.contains("tip_anchor") ? 1.0 : 0.0;
@@ -255,6 +299,12 @@ ScriptedTrajectory ScriptedTrajectory::from_json(const nlohmann::json& json,
     script.states_.push_back(s);
     previous = s;
   }
+  // The assistant holds the laparoscope from the start: the first camera a script gives is
+  // where it is before that waypoint too.
+  const auto first_held = std::find_if(script.states_.begin(), script.states_.end(),
+                                       [](const InstrumentState& s) { return s.camera.held; });
+  if (first_held != script.states_.end())
+    for (auto it = script.states_.begin(); it != first_held; ++it) it->camera = first_held->camera;
   return script;
 }
 

@@ -85,22 +85,46 @@ InstrumentState blend(const InstrumentState& a, const InstrumentState& b, double
     s.anchor_body = from_a ? a.anchor_body : b.anchor_body;
   }
   s.second = blend(a.second, b.second, f);
+  s.camera = blend(a.camera, b.camera, f);
   orthonormalise(s);
   return s;
 }
 
-SecondPort blend(const SecondPort& a, const SecondPort& b, double f) {
-  if (!a.inserted) {
-    SecondPort s = b;
-    s.inserted = f >= 1.0 && b.inserted;
+namespace {
+
+/// A pose that is taken up or put down: switches from `a` until f reaches 1; a pose absent in
+/// `a` (`present` false) takes `b`'s and stays absent until then.
+template <typename Pose>
+Pose blend_pose(const Pose& a, const Pose& b, double f, bool Pose::*present) {
+  if (!(a.*present)) {
+    Pose s = b;
+    s.*present = f >= 1.0 && b.*present;
     return s;
   }
-  SecondPort s = f >= 1.0 ? b : a;  // the switches
-  if (!b.inserted) return s;
+  Pose s = f >= 1.0 ? b : a;  // the switches
+  if (!(b.*present)) return s;
   s.tip = (1.0 - f) * a.tip + f * b.tip;
   s.axis = ((1.0 - f) * a.axis + f * b.axis).normalized();
   s.up = (1.0 - f) * a.up + f * b.up;
   s.up = (s.up - s.up.dot(s.axis) * s.axis).normalized();
+  return s;
+}
+
+}  // namespace
+
+SecondPort blend(const SecondPort& a, const SecondPort& b, double f) {
+  return blend_pose(a, b, f, &SecondPort::inserted);
+}
+
+LaparoscopeCamera blend(const LaparoscopeCamera& a, const LaparoscopeCamera& b, double f) {
+  return blend_pose(a, b, f, &LaparoscopeCamera::held);
+}
+
+InstrumentState camera_pose(const InstrumentState& state) {
+  InstrumentState s;
+  s.tip = state.camera.held ? state.camera.tip : state.tip;
+  s.axis = state.camera.held ? state.camera.axis : state.axis;
+  s.up = state.camera.held ? state.camera.up : state.up;
   return s;
 }
 

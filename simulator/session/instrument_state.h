@@ -58,6 +58,21 @@ struct SecondPort {
   bool operator==(const SecondPort&) const = default;
 };
 
+/// The laparoscope held as a camera of its own (issue 19 §3; seed 001 §3.1: the trainer has two
+/// instrument ports beside the laparoscope): an assistant's — or the trainee's other — hand holds
+/// the optics through the umbilical trocar, apart from both tools. Not held (the default), the
+/// optics are the working port's: an operating laparoscope whose tool runs through its own
+/// channel, and every hysteroscope and cystoscope. Held, the view, its head light, the
+/// "centre-target" tasks, the camera's coverage and the lens's steaming are the laparoscope's.
+struct LaparoscopeCamera {
+  bool held = false;
+  core::Vec3 tip = core::Vec3::Zero();    ///< m, the objective
+  core::Vec3 axis = core::Vec3::UnitZ();  ///< shaft direction, from the handle towards the tip
+  core::Vec3 up = core::Vec3::UnitY();    ///< the side the angled optics look towards
+
+  bool operator==(const LaparoscopeCamera&) const = default;
+};
+
 /// Instrument pose and controls. Positions in m; `axis` and `up` unit and orthogonal.
 struct InstrumentState {
   core::Vec3 tip = core::Vec3::Zero();
@@ -96,6 +111,8 @@ struct InstrumentState {
   std::string anchor_body = {};
   /// The second instrument port (the left hand) of a laparoscopic session.
   SecondPort second = {};
+  /// The laparoscope as a camera apart from the working port (when held).
+  LaparoscopeCamera camera = {};
 
   bool operator==(const InstrumentState&) const = default;
 };
@@ -107,6 +124,10 @@ inline constexpr int kInstrumentPorts = 2;
 /// The tool in port `port` (0 or 1) as an instrument state of its own: port 0 is `state`; port 1
 /// is `state.second`'s pose and controls with everything else at its default.
 InstrumentState in_port(const InstrumentState& state, int port);
+
+/// The optics' pose as an instrument state: the held laparoscope's tip, axis and up, else
+/// `state`'s own (the optics at the working port's tip); everything else at its default.
+InstrumentState camera_pose(const InstrumentState& state);
 
 /// The optics' viewing direction: the shaft axis tilted by `optics_angle` degrees towards `up`
 /// (a 30° hysteroscope looks 30° off its shaft, on the side its light post marks).
@@ -126,8 +147,10 @@ InstrumentState look_at(const core::Vec3& tip, const core::Vec3& target,
 /// linearly; `f` in [0, 1]. Abort is taken from `b` once f reaches 1; the electrode, the
 /// coagulation, the tool, its jaws and the irrigation valve (switches, not blends) stay as in `a`
 /// until then. The second port blends the same way; a port empty in `a` takes `b`'s pose (a tool
-/// is put in where it is first placed) and stays empty until f reaches 1.
+/// is put in where it is first placed) and stays empty until f reaches 1. The camera blends as
+/// the second port: taken up where `b` holds it, at f = 1.
 InstrumentState blend(const InstrumentState& a, const InstrumentState& b, double f);
 SecondPort blend(const SecondPort& a, const SecondPort& b, double f);
+LaparoscopeCamera blend(const LaparoscopeCamera& a, const LaparoscopeCamera& b, double f);
 
 }  // namespace viscera::sim

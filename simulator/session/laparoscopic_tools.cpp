@@ -224,7 +224,7 @@ void LaparoscopicTools::follow(const InstrumentState& state, World& world, doubl
     withdraw(ports_[1], world, time, events);
   const core::Vec3 up = world.gravity().norm() > 0.0 ? core::Vec3(-world.gravity().normalized())
                                                      : core::Vec3(core::Vec3::UnitZ());
-  smoke_.step(time, dt, coagulating_at_, up, state.tip);
+  smoke_.step(time, dt, coagulating_at_, up, camera_pose(state).tip);
   for (int p = 0; p < kInstrumentPorts; ++p) {
     const InstrumentState port = in_port(state, p);
     if ((p == 0 || state.second.inserted) && port.tool == LaparoscopicTool::Suction &&

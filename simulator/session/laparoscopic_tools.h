@@ -96,7 +96,7 @@ class LaparoscopicTools {
   /// After every physics step of `dt` s with the instruments in `state` (the working port and,
   /// when a tool is in it, the second port: in_port): switches tools, opens and closes jaws,
   /// moves what each grasper holds, heats tissue; records in `summary` and `events` at `time`
-  /// s. The lens the smoke steams is the laparoscope's, at the working port's tip.
+  /// s. The lens the smoke steams is the laparoscope's (camera_pose).
   void follow(const InstrumentState& state, World& world, double time, double dt,
               LaparoscopySummary& summary, std::vector<SessionEvent>& events);
 
@@ -118,7 +118,7 @@ class LaparoscopicTools {
   /// The largest strain (length over rest length − 1) of the links — a net's springs, a cell
   /// tissue's connections — at the knots either grasper holds; 0 when they hold none.
   double grasp_stretch(const World& world) const;
-  /// The smoke of coagulation and the fog on the lens (at the instrument's tip).
+  /// The smoke of coagulation and the fog on the lens (the laparoscope's, camera_pose).
   const SurgicalSmoke& smoke() const { return smoke_; }
 
   /// Told of a clip placed on body `body` (its world index) at `time` s.

@@ -52,6 +52,7 @@ std::optional<ManualCommand> ManualControl::command_for_key(const std::string& k
       {"6", ManualCommand::ToolHook},
       {"Tab", ManualCommand::SwitchHand},
       {"BackSpace", ManualCommand::WithdrawSecondTool},
+      {"v", ManualCommand::TakeCamera},
       {"Escape", ManualCommand::Abort},
       {"x", ManualCommand::Abort}};
   const auto it = keys.find(key);
@@ -67,6 +68,7 @@ std::string ManualControl::bindings_text() {
          "J: jaws/suction   Space with the hook: cutting current   C: coagulating current\n"
          "L: irrigation (lavage) valve of the suction–irrigation cannula\n"
          "Tab: switch hands (the left hand's tool in the second port)   Backspace: take it out\n"
+         "V: move the laparoscope (the camera) apart from the tools; Tab: back to the tools\n"
          "Left-drag: swing the shaft   Wheel: advance/withdraw   Esc or X: abort";
 }
 
@@ -97,14 +99,20 @@ void ManualControl::press(ManualCommand command) {
     tool.irrigating = false;
   } else if (command == ManualCommand::SwitchHand) {
     std::fill(std::begin(held_), std::end(held_), false);  // the other hand's keys start up
-    if (hand_ == 0 && !state_.second.inserted) {
-      state_.second = second_port_entry(state_);
+    const int from = hand_ == 2 ? 1 - tool_hand_ : hand_;  // from the camera: the tool last moved
+    if (from == 0 && !state_.second.inserted) {
+      state_.second = second_port_entry(camera_pose(state_));
       left_ = in_port(state_, 1);
     }
-    hand_ = 1 - hand_;
+    hand_ = tool_hand_ = 1 - from;
   } else if (command == ManualCommand::WithdrawSecondTool) {
     state_.second = SecondPort{};
-    hand_ = 0;
+    hand_ = tool_hand_ = 0;
+  } else if (command == ManualCommand::TakeCamera) {
+    std::fill(std::begin(held_), std::end(held_), false);
+    camera_ = camera_pose(state_);
+    state_.camera.held = true;
+    hand_ = 2;
   } else if (command == ManualCommand::ToggleInflow) {
     state_.inflow = state_.inflow > 0.0 ? 0.0 : 1.0;
   } else if (command == ManualCommand::ToggleOutflow) {
@@ -126,7 +134,12 @@ void ManualControl::release(ManualCommand command) {
 }
 
 void ManualControl::sync_second() {
-  if (hand_ != 1) return;
+  if (hand_ == 2) {
+    state_.camera.tip = camera_.tip;
+    state_.camera.axis = camera_.axis;
+    state_.camera.up = camera_.up;
+  }
+  if (tool_hand_ != 1) return;
   SecondPort& port = state_.second;
   port.tip = left_.tip;
   port.axis = left_.axis;
@@ -144,13 +157,13 @@ void ManualControl::drag(double dx, double dy) {
 }
 
 void ManualControl::wheel(int notches) {
-  InstrumentState& tool = held_tool();
+  InstrumentState& tool = moved();
   tool.tip += notches * rates_.wheel * tool.axis;
   sync_second();
 }
 
 void ManualControl::swing(double yaw, double pitch) {
-  InstrumentState& tool = held_tool();
+  InstrumentState& tool = moved();
   const core::Vec3 side = tool.axis.cross(tool.up).normalized();
   const Eigen::AngleAxisd turn_yaw(yaw, tool.up);
   const Eigen::AngleAxisd turn_pitch(pitch, side);
@@ -161,7 +174,7 @@ void ManualControl::swing(double yaw, double pitch) {
 }
 
 void ManualControl::roll(double angle) {
-  InstrumentState& tool = held_tool();
+  InstrumentState& tool = moved();
   tool.up = Eigen::AngleAxisd(angle, tool.axis) * tool.up;
   orthonormalise(tool);
 }
@@ -171,7 +184,7 @@ const InstrumentState& ManualControl::advance(double dt) {
   const auto rate = [](double keys, double analog) { return std::clamp(keys + analog, -1.0, 1.0); };
   const double along =
       rate(held(ManualCommand::Advance) - held(ManualCommand::Withdraw), analog_.advance);
-  if (along != 0.0) held_tool().tip += along * rates_.advance * dt * held_tool().axis;
+  if (along != 0.0) moved().tip += along * rates_.advance * dt * moved().axis;
   const double yaw =
       rate(held(ManualCommand::SwingLeft) - held(ManualCommand::SwingRight), analog_.yaw);
   const double pitch =

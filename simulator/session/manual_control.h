@@ -45,6 +45,10 @@ enum class ManualCommand {
   /// the left hand puts a grasper into the second port (second_port_entry).
   SwitchHand,
   WithdrawSecondTool,  ///< the second port's tool out of the abdomen (the right hand again)
+  /// The keys, mouse and gamepad move the laparoscope (the camera) apart from the working port;
+  /// the first time, it is taken up where the working port's optics are, so the view stays.
+  /// The tools' switches still act on the hand last moved; SwitchHand goes back to the tools.
+  TakeCamera,
   Abort                ///< the trainee ends the session
 };
 
@@ -93,20 +97,25 @@ class ManualControl {
   /// Applies the held motions for `dt` s and returns the state.
   const InstrumentState& advance(double dt);
   const InstrumentState& state() const { return state_; }
-  /// The hand the controls move: 0 the right (working port), 1 the left (second port).
+  /// What the controls move: 0 the right hand (working port), 1 the left (second port), 2 the
+  /// laparoscope held as the camera.
   int hand() const { return hand_; }
 
  private:
   /// The pose and controls the keys act on: the working port's, or the second port's tool
   /// as an instrument state (copied back into state_.second by sync_second()).
-  InstrumentState& held_tool() { return hand_ == 0 ? state_ : left_; }
+  InstrumentState& held_tool() { return tool_hand_ == 0 ? state_ : left_; }
+  /// The pose the motions act on: the held tool's, or the camera's (copied back by sync_second).
+  InstrumentState& moved() { return hand_ == 2 ? camera_ : held_tool(); }
   void sync_second();
   void swing(double yaw, double pitch);
   void roll(double angle);
 
   InstrumentState state_;
-  InstrumentState left_;  ///< the second port's tool while it is in
+  InstrumentState left_;    ///< the second port's tool while it is in
+  InstrumentState camera_;  ///< the laparoscope's pose once taken up
   int hand_ = 0;
+  int tool_hand_ = 0;  ///< the tool the switches act on: the hand last moved (0 or 1)
   ManualRates rates_;
   bool held_[static_cast<int>(ManualCommand::CuttingPedal)] = {};
   AnalogMotion analog_;

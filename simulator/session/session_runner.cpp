@@ -414,7 +414,7 @@ void SessionRunner::look() {
       coverage_->refit(body.positions());
     }
   }
-  const CameraSample sample = coverage_->observe(state_, instrument_);
+  const CameraSample sample = coverage_->observe(camera_pose(state_), instrument_);
   last_view_distance_ = sample.centre_distance;
   const bool good = sample.centre_distance >= instrument_.min_view_distance &&
                     sample.centre_distance <= instrument_.max_view_distance &&
@@ -466,7 +466,9 @@ void SessionRunner::sample() {
   TaskContext context;
   context.time = world_.time();
   context.state = state_;
-  context.view = view_direction(state_, instrument_.optics_angle);
+  const InstrumentState optics = camera_pose(state_);
+  context.eye = optics.tip;
+  context.view = view_direction(optics, instrument_.optics_angle);
   context.in_contact = tissue_ != nullptr && tissue_->in_contact();
   if (context.in_contact) context.contact_object = tissue_->name();
   context.force = instrument_force().norm();

@@ -43,7 +43,8 @@ nlohmann::json state_to_json(long long step, const InstrumentState& s) {
           s.anchor_body,
           nlohmann::json::array({s.second.inserted, s.second.tip, s.second.axis, s.second.up,
                                  std::string(tool_name(s.second.tool)), s.second.jaws_closed,
-                                 s.second.coagulation, s.second.electrode, s.second.irrigating})};
+                                 s.second.coagulation, s.second.electrode, s.second.irrigating}),
+          nlohmann::json::array({s.camera.held, s.camera.tip, s.camera.axis, s.camera.up})};
 }
 
 std::pair<long long, InstrumentState> state_from_json(const nlohmann::json& j) {
@@ -83,6 +84,13 @@ std::pair<long long, InstrumentState> state_from_json(const nlohmann::json& j) {
     port.at(6).get_to(s.second.coagulation);
     port.at(7).get_to(s.second.electrode);
     port.at(8).get_to(s.second.irrigating);
+  }
+  if (j.size() > 17) {  // since the laparoscope held as a camera of its own
+    const nlohmann::json& camera = j.at(17);
+    camera.at(0).get_to(s.camera.held);
+    camera.at(1).get_to(s.camera.tip);
+    camera.at(2).get_to(s.camera.axis);
+    camera.at(3).get_to(s.camera.up);
   }
   return {core::whole_number<long long>(j.at(0), "", ""), s};
 }

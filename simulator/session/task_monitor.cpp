@@ -89,7 +89,7 @@ bool TaskMonitor::holds(const TaskContext& c) {
     return d <= parameter(spec_, "radius", 0.005);
   }
   if (spec_.kind == "centre-target") {
-    const core::Vec3 to = target_->position - tip;
+    const core::Vec3 to = target_->position - c.eye;
     const double distance = to.norm();
     if (distance < 1e-9) return false;
     const double angle =
@@ -100,7 +100,7 @@ bool TaskMonitor::holds(const TaskContext& c) {
         distance > parameter(spec_, "max_distance", 0.05))
       return false;
     // A centred orifice behind a fold of the wall is not seen.
-    return c.camera == nullptr || c.camera->visible(tip, target_->position, 0.002);
+    return c.camera == nullptr || c.camera->visible(c.eye, target_->position, 0.002);
   }
   if (spec_.kind == "inspect-surface") {
     track_best(c.fraction_seen, false);

@@ -27,6 +27,7 @@ struct CuttingSummary;  // session_report.h
 struct TaskContext {
   double time = 0.0;  ///< s
   InstrumentState state;
+  core::Vec3 eye = core::Vec3::Zero();    ///< m, the optics' objective (camera_pose(state).tip)
   core::Vec3 view = core::Vec3::UnitZ();  ///< unit viewing direction of the optics
   bool in_contact = false;
   std::string contact_object;               ///< object the tool touches, when in contact

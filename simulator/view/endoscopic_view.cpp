@@ -26,6 +26,20 @@ namespace viscera::view {
 namespace {
 constexpr double kNearPlane = 0.0005;  // m: the optics see from half a millimetre
 constexpr double kFarPlane = 0.3;      // m
+
+/// The working port's tool as a port of its own: in view while the laparoscope is held apart
+/// (otherwise it runs along the optics, out of their view).
+sim::SecondPort working_port(const sim::InstrumentState& state) {
+  sim::SecondPort port;
+  port.inserted = state.camera.held;
+  port.tip = state.tip;
+  port.axis = state.axis;
+  port.up = state.up;
+  port.tool = state.tool;
+  port.jaws_closed = state.jaws_closed;
+  return port;
+}
+
 }  // namespace
 
 EndoscopicView::EndoscopicView(const core::Scenario& scenario, const std::filesystem::path& package,
@@ -55,6 +69,7 @@ EndoscopicView::EndoscopicView(const core::Scenario& scenario, const std::filesy
   drops_ = std::make_unique<ParticleBillboards>(scene_, kDropLook);
   pool_ = std::make_unique<PoolSurface>(scene_);
   left_tool_ = std::make_unique<PortInstrument>(scene_);
+  right_tool_ = std::make_unique<PortInstrument>(scene_);
   smoke_ = std::make_unique<SmokeBillboards>(scene_);
 
   // The head light: a spot at the tip along the optics, dimming with distance.
@@ -131,7 +146,8 @@ void EndoscopicView::update(const sim::SessionSnapshot& snapshot) {
     lens_->lens_fog = snapshot.lens_fog;
   }
   left_tool_->update(snapshot.instrument.second);
-  set_instrument(snapshot.instrument, snapshot.optics_angle);
+  right_tool_->update(working_port(snapshot.instrument));
+  set_instrument(sim::camera_pose(snapshot.instrument), snapshot.optics_angle);
   {
     // The smoke faces the camera just placed.
     vtkCamera* camera = scene_->GetActiveCamera();

@@ -1,6 +1,6 @@
 #pragma once
 /// The endoscopic view of a session (seed 000 §7, seed 002 §4–§6): the scene seen from the
-/// instrument tip through angled optics (0°, 12°, 30°), lit by a head light at the tip, through
+/// optics' tip (the instrument's, or the laparoscope's when held apart) through angled optics (0°, 12°, 30°), lit by a head light at the tip, through
 /// the lens pass (barrel distortion, depth of field, round field stop), with the force bars and
 /// the session-info panel on top. A VTK render window, on screen or offscreen (X only: offscreen
 /// still needs an X server, e.g. Xvfb). Headless sessions never construct one.
@@ -92,6 +92,9 @@ class EndoscopicView {
   const PoolSurface& pool() const { return *pool_; }
   /// The second port's tool as drawn.
   const PortInstrument& left_tool() const { return *left_tool_; }
+  /// The working port's tool as drawn: only while the laparoscope is held apart
+  /// (sim::LaparoscopeCamera); otherwise it runs along the optics, out of view.
+  const PortInstrument& right_tool() const { return *right_tool_; }
   const SmokeBillboards& smoke() const { return *smoke_; }
   /// The steam on the lens in the lens pass, 0…1 (0 without lens effects).
   double lens_fog() const;
@@ -109,7 +112,7 @@ class EndoscopicView {
   std::unique_ptr<SessionOverlay> overlay_;
   std::unique_ptr<ParticleBillboards> blood_, bubbles_, debris_, drops_;
   std::unique_ptr<PoolSurface> pool_;
-  std::unique_ptr<PortInstrument> left_tool_;
+  std::unique_ptr<PortInstrument> left_tool_, right_tool_;
   std::unique_ptr<SmokeBillboards> smoke_;
   sim::SessionSnapshot captured_;  ///< reused by update(runner)
 };

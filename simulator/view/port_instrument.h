@@ -2,8 +2,9 @@
 /// The second instrument port's tool in the endoscopic view (issue 19 §3): the left hand's
 /// instrument seen by the laparoscope — a 5 mm shaft from outside the view up to the jaws'
 /// hinge and, for tools with jaws, two jaws opening along the tool's up (closed: together).
-/// Satin steel under the head light. Hidden while the port is empty. The working port's tool
-/// is not drawn: it runs along the optics, out of their view.
+/// Satin steel under the head light. Hidden while the port is empty. The working port's tool is
+/// drawn the same way while the laparoscope is held apart; otherwise it runs along the optics,
+/// out of their view.
 
 #include <vtkSmartPointer.h>
 

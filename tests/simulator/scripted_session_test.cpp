@@ -183,6 +183,10 @@ TEST(SessionTrace, round_trips_through_json_exactly) {
   b.second.tool = LaparoscopicTool::Hook;
   b.second.jaws_closed = true;
   b.second.electrode = true;
+  b.camera.held = true;
+  b.camera.tip = {0.0, -0.07, 0.07500000000000001};
+  b.camera.axis = core::Vec3(0.1, 1.0, -0.2).normalized();
+  b.camera.up = b.camera.axis.unitOrthogonal();
   trace.inputs = {{0, a}, {17, b}};
   trace.checkpoints = {{100, "x"}, {200, "y"}};
   trace.final_state_hash = "z";
@@ -205,6 +209,11 @@ TEST(SessionTrace, round_trips_through_json_exactly) {
   while (unfollowed["inputs"][1].size() > 13)
     unfollowed["inputs"][1].erase(13);
   EXPECT_EQ(trace_from_json(unfollowed, "t.json").inputs[1].second.follow, 0.0);
+  // One from before the laparoscope was held apart (17 members) reads with the optics at the
+  // working port.
+  nlohmann::json one_camera = trace_to_json(trace);
+  one_camera["inputs"][1].erase(17);
+  EXPECT_FALSE(trace_from_json(one_camera, "t.json").inputs[1].second.camera.held);
   nlohmann::json broken = trace_to_json(trace);
   broken.erase("inputs");
   EXPECT_THROW(trace_from_json(broken, "t.json"), core::ValidationError);

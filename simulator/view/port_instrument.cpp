@@ -111,7 +111,8 @@ PortInstrument::~PortInstrument() = default;
 
 void PortInstrument::update(const sim::SecondPort& port) {
   actor_->SetVisibility(port.inserted ? 1 : 0);
-  if (!port.inserted) return;
+  if (!port.inserted || port == shown_) return;  // a tool held still keeps its triangles
+  shown_ = port;
   auto* mapper = vtkPolyDataMapper::SafeDownCast(actor_->GetMapper());
   mapper->SetInputData(port_instrument_mesh(port));
 }

@@ -46,6 +46,7 @@ class PortInstrument {
 
  private:
   vtkSmartPointer<vtkActor> actor_;
+  sim::SecondPort shown_;  ///< the port whose triangles the mapper holds (none at first)
 };
 
 }  // namespace viscera::view

@@ -5,6 +5,7 @@
 #include "simulator/view/endoscopic_view.h"
 
 #include <gtest/gtest.h>
+#include <vtkCamera.h>
 #include <vtkImageData.h>
 #include <vtkPointData.h>
 
@@ -371,6 +372,43 @@ TEST(EndoscopicView, the_second_ports_tool_shows_in_front_of_the_optics) {
   left = sim::SecondPort{};
   view.update(snapshot);
   EXPECT_FALSE(view.left_tool().visible());
+  start.expect_the_clear_picture_again();
+}
+
+TEST(EndoscopicView, a_laparoscope_held_apart_shows_the_working_ports_tool_from_where_it_is) {
+  // Issue 19 §3: with the laparoscope held apart the camera stays where it is held, and the
+  // working port's tool, brought 15 mm ahead of the lens from the side, is drawn as steel; given
+  // back, the optics are at the tool's tip again.
+  ClearStartingView start;
+  auto& [patient, view, snapshot, clear, before] = start;
+  sim::InstrumentState& state = snapshot.instrument;
+  const sim::InstrumentState optics = state;
+  state.camera = {true, optics.tip, optics.axis, optics.up};
+  view.update(snapshot);
+  EXPECT_TRUE(view.right_tool().visible());  // its jaws reach the lens: the tip is at it
+  const core::Vec3 view_line = sim::view_direction(optics, snapshot.optics_angle);
+  state.tool = sim::LaparoscopicTool::Grasper;
+  state.tip = start.ahead(0.015);
+  state.axis = (view_line - view_line.unitOrthogonal()).normalized();
+  state.up = view_line.cross(state.axis).normalized();
+  view.update(snapshot);
+  core::Vec3 eye;
+  view.scene_renderer()->GetActiveCamera()->GetPosition(eye.data());
+  EXPECT_LT((eye - optics.tip).norm(), 1e-12);  // the camera did not follow the tool
+  EXPECT_TRUE(view.right_tool().visible());
+  EXPECT_GT(testing::mean_abs_difference(clear, view.capture(), 0.9), 2.0);
+  // The camera drawn back 5 mm along its shaft sees the scene from further away.
+  state.tip = optics.tip;
+  state.axis = optics.axis;
+  state.up = optics.up;
+  state.camera.tip = optics.tip - 0.005 * optics.axis;
+  view.update(snapshot);
+  view.scene_renderer()->GetActiveCamera()->GetPosition(eye.data());
+  EXPECT_LT((eye - state.camera.tip).norm(), 1e-12);
+  // Given back: the optics are the tool's again and the tool runs along them, out of view.
+  state = optics;
+  view.update(snapshot);
+  EXPECT_FALSE(view.right_tool().visible());
   start.expect_the_clear_picture_again();
 }
 

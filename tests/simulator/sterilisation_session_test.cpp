@@ -160,11 +160,13 @@ TEST(Sterilisation, expert_and_novice_separate_on_every_metric) {
   for (const char* hand : {"right", "left"})
     EXPECT_LT(e.laparoscopy->path_per_hand.at(hand), n.laparoscopy->path_per_hand.at(hand)) << hand;
   EXPECT_LT(e.simulated_time, n.simulated_time);
-  // Three bipolar bites raise more smoke and steam the lens more than one: the metrics differ
-  // (thorough coagulation costs smoke; suction would clear it).
+  // Three bipolar bites raise more smoke than one (thorough coagulation costs smoke; suction
+  // clears it). The expert's assistant keeps the laparoscope 5.7 cm off the bites, clear of the
+  // column, and its lens stays clear; the novice's, pushed in to 2.5 cm, steams at his one bite.
   EXPECT_GT(e.laparoscopy->smoke_time, n.laparoscopy->smoke_time);
   EXPECT_GT(n.laparoscopy->smoke_time, 0.0);
-  EXPECT_GT(e.laparoscopy->peak_lens_fog, n.laparoscopy->peak_lens_fog);
+  EXPECT_LT(e.laparoscopy->peak_lens_fog, 0.05);
+  EXPECT_GT(n.laparoscopy->peak_lens_fog, 0.1);
   // The expert draws the smoke column off with the suction cannula; the novice leaves it.
   EXPECT_GT(e.laparoscopy->smoke_puffs_suctioned, 10);
   EXPECT_EQ(n.laparoscopy->smoke_puffs_suctioned, 0);

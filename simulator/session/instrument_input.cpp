@@ -166,9 +166,11 @@ void read_second_port(const nlohmann::json& left, const std::string& file,
   port.up.normalize();
 }
 
-/// The laparoscope held as a camera at a waypoint, `block` at `pointer`: {"tip", "look_at"} (the
-/// angled optics aimed at a point) or {"tip", "axis", "up"}, held as the working port's pose, or
-/// {"release": true} to give the optics back to the working port.
+/// The laparoscope held as a camera at a waypoint, `block` at `pointer`: {"tip", "look_at", "up"}
+/// (the angled optics aimed at a point, the shaft below the view so that "up" — default the
+/// previous camera's, else +z — is the picture's up, as an assistant keeps the horizon level)
+/// or {"tip", "axis", "up"}, held as the working port's pose, or {"release": true} to give the
+/// optics back to the working port.
 void read_camera(const nlohmann::json& block, const std::string& file, const std::string& pointer,
                  double optics_angle, LaparoscopeCamera& camera) {
   if (!block.is_object())
@@ -182,13 +184,17 @@ void read_camera(const nlohmann::json& block, const std::string& file, const std
                            {file, pointer, ""});
   try {
     if (block.contains("tip")) camera.tip = block["tip"].get<core::Vec3>();
-    if (block.contains("axis")) camera.axis = block["axis"].get<core::Vec3>();
-    if (block.contains("up")) camera.up = block["up"].get<core::Vec3>();
     if (block.contains("look_at")) {
+      const core::Vec3 picture_up = block.contains("up") ? block["up"].get<core::Vec3>()
+                                    : camera.held        ? camera.up
+                                                         : core::Vec3::UnitZ();
       const InstrumentState aimed =
-          look_at(camera.tip, block["look_at"].get<core::Vec3>(), camera.axis, optics_angle);
+          look_at(camera.tip, block["look_at"].get<core::Vec3>(), -picture_up, optics_angle);
       camera.axis = aimed.axis;
       camera.up = aimed.up;
+    } else {
+      if (block.contains("axis")) camera.axis = block["axis"].get<core::Vec3>();
+      if (block.contains("up")) camera.up = block["up"].get<core::Vec3>();
     }
   } catch (const nlohmann::json::exception& e) {
     throw core::InputError(

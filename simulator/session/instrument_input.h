@@ -67,7 +67,8 @@ class InstrumentInput {
 /// (0 or 1), and the second port's tool (the left hand, SecondPort) as "left": {"tip", "axis",
 /// "up", "tool", "close", "coagulate", "activate", "irrigate"} — held until a later waypoint's
 /// "left" changes it, its pose blended between the waypoints that give it — or
-/// {"withdraw": true}. "camera": {"tip", "look_at"} or {"tip", "axis", "up"} holds the
+/// {"withdraw": true}. "camera": {"tip", "look_at", "up"} (up: the picture's, default the
+/// previous camera's, else +z) or {"tip", "axis", "up"} holds the
 /// laparoscope apart from the working port (LaparoscopeCamera), blended the same way, or
 /// {"release": true} gives the optics back to it; the first camera given holds from t = 0.
 class ScriptedTrajectory final : public InstrumentInput {

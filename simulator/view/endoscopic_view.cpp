@@ -26,6 +26,8 @@ namespace viscera::view {
 namespace {
 constexpr double kNearPlane = 0.0005;  // m: the optics see from half a millimetre
 constexpr double kFarPlane = 0.3;      // m
+constexpr double kEndoscopeLightFalloff = 0.03;    // m
+constexpr double kLaparoscopeLightFalloff = 0.08;  // m
 
 /// The working port's tool as a port of its own: in view while the laparoscope is held apart
 /// (otherwise it runs along the optics, out of their view).
@@ -79,7 +81,11 @@ EndoscopicView::EndoscopicView(const core::Scenario& scenario, const std::filesy
   light_->SetIntensity(options.light_intensity);
   light_->SetColor(1.0, 0.97, 0.92);
   light_->SetConeAngle(scenario.session.instrument.field_of_view / 2.0 + 20.0);
-  light_->SetAttenuationValues(1.0, 0.0, 1.0 / (options.light_falloff * options.light_falloff));
+  const double falloff = options.light_falloff > 0.0 ? options.light_falloff
+                         : scenario.session.instrument.kind == "laparoscope"
+                             ? kLaparoscopeLightFalloff
+                             : kEndoscopeLightFalloff;
+  light_->SetAttenuationValues(1.0, 0.0, 1.0 / (falloff * falloff));
   scene_->AddLight(light_);
 
   if (options.lens_effects) {

@@ -57,6 +57,10 @@ TEST(LaparoscopeCamera, a_script_holds_it_from_the_start_aims_it_blends_it_and_g
     EXPECT_LT(angle_between(view_direction(optics, 30.0), target - optics.tip), 1e-9);
     EXPECT_NEAR(angle_between(optics.axis, view_direction(optics, 30.0)), std::numbers::pi / 6,
                 1e-9);
+    // The picture's up is +z as far as the line of sight allows (a level horizon).
+    const core::Vec3 view = view_direction(optics, 30.0);
+    const core::Vec3 level = (core::Vec3::UnitZ() - view.dot(core::Vec3::UnitZ()) * view);
+    EXPECT_LT(angle_between(optics.up - optics.up.dot(view) * view, level), 1e-9);
   }
   // Halfway to the next aim the view has turned part of the way; at the waypoint it is there.
   const InstrumentState half = camera_pose(trajectory.state(0, 1.5));

@@ -15,6 +15,7 @@
 #include "simulator/haptics/simulated_device.h"
 #include "simulator/input/live_session.h"
 #include "simulator/session/headless_session.h"
+#include "simulator/session/session_runner.h"
 #include "simulator/world/world.h"
 #include "tests/simulator/left_tube_patient.h"
 
@@ -114,13 +115,13 @@ TEST(TwoHandedInput, a_left_device_on_loopback_drives_the_second_port_and_feels_
   options.end_when_complete = false;
 
   // The device's phases by the simulated time its feedback echoes: a probe in from 2 cm above
-  // the tube and pressed 3 mm past its front (0–0.6 s), a grasper with its jaws closed held
-  // clear above (0.6–0.9 s), then the tool out (from 0.9 s).
+  // the tube and pressed 3 mm past its front and back (0–0.6 s), a grasper with its jaws closed
+  // held clear above (0.6–0.9 s), then the tool out (from 0.9 s).
   const core::Vec3 above = i.point - 0.02 * i.into, pressed = i.point + 0.003 * i.into;
   const Eigen::Quaterniond q = Eigen::Quaterniond::FromTwoVectors(core::Vec3::UnitZ(), i.into);
   std::atomic<bool> done{false};
   std::mutex mutex;
-  Phase probing, grasping, withdrawn;
+  Phase probing, pressing, grasping, withdrawn;
   std::thread device([&] {
     SimulatedDevice client(input.left_port());
     double t = 0.0;  // s, the session's time as the last feedback told it
@@ -129,7 +130,13 @@ TEST(TwoHandedInput, a_left_device_on_loopback_drives_the_second_port_and_feels_
     for (std::uint32_t n = 1; !done.load(); ++n) {
       pose.sequence = n;
       if (t < 0.6) {
-        pose.position = t < 0.3 ? above + (t / 0.3) * (pressed - above) : pressed;
+        // In over 0.3 s, held pressed to 0.5 s, drawn back out by 0.6 s (no jump in contact).
+        if (t < 0.3)
+          pose.position = above + (t / 0.3) * (pressed - above);
+        else if (t < 0.5)
+          pose.position = pressed;
+        else
+          pose.position = pressed + std::min(1.0, (t - 0.5) / 0.09) * (above - pressed);
         pose.buttons = 0U << kDeviceToolShift;  // no tool: the blunt probe
       } else if (t < 0.9) {
         pose.position = above;
@@ -141,7 +148,11 @@ TEST(TwoHandedInput, a_left_device_on_loopback_drives_the_second_port_and_feels_
       client.send(pose);
       for (auto feedback = client.receive(1); feedback; feedback = client.receive(0)) {
         t = static_cast<double>(feedback->time_ns) * 1e-9;
-        Phase& phase = t < 0.6 ? probing : (t < 0.9 ? grasping : withdrawn);
+        // Pressing: the probe held 3 mm in (0.35–0.5 s, after the first packets that answer it).
+        Phase& phase = t >= 0.35 && t < 0.5 ? pressing
+                       : t < 0.6            ? probing
+                       : t < 0.9            ? grasping
+                                            : withdrawn;
         const std::lock_guard<std::mutex> lock(mutex);
         ++phase.packets;
         if (feedback->force.norm() > phase.strongest.norm()) phase.strongest = feedback->force;
@@ -155,11 +166,12 @@ TEST(TwoHandedInput, a_left_device_on_loopback_drives_the_second_port_and_feels_
   EXPECT_EQ(report.end_reason, "duration");
   EXPECT_GT(input.left().counters().accepted, 50u);
   EXPECT_GT(input.left().feedback_sent(), 100u);
-  // The tube pushed the probe back towards its port, through the bridge.
-  EXPECT_GT(probing.packets, 50);
-  EXPECT_GT(probing.strongest.norm(), 1e-4) << "the soft tube gives way: ~0.7 mN";
-  EXPECT_LT(probing.strongest.dot(i.into), 0.0);
-  EXPECT_LE(probing.strongest.norm(), 2.0 + 1e-12) << "within the device's force limit";
+  // The tube pushed the held probe back towards its port, through the bridge.
+  EXPECT_GT(pressing.packets, 50);
+  EXPECT_GT(pressing.strongest.norm(), 1e-4) << "the soft tube gives way: ~0.7 mN";
+  EXPECT_LT(pressing.strongest.dot(i.into), 0.0);
+  EXPECT_LE(std::max(probing.strongest.norm(), pressing.strongest.norm()), 2.0 + 1e-12)
+      << "within the device's force limit";
   EXPECT_GT(withdrawn.packets, 10);
   EXPECT_EQ(withdrawn.strongest, core::Vec3::Zero()) << "an empty port feels nothing";
 
@@ -201,6 +213,77 @@ TEST(TwoHandedInput, a_left_device_on_loopback_drives_the_second_port_and_feels_
   replay.instrument = &recorded;
   const SessionReport again = run_headless(left_tube_patient(), replay);
   EXPECT_EQ(again.final_state_hash, report.final_state_hash);
+}
+
+TEST(TwoHandedInput, threaded_a_second_device_loop_answers_the_left_device_from_the_tube) {
+  const Isthmus i = isthmus();
+  InstrumentState camera;
+  camera.tip = i.point - 0.05 * i.into;
+  camera.axis = i.into;
+  orthonormalise(camera);
+  DeviceLimits limits;
+  limits.min_force = 0.0;  // the tube's millinewton, rendered
+  TwoHandedInput input(std::make_unique<StillLaparoscope>(camera), {"127.0.0.1", 0}, limits);
+  HeadlessRunOptions options;
+  options.duration = 0.6;
+  options.instrument_body = "tube-left";
+  options.end_when_complete = false;
+  const LiveInstrument live(input);
+  options.instrument = &live;
+  SessionRunner runner(left_tube_patient(), options);
+  input.start_realtime(runner);
+  ASSERT_NE(input.left().loop(), nullptr) << "the left device has a loop of its own";
+
+  // The probe in from 2 cm above the tube, 3 mm past its front after 0.2 s, then held there
+  // (a tool put in inside the tube would never have crossed its surface).
+  const core::Vec3 above = i.point - 0.02 * i.into, pressed = i.point + 0.003 * i.into;
+  const Eigen::Quaterniond q = Eigen::Quaterniond::FromTwoVectors(core::Vec3::UnitZ(), i.into);
+  std::atomic<bool> done{false};
+  std::atomic<double> strongest{0.0};
+  std::atomic<int> packets{0};
+  std::thread device([&] {
+    SimulatedDevice client(input.left_port());
+    DevicePose pose;
+    pose.orientation = {q.w(), q.x(), q.y(), q.z()};
+    const auto start = std::chrono::steady_clock::now();
+    for (std::uint32_t n = 1; !done.load(); ++n) {
+      const double t =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      pose.position = t < 0.2 ? above + (t / 0.2) * (pressed - above) : pressed;
+      pose.sequence = n;
+      client.send(pose);
+      for (auto feedback = client.receive(1); feedback; feedback = client.receive(0)) {
+        ++packets;
+        if (feedback->force.norm() > strongest.load()) strongest = feedback->force.norm();
+      }
+    }
+  });
+  // The physics thread's part, paced by the wall clock.
+  const auto began = std::chrono::steady_clock::now();
+  while (!runner.finished()) {
+    std::this_thread::sleep_until(began +
+                                  std::chrono::duration_cast<std::chrono::nanoseconds>(
+                                      std::chrono::duration<double>(runner.world().time())));
+    runner.step(input.next(runner.world().time_step()));
+    input.after_step(runner);
+  }
+  input.stop_realtime();
+  done = true;
+  device.join();
+
+  EXPECT_TRUE(runner.instrument_state().second.inserted);
+  EXPECT_EQ(runner.instrument_state().second.tip, pressed);
+  EXPECT_GT(packets.load(), 100) << "the loop answers at about 1 kHz";
+  EXPECT_GT(strongest.load(), 1e-4) << "the local proxy on the tube pushes back";
+  RealtimeStats stats;
+  stats.wall_time = 0.6;
+  input.add_stats(stats);
+  EXPECT_FALSE(stats.device) << "the right hand here is no device";
+  EXPECT_TRUE(stats.left_device);
+  EXPECT_GT(stats.left_device_poses, 50);
+  EXPECT_GE(stats.left_device_feedback, packets.load());
+  EXPECT_NEAR(stats.left_feedback_rate, static_cast<double>(stats.left_device_feedback) / 0.6,
+              1e-9);
 }
 
 TEST(TwoHandedInput, the_left_devices_abort_button_ends_the_session) {

@@ -3,6 +3,7 @@
 #include "core/error.h"
 #include "simulator/input/device_input.h"
 #include "simulator/input/gamepad_mapping.h"
+#include "simulator/input/two_handed_input.h"
 #ifdef VISCERA_HAVE_SDL2
 #include "simulator/input/sdl_gamepad.h"
 #endif
@@ -70,6 +71,19 @@ LiveInputs open_live_input(const sim::InputSpec& spec, const sim::InstrumentStat
       break;
   }
   return inputs;
+}
+
+void add_left_device(LiveInputs& inputs, const sim::InputSpec& left) {
+  auto two = std::make_unique<sim::TwoHandedInput>(std::move(inputs.live),
+                                                   sim::BridgeOptions{"127.0.0.1", left.port});
+  const std::string port = std::to_string(two->left_port());
+  inputs.status +=
+      "; the left hand's haptic device drives the second port: send pose packets to udp "
+      "127.0.0.1:" +
+      port;
+  inputs.bindings += "\nLeft hand: device on udp 127.0.0.1:" + port +
+                     " (second port; button bit 8 takes its tool out)";
+  inputs.live = std::move(two);
 }
 
 }  // namespace viscera::app

@@ -34,4 +34,9 @@ struct LiveInputs {
 LiveInputs open_live_input(const sim::InputSpec& spec, const sim::InstrumentState& start,
                            bool headless);
 
+/// Adds a haptic device on 127.0.0.1:`left.port` (a Udp spec) for the second instrument port
+/// (the left hand) to `inputs`, whose live input keeps the working port (TwoHandedInput); the
+/// status names its bound port. Throws core::Error when the port cannot be bound.
+void add_left_device(LiveInputs& inputs, const sim::InputSpec& left);
+
 }  // namespace viscera::app

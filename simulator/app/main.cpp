@@ -51,6 +51,7 @@ struct RunOptions {
   std::string reference;       ///< an expert's report.json to compare against
   std::string input;           ///< keyboard | gamepad | udp:PORT | trace:FILE | script:FILE
   std::string device;          ///< udp:PORT (the same as --input udp:PORT)
+  std::string left_device;     ///< udp:PORT: a haptic device on the second instrument port
   double render_scale = -1.0;  ///< lens pass scene resolution; negative: 0.5 in a window, else 1
 };
 
@@ -114,6 +115,37 @@ viscera::sim::InputSpec input_spec(RunOptions& options) {
   return spec;
 }
 
+/// The second port's device of a run (--left-device udp:PORT), or nullopt. It drives the left
+/// hand beside a live input of the working port: a device (--input/--device udp:PORT), or the
+/// keyboard or a gamepad in a window; anything else is a core::UsageError.
+std::optional<viscera::sim::InputSpec> left_device_spec(const RunOptions& options,
+                                                        const viscera::sim::InputSpec& right) {
+  using viscera::sim::InputKind;
+  if (options.left_device.empty()) return std::nullopt;
+  const auto fail = [](const std::string& why) -> std::optional<viscera::sim::InputSpec> {
+    throw viscera::core::UsageError(
+        "--left-device " + why +
+        " (accepted: --left-device udp:PORT with --input/--device udp:PORT, or in a window with "
+        "the keyboard or a gamepad)");
+  };
+  viscera::sim::InputSpec left;
+  try {
+    left = viscera::sim::parse_input_spec(options.left_device);
+  } catch (const viscera::core::UsageError&) {
+    return fail("\"" + options.left_device + "\" is not udp:PORT with a port from 0 to 65535");
+  }
+  if (left.kind != InputKind::Udp) return fail("\"" + options.left_device + "\" is not udp:PORT");
+  if (right.kind == InputKind::Script || right.kind == InputKind::Trace)
+    return fail("cannot join a script or a trace, which drives both ports itself");
+  if (options.headless && right.kind != InputKind::Udp)
+    return fail("in a --headless run needs a device on the working port as well");
+  if (!options.snapshot.empty()) return fail("cannot join --snapshot, which runs at full speed");
+  if (right.kind == InputKind::Udp && right.port != 0 && right.port == left.port)
+    return fail("and the working port's device both name udp port " + std::to_string(left.port) +
+                "; give each device its own port (or 0 for any free one)");
+  return left;
+}
+
 int run(RunOptions options) {
   using viscera::sim::InputKind;
   if (options.headless && !options.snapshot.empty()) {
@@ -121,11 +153,16 @@ int run(RunOptions options) {
         "--snapshot renders the endoscopic view, which a --headless session never opens");
   }
   const viscera::sim::InputSpec spec = input_spec(options);
+  const std::optional<viscera::sim::InputSpec> left = left_device_spec(options, spec);
   const bool live = spec.kind == InputKind::Keyboard || spec.kind == InputKind::Gamepad ||
                     spec.kind == InputKind::Udp;
   if (live && spec.kind != InputKind::Keyboard && !options.snapshot.empty())
     throw viscera::core::UsageError("--snapshot runs at full speed; a live input cannot");
   viscera::core::Scenario scenario = viscera::core::read_package(options.package);
+  if (left && scenario.session.instrument.kind != "laparoscope")
+    throw viscera::core::UsageError(
+        "--left-device drives the second instrument port, which only a "
+        "laparoscopy session (a \"laparoscope\" instrument) has");
   // A recorded trace replayed as the input brings its own instrument settings.
   std::optional<viscera::sim::SessionTrace> recorded;
   if (spec.kind == InputKind::Trace) recorded = viscera::sim::read_trace(spec.file);
@@ -173,6 +210,7 @@ int run(RunOptions options) {
   const viscera::sim::InstrumentState start = viscera::sim::starting_pose(scenario, optics_angle);
   if (options.headless && spec.kind == InputKind::Udp) {
     viscera::app::LiveInputs inputs = viscera::app::open_live_input(spec, start, true);
+    if (left) viscera::app::add_left_device(inputs, *left);
     std::cerr << inputs.status << "\n";
     report = viscera::sim::run_live(scenario, run, *inputs.live);
   } else if (options.headless) {
@@ -196,6 +234,7 @@ int run(RunOptions options) {
     // The trainee drives the instrument (keyboard and mouse, a gamepad or a haptic device),
     // starting where the scenario's first landmark can be seen.
     viscera::app::LiveInputs inputs = viscera::app::open_live_input(spec, start, false);
+    if (left) viscera::app::add_left_device(inputs, *left);
     std::cerr << inputs.status << "\n";
     auto view = make_view(scenario, run.package, options, false, inputs.bindings);
     report =
@@ -295,6 +334,10 @@ int main(int argc, char** argv) {
       "trace:FILE (a recorded session) or script:FILE");
   run_command->add_option("--device", options.device,
                           "udp:PORT: a haptic device drives the instrument (as --input udp:PORT)");
+  run_command->add_option(
+      "--left-device", options.left_device,
+      "udp:PORT: a haptic device drives the laparoscopy session's second instrument port (the "
+      "left hand) beside --input/--device udp:PORT or, in a window, the keyboard or a gamepad");
   run_command->add_option("--record", options.record, "Write the session's trace here for replay");
   run_command->add_option("--report", options.report_dir, "Folder for report.json");
   run_command->add_flag("--json", options.json, "Print the report as JSON");

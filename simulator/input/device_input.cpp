@@ -30,94 +30,84 @@ InstrumentState instrument_from_pose(const DevicePose& pose) {
   return state;
 }
 
+SecondPort second_port_from_pose(const DevicePose& pose, const SecondPort& before) {
+  if ((pose.buttons & kDeviceWithdrawn) != 0U) return SecondPort{};
+  const InstrumentState state = instrument_from_pose(pose);
+  SecondPort port;
+  port.inserted = true;
+  port.tip = state.tip;
+  port.axis = state.axis;
+  port.up = state.up;
+  port.tool = state.tool;
+  if (((pose.buttons & kDeviceToolMask) >> kDeviceToolShift) == kDeviceToolUnchanged)
+    port.tool = before.tool;
+  port.jaws_closed = state.jaws_closed;
+  port.coagulation = state.coagulation;
+  port.electrode = state.electrode;
+  port.irrigating = state.irrigating;
+  return port;
+}
+
 DeviceInput::DeviceInput(const BridgeOptions& options, const InstrumentState& start,
                          const DeviceLimits& limits, const DeviceLoopOptions& loop)
-    : bridge_(options),
-      address_(options.bind_address),
-      limits_(limits),
-      loop_options_(loop),
-      state_(start) {
-  loop_options_.limits = limits;
-}
+    : link_(options, limits, loop), state_(start) {}
 
 DeviceInput::~DeviceInput() {
   stop_realtime();
 }
 
 InstrumentState DeviceInput::next(double) {
-  if (loop_ != nullptr) {
-    DevicePose pose;
-    if (loop_->newest_pose(pose)) state_ = instrument_from_pose(pose);
-  } else if (const auto pose = bridge_.poll(0)) {
+  if (const auto pose = link_.take_pose()) {
+    const LaparoscopicTool before = state_.tool;
     state_ = instrument_from_pose(*pose);
+    if (((pose->buttons & kDeviceToolMask) >> kDeviceToolShift) == kDeviceToolUnchanged)
+      state_.tool = before;
   }
   return state_;
 }
 
+namespace {
+
+/// The step the working port's device feels: the instrument's force and the tissue's body.
+DeviceStep working_port_step(const SessionRunner& runner, const InstrumentState& state) {
+  DeviceStep step;
+  step.steps = runner.world().steps();
+  step.time = runner.world().time();
+  step.force = runner.instrument_force();
+  step.axis = state.axis;
+  step.in_contact = runner.tissue() != nullptr && runner.tissue()->in_contact();
+  const BodyView* body = runner.tissue() != nullptr ? runner.tissue()->body() : nullptr;
+  if (body != nullptr) step.positions = body->positions();
+  return step;
+}
+
+}  // namespace
+
 void DeviceInput::after_step(const SessionRunner& runner) {
-  if (loop_ != nullptr) {
-    TissueSnapshot& tissue = loop_->tissue_slot();
-    tissue.steps = runner.world().steps();
-    tissue.force = runner.instrument_force();
-    tissue.in_contact = runner.tissue() != nullptr && runner.tissue()->in_contact();
-    const BodyView* body = runner.tissue() != nullptr ? runner.tissue()->body() : nullptr;
-    if (body != nullptr && !surface_.empty())
-      surface_.gather(body->positions(), tissue.surface);
-    else
-      tissue.surface.clear();
-    loop_->publish_tissue();
-    return;
-  }
-  const ClampedFeedback clamped =
-      clamp_to_device(runner.instrument_force(), core::Vec3::Zero(), state_.axis, limits_);
-  DeviceFeedback feedback;
-  feedback.sequence = ++sequence_;
-  feedback.time_ns = static_cast<std::uint64_t>(runner.world().time() * 1e9);
-  feedback.force = clamped.force;
-  feedback.torque = clamped.torque;
-  feedback.flags =
-      (clamped.force_limited ? kForceLimited : 0U) | (clamped.torque_limited ? kTorqueLimited : 0U);
-  if (bridge_.send_feedback(feedback)) ++sent_;
+  link_.feed_back(working_port_step(runner, state_));
 }
 
 void DeviceInput::start_realtime(const SessionRunner& runner) {
-  if (loop_ != nullptr) return;
+  if (link_.loop() != nullptr) return;
   const BodyView* body = runner.tissue() != nullptr ? runner.tissue()->body() : nullptr;
-  surface_ = body != nullptr ? ContactSurface(body->surface_faces()) : ContactSurface();
-  loop_ = std::make_unique<HapticDeviceLoop>(bridge_, surface_, runner.instrument_stiffness(),
-                                             loop_options_);
-  // The loop's model starts from the state before the first step.
-  after_step(runner);
-  loop_->start();
+  link_.start_realtime(body != nullptr ? ContactSurface(body->surface_faces()) : ContactSurface(),
+                       runner.instrument_stiffness(), working_port_step(runner, state_));
 }
 
 void DeviceInput::stop_realtime() {
-  if (loop_ == nullptr) return;
-  loop_->stop();
-  loop_sent_ += static_cast<std::uint64_t>(loop_->counters().feedback.load());
-  real_time_ = real_time_ || loop_->counters().real_time_priority.load();
-  loop_.reset();
-}
-
-std::uint64_t DeviceInput::feedback_sent() const {
-  const std::uint64_t running =
-      loop_ != nullptr ? static_cast<std::uint64_t>(loop_->counters().feedback.load()) : 0;
-  return sent_ + loop_sent_ + running;
+  link_.stop_realtime();
 }
 
 void DeviceInput::add_stats(RealtimeStats& stats) const {
   // Called once the session's threads have stopped, so the bridge's counters are settled.
   stats.device = true;
-  stats.device_poses = static_cast<long long>(bridge_.counters().accepted);
-  stats.device_feedback = static_cast<long long>(feedback_sent());
-  stats.device_real_time = real_time_;
+  stats.device_poses = static_cast<long long>(link_.counters().accepted);
+  stats.device_feedback = static_cast<long long>(link_.feedback_sent());
+  stats.device_real_time = link_.real_time();
 }
 
 std::string DeviceInput::describe() const {
-  const BridgeCounters& c = bridge_.counters();
-  return "haptic device on udp " + address_ + ":" + std::to_string(port()) + " (" +
-         std::to_string(c.accepted) + " poses, " + std::to_string(feedback_sent()) +
-         " forces sent" + (c.accepted == 0 ? ", waiting for the device" : "") + ")";
+  return "haptic device on " + link_.describe();
 }
 
 }  // namespace viscera::sim

@@ -6,14 +6,12 @@
 /// rest frame (shaft along +z, optics' up along +y) into the scene.
 
 #include <cstdint>
-#include <memory>
 #include <string>
 
 #include "simulator/haptics/device_limits.h"
 #include "simulator/haptics/device_packets.h"
-#include "simulator/haptics/udp_device_bridge.h"
+#include "simulator/input/device_link.h"
 #include "simulator/input/live_input.h"
-#include "simulator/runtime/haptic_device_loop.h"
 
 namespace viscera::sim {
 
@@ -26,18 +24,34 @@ inline constexpr std::uint32_t kDeviceCoagulationPedal = 4U;
 inline constexpr std::uint32_t kDeviceJawsClosed = 8U;
 /// Bits 4–6 of DevicePose::buttons: the laparoscopic tool in the working port, as the index of
 /// LaparoscopicTool (0 none, 1 grasper, 2 clip applier, 3 scissors, 4 bipolar, 5 suction, 6 hook;
-/// 7 leaves the tool as it was).
+/// 7 leaves the tool as it was). A second port's device (TwoHandedInput) names its tool the same
+/// way.
 inline constexpr int kDeviceToolShift = 4;
 inline constexpr std::uint32_t kDeviceToolMask = 7U << kDeviceToolShift;
+/// The tool bits that leave the tool as it was.
+inline constexpr std::uint32_t kDeviceToolUnchanged = 7U;
 /// Bit 7 of DevicePose::buttons: set while the suction–irrigation cannula's irrigation valve is
 /// open (its suction valve is kDeviceJawsClosed).
 inline constexpr std::uint32_t kDeviceIrrigating = 1U << 7;
+/// Bit 8 of DevicePose::buttons, for a second port's device only: set while the left hand's tool
+/// is out of the port. A pose without it puts the tool (bits 4–6) into the port at the pose, or
+/// keeps it there; a pose with it takes the tool out (the rest of that pose is ignored). The
+/// port stays as the last pose left it when the device falls silent. The working port's device
+/// ignores the bit (its instrument is always in).
+inline constexpr std::uint32_t kDeviceWithdrawn = 1U << 8;
 
 /// The instrument state a pose describes: tip = position, axis = q·ẑ, up = q·ŷ (q normalised;
 /// a zero quaternion counts as the identity), valves from the pose, abort, the pedals, the
 /// laparoscopic tool, its jaws and the irrigation valve from the buttons. The loop stands at the
-/// sheath (the device moves the whole instrument).
+/// sheath (the device moves the whole instrument). Tool bits 7 give LaparoscopicTool::None here;
+/// the inputs keep their previous tool for them.
 InstrumentState instrument_from_pose(const DevicePose& pose);
+
+/// The second port a pose of the left hand's device describes, from the port as it was
+/// (`before`): with kDeviceWithdrawn an empty port; else the tool in, its tip, axis and up as
+/// instrument_from_pose's, its jaws, pedals and irrigation valve from the same bits, its tool
+/// from bits 4–6 (7: `before`'s tool).
+SecondPort second_port_from_pose(const DevicePose& pose, const SecondPort& before);
 
 /// The instrument driven by a device on the loopback interface. Alone (a headless live run)
 /// it reads poses before and sends the step's force after every physics step, on the caller's
@@ -52,7 +66,7 @@ class DeviceInput final : public LiveInput {
               const DeviceLimits& limits = {}, const DeviceLoopOptions& loop = {});
   ~DeviceInput() override;
 
-  std::uint16_t port() const { return bridge_.port(); }
+  std::uint16_t port() const { return link_.port(); }
   /// The newest pose's state (every pending pose is read; non-blocking).
   InstrumentState next(double dt) override;
   const InstrumentState& current() const override { return state_; }
@@ -66,24 +80,15 @@ class DeviceInput final : public LiveInput {
   void add_stats(RealtimeStats& stats) const override;
 
   /// The bridge's counters (alone; while threaded they belong to the loop's thread).
-  const BridgeCounters& counters() const { return bridge_.counters(); }
+  const BridgeCounters& counters() const { return link_.counters(); }
   /// Feedback packets sent, alone and threaded.
-  std::uint64_t feedback_sent() const;
+  std::uint64_t feedback_sent() const { return link_.feedback_sent(); }
   /// The device loop while threaded, else null.
-  const HapticDeviceLoop* loop() const { return loop_.get(); }
+  const HapticDeviceLoop* loop() const { return link_.loop(); }
 
  private:
-  UdpDeviceBridge bridge_;
-  std::string address_;
-  DeviceLimits limits_;
-  DeviceLoopOptions loop_options_;
+  DeviceLink link_;
   InstrumentState state_;
-  std::uint32_t sequence_ = 0;
-  std::uint64_t sent_ = 0;
-  ContactSurface surface_;  ///< of the tissue's body, while threaded
-  std::unique_ptr<HapticDeviceLoop> loop_;
-  std::uint64_t loop_sent_ = 0;  ///< feedback sent by loops that have stopped
-  bool real_time_ = false;       ///< a loop ran at a real-time priority
 };
 
 }  // namespace viscera::sim

@@ -238,12 +238,19 @@ nlohmann::json realtime_json(const SessionReport& r) {
                         {"view_fps", s.view_fps},
                         {"render_scale", s.render_scale},
                         {"lowest_render_scale", s.lowest_render_scale},
-                        {"device", nullptr}};
+                        {"device", nullptr},
+                        {"left_device", nullptr}};
   if (s.device) {
     out["device"] = {{"poses", s.device_poses},
                      {"feedback", s.device_feedback},
                      {"feedback_rate", s.feedback_rate},
                      {"real_time_priority", s.device_real_time}};
+  }
+  if (s.left_device) {
+    out["left_device"] = {{"poses", s.left_device_poses},
+                          {"feedback", s.left_device_feedback},
+                          {"feedback_rate", s.left_feedback_rate},
+                          {"real_time_priority", s.left_device_real_time}};
   }
   return out;
 }

@@ -95,6 +95,12 @@ struct RealtimeStats {
   long long device_feedback = 0;     ///< feedback packets sent to it
   double feedback_rate = 0.0;        ///< feedback packets per wall-clock second
   bool device_real_time = false;     ///< the device thread ran at a real-time priority
+  /// The same for the second port's device (the left hand, `--left-device`).
+  bool left_device = false;
+  long long left_device_poses = 0;
+  long long left_device_feedback = 0;
+  double left_feedback_rate = 0.0;  ///< feedback packets per wall-clock second
+  bool left_device_real_time = false;
 };
 
 /// What one pathology lost to the resection loop (issue 17 §5).

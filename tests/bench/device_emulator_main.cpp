@@ -5,6 +5,10 @@
 //   viscera_device_emulator --port 5005 --package h.vscene --seconds 10
 // With --package the tool starts at the scenario's starting pose and moves 3 mm along its shaft
 // and back once a second; without, it holds still at the origin.
+// With --hand left it is the second instrument port's device (viscera-sim run … --left-device
+// udp:PORT): it starts where the keyboard's left hand puts its tool in (second_port_entry).
+// --buttons sets every pose's button bits (device_input.h: pedals, jaws, tool bits 4–6,
+// bit 8 = the left tool out of its port).
 
 #include <CLI/CLI.hpp>
 #include <cmath>
@@ -22,6 +26,8 @@ int main(int argc, char** argv) {
   int port = 0;
   double seconds = 10.0, rate = 1000.0, stroke = 0.003;
   std::string package;
+  std::string hand = "right";
+  std::uint32_t buttons = 0;
   app.add_option("--port", port, "UDP port viscera-sim listens on")
       ->required()
       ->check(CLI::Range(1, 65535));
@@ -29,6 +35,9 @@ int main(int argc, char** argv) {
   app.add_option("--rate", rate, "Poses per second")->check(CLI::Range(1.0, 20000.0));
   app.add_option("--package", package, "Start at this scenario's starting pose");
   app.add_option("--stroke", stroke, "m the tool moves along its shaft and back each second");
+  app.add_option("--hand", hand, "right: the working port's device; left: the second port's")
+      ->check(CLI::IsMember({"right", "left"}));
+  app.add_option("--buttons", buttons, "Button bits of every pose (device_input.h)");
   CLI11_PARSE(app, argc, argv);
   try {
     viscera::sim::InstrumentState start;
@@ -36,12 +45,18 @@ int main(int argc, char** argv) {
       const viscera::core::Scenario scenario = viscera::core::read_package(package);
       start = viscera::sim::starting_pose(scenario, scenario.session.instrument.optics_angle);
     }
+    if (hand == "left") {
+      start.second = viscera::sim::second_port_entry(start);
+      start = viscera::sim::in_port(start, 1);
+    }
     const auto report = viscera::testing::emulate_device(
         static_cast<std::uint16_t>(port), seconds,
         [&](double t) {
           viscera::sim::InstrumentState pose = start;
           pose.tip += 0.5 * stroke * (1.0 - std::cos(2.0 * std::numbers::pi * t)) * start.axis;
-          return viscera::testing::pose_of(pose);
+          viscera::sim::DevicePose sent = viscera::testing::pose_of(pose);
+          sent.buttons = buttons;
+          return sent;
         },
         rate);
     const nlohmann::json out = {

@@ -183,16 +183,29 @@ void EndoscopeLensPass::Render(const vtkRenderState* state) {
   vtkOpenGLState::ScopedglEnableDisable depth_test(gl, GL_DEPTH_TEST);
   gl->vtkglDisable(GL_BLEND);
   gl->vtkglDisable(GL_DEPTH_TEST);
-  gl->vtkglViewport(origin[0], origin[1], width, height);
-  gl->vtkglScissor(origin[0], origin[1], width, height);
   vtkOpenGLState::ScopedglEnableDisable scissor_test(gl, GL_SCISSOR_TEST);
   gl->vtkglEnable(GL_SCISSOR_TEST);
-  if (square) {
+  // The composite at no more than twice the scene's resolution (a coarser scene has no finer
+  // detail to resample), drawn into a texture and stretched onto the view by a linear blit; at
+  // full size straight into the view.
+  const double composite_scale = std::min(1.0, 2.0 * scale);
+  const int out_width = composite_scale < 1.0
+                            ? std::max(1, static_cast<int>(std::lround(width * composite_scale)))
+                            : width;
+  const int out_height = composite_scale < 1.0
+                             ? std::max(1, static_cast<int>(std::lround(height * composite_scale)))
+                             : height;
+  const bool reduced = out_width < width || out_height < height;
+  const int out_x = reduced ? 0 : origin[0], out_y = reduced ? 0 : origin[1];
+  if (reduced) bind_composite(window, out_width, out_height);
+  gl->vtkglViewport(out_x, out_y, out_width, out_height);
+  gl->vtkglScissor(out_x, out_y, out_width, out_height);
+  if (square || reduced) {
     // Black outside the field's square (a clear costs little), the shader only inside it.
     gl->vtkglClearColor(0.0, 0.0, 0.0, 1.0);
     gl->vtkglClear(GL_COLOR_BUFFER_BIT);
-    gl->vtkglScissor(origin[0] + (width - height) / 2, origin[1], height, height);
   }
+  if (square) gl->vtkglScissor(out_x + (out_width - out_height) / 2, out_y, out_height, out_height);
 
   colour_->Activate();
   // The depth-of-field blur reads coarser levels: rebuild them from this frame (on the GPU).
@@ -211,7 +224,7 @@ void EndoscopeLensPass::Render(const vtkRenderState* state) {
   program->SetUniformf("blurPerDioptre", static_cast<float>(blur_per_dioptre));
   program->SetUniformf("maxBlur", static_cast<float>(max_blur));
   program->SetUniformf("texelsPerPixel",
-                       static_cast<float>(scene_width) / static_cast<float>(width));
+                       static_cast<float>(scene_height) / static_cast<float>(out_height));
   program->SetUniformi("fieldStop", field_stop ? 1 : 0);
   program->SetUniformf("hazeDensity", static_cast<float>(std::max(0.0, haze_density)));
   program->SetUniformf("lensFog", static_cast<float>(std::clamp(lens_fog, 0.0, 1.0)));
@@ -219,9 +232,49 @@ void EndoscopeLensPass::Render(const vtkRenderState* state) {
                          static_cast<float>(haze_colour[2])};
   program->SetUniform3f("hazeColour", haze);
   quad_->Render();
-  gl->vtkglScissor(origin[0], origin[1], width, height);
   depth_->Deactivate();
   colour_->Deactivate();
+  gl->vtkglViewport(origin[0], origin[1], width, height);
+  gl->vtkglScissor(origin[0], origin[1], width, height);
+  if (reduced) {
+    gl->PopFramebufferBindings();  // the view's framebuffer again, drawn into by the blit
+    // With the field stop only the field's square is stretched; the rest is cleared black.
+    int from[4] = {0, 0, out_width, out_height};
+    int to[4] = {origin[0], origin[1], origin[0] + width, origin[1] + height};
+    if (square) {
+      gl->vtkglClearColor(0.0, 0.0, 0.0, 1.0);
+      gl->vtkglClear(GL_COLOR_BUFFER_BIT);
+      from[0] = (out_width - out_height) / 2;
+      from[2] = from[0] + out_height;
+      to[0] = origin[0] + (width - height) / 2;
+      to[2] = to[0] + height;
+    }
+    gl->PushReadFramebufferBinding();
+    composite_framebuffer_->Bind(GL_READ_FRAMEBUFFER);
+    gl->vtkglBlitFramebuffer(from[0], from[1], from[2], from[3], to[0], to[1], to[2], to[3],
+                             GL_COLOR_BUFFER_BIT, GL_LINEAR);
+    gl->PopReadFramebufferBinding();
+  }
+}
+
+void EndoscopeLensPass::bind_composite(vtkOpenGLRenderWindow* window, int width, int height) {
+  if (!composite_) {
+    composite_ = vtkSmartPointer<vtkTextureObject>::New();
+    composite_->SetContext(window);
+    composite_framebuffer_ = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+    composite_framebuffer_->SetContext(window);
+  }
+  if (composite_->GetWidth() != static_cast<unsigned>(width) ||
+      composite_->GetHeight() != static_cast<unsigned>(height)) {
+    composite_->Create2D(static_cast<unsigned>(width), static_cast<unsigned>(height), 4,
+                         VTK_UNSIGNED_CHAR, false);
+    composite_->SetMinificationFilter(vtkTextureObject::Linear);
+    composite_->SetMagnificationFilter(vtkTextureObject::Linear);
+  }
+  window->GetState()->PushFramebufferBindings();
+  composite_framebuffer_->Bind();
+  composite_framebuffer_->AddColorAttachment(0, composite_);
+  composite_framebuffer_->ActivateDrawBuffer(0);
 }
 
 void EndoscopeLensPass::ReleaseGraphicsResources(vtkWindow* window) {
@@ -230,6 +283,8 @@ void EndoscopeLensPass::ReleaseGraphicsResources(vtkWindow* window) {
   if (framebuffer_) framebuffer_->ReleaseGraphicsResources(window);
   if (colour_) colour_->ReleaseGraphicsResources(window);
   if (depth_) depth_->ReleaseGraphicsResources(window);
+  if (composite_framebuffer_) composite_framebuffer_->ReleaseGraphicsResources(window);
+  if (composite_) composite_->ReleaseGraphicsResources(window);
 }
 
 }  // namespace viscera::view

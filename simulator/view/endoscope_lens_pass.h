@@ -20,6 +20,7 @@
 
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLQuadHelper;
+class vtkOpenGLRenderWindow;
 class vtkTextureObject;
 
 namespace viscera::view {
@@ -42,7 +43,9 @@ class EndoscopeLensPass : public vtkDepthImageProcessingPass {
   bool field_stop = true;
   /// Fraction of the output size at which the scene is rendered (0.25 … 1): the lens pass
   /// resamples it anyway (distortion, blur), so 0.5 costs a quarter of the rasterisation for a
-  /// slightly softer image. Blur radii stay in output pixels.
+  /// slightly softer image. Blur radii stay in output pixels. Below 0.5 the composite itself is
+  /// drawn at twice the scene's resolution and stretched onto the view (a linear blit): a
+  /// software renderer's full-size composite costs as much as the scene.
   double render_scale = 1.0;
   /// Blood clouding the distension fluid (issue 18 §5): a pixel at eye depth z (m) keeps
   /// exp(−haze_density·z) of its colour and takes the rest from haze_colour — Beer–Lambert
@@ -66,9 +69,15 @@ class EndoscopeLensPass : public vtkDepthImageProcessingPass {
   ~EndoscopeLensPass() override;
 
  private:
+  /// Binds (pushing the bindings) a framebuffer over a `width` × `height` colour texture.
+  void bind_composite(vtkOpenGLRenderWindow* window, int width, int height);
+
   vtkSmartPointer<vtkOpenGLFramebufferObject> framebuffer_;
   vtkSmartPointer<vtkTextureObject> colour_;
   vtkSmartPointer<vtkTextureObject> depth_;
+  /// The reduced composite (render_scale < 0.5), blitted onto the view.
+  vtkSmartPointer<vtkOpenGLFramebufferObject> composite_framebuffer_;
+  vtkSmartPointer<vtkTextureObject> composite_;
   std::unique_ptr<vtkOpenGLQuadHelper> quad_;
 };
 

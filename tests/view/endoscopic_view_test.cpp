@@ -154,6 +154,20 @@ TEST(EndoscopicView, half_resolution_scene_under_the_lens_keeps_the_picture) {
   EXPECT_LT(difference, 6.0);
   // Rendering the same pose twice gives the same bytes (no state carried between frames).
   EXPECT_EQ(testing::mean_abs_difference(soft, half.capture()), 0.0);
+  // A quarter-resolution scene is composited at half resolution and stretched onto the view:
+  // the same picture again, softer, at the view's size, black outside the field.
+  half.set_render_scale(0.25);
+  const auto quarter = half.capture();
+  quarter->GetDimensions(dims);
+  EXPECT_EQ(dims[0], 640);
+  EXPECT_EQ(dims[1], 360);
+  const FrameStatistics c = frame_statistics(quarter, 0.9);
+  EXPECT_GT(c.lit_fraction, 0.8);
+  EXPECT_NEAR(c.mean_luminance, a.mean_luminance, 0.08 * a.mean_luminance);
+  EXPECT_LT(testing::corner_luminance(quarter), 1.0);
+  const double coarser = testing::mean_abs_difference(sharp, quarter, 0.9);
+  EXPECT_GT(coarser, difference);
+  EXPECT_LT(coarser, 9.0);
 }
 
 /// The view's input at the patient's starting pose, through its angled optics.

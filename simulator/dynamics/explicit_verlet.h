@@ -55,6 +55,11 @@ class ExplicitVerlet : public Integrator {
                       const StepContext& context) override;
   /// Recomputes the stable step (also done on the first step).
   void topology_changed(const SimulationState& state, std::span<ForceTerm* const> terms) override;
+  /// The same after body `body`'s mesh changed: the islands without it whose bodies kept their
+  /// node counts keep their stable sub-steps, sleep and impulses (their nodes shifted with the
+  /// bodies before them); the rest is re-planned as topology_changed plans it.
+  void body_topology_changed(const SimulationState& state, std::span<ForceTerm* const> terms,
+                             int body) override;
   /// A term's coefficients changed in place on body `body` (a grasp, coagulated tissue
   /// stiffening) with the nodes and islands as they were: re-plans that body's island alone —
   /// its stable sub-steps are the bits a whole topology_changed gives it, the others' plans
@@ -104,6 +109,14 @@ class ExplicitVerlet : public Integrator {
     std::vector<int> strides;
   };
   Plan plan(const std::vector<int>& need) const;
+  /// topology_changed (`changed_body` −1) or body_topology_changed.
+  void replan(const SimulationState& state, std::span<ForceTerm* const> terms, int changed_body);
+  /// Per island now, the island it was before a change of `changed_body`'s mesh when it is
+  /// the same bodies with the same node counts (islands_ and island_of_body_ already the new
+  /// ones), else −1.
+  std::vector<int> islands_kept(std::span<const BodyNodes> bodies,
+                                std::span<const int> island_of_body_before,
+                                std::span<const Island> before, int changed_body) const;
   /// Stable sub-steps of the islands `island_of_group` (group g of group_of_node is island
   /// island_of_group[g]) from the assembled matrices; `stiffness` takes the within-reach worst
   /// cases on top. Then the smallest over every island.
@@ -127,6 +140,7 @@ class ExplicitVerlet : public Integrator {
   bool ready_ = false;
   std::vector<Island> islands_;
   std::vector<int> island_of_body_;
+  std::vector<int> planned_layout_;  ///< per body, its node count at the last plan
   bool every_node_in_an_island_ = true;  ///< else the uniform step (no node left unstepped)
   double sleep_threshold_ = 0.0;
   std::vector<Vec3> forces_, shared_impulse_;

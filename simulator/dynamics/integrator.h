@@ -29,6 +29,12 @@ class Integrator {
                               const StepContext& context) = 0;
   /// The node ranges or the terms changed: rebuild the solver structure.
   virtual void topology_changed(const SimulationState&, std::span<ForceTerm* const>) {}
+  /// Body `body`'s mesh changed (a cut, a crack) and nothing else: an integrator may keep what
+  /// it built for the rest; by default it rebuilds everything.
+  virtual void body_topology_changed(const SimulationState& state,
+                                     std::span<ForceTerm* const> terms, int /*body*/) {
+    topology_changed(state, terms);
+  }
 };
 
 }  // namespace viscera::sim

@@ -179,7 +179,7 @@ void World::topology_changed(int body, const BodyTopology& topology) {
   }
   for (const auto& term : terms_)
     term->topology_changed(state_, body);
-  integrator_->topology_changed(state_, term_pointers());
+  integrator_->body_topology_changed(state_, term_pointers(), body);
   integrator_stale_ = false;
   refresh_views();
 }

@@ -425,4 +425,52 @@ TEST(MultirateVerlet, a_stiffness_change_replans_its_island_alone_as_a_whole_rep
   EXPECT_EQ(integrator.islands_asleep(), 2);  // waking is the world's call (wake_body)
 }
 
+TEST(MultirateVerlet, a_mesh_change_of_one_body_replans_its_island_and_keeps_the_others) {
+  // Body 0, the ringing light pair, gains a node (a crack duplicated a knot), which shifts the
+  // sleeping heavy pair's nodes by one: body_topology_changed re-plans the light pair's island
+  // as a whole re-plan would and keeps the heavy pair's plan and sleep; topology_changed would
+  // have woken it.
+  SimulationState both;
+  std::vector<std::unique_ptr<ForceTerm>> terms;
+  add_pair(both, kLightMass, kStiff, Vec3(0.0, 0.05, 0.0), terms);
+  add_pair(both, kHeavyMass, kSoft, Vec3::Zero(), terms);
+  both.velocities[0] = Vec3(0.0, 0.0, 0.01);
+  ExplicitVerlet integrator;
+  integrator.set_sleep_threshold(1e-9);
+  integrator.topology_changed(both, pointers(terms));
+  const std::vector<double> before = integrator.island_stable_steps();
+  for (int step = 1; step <= ExplicitVerlet::kCalmStepsToSleep; ++step)
+    integrator.step(both, pointers(terms), StepContext{1e-3 * step, 1e-3, step});
+  ASSERT_EQ(integrator.islands_asleep(), 1);
+
+  SimulationState grown;
+  std::vector<std::unique_ptr<ForceTerm>> grown_terms;
+  const auto light = both.range(both.positions, 0);
+  const std::vector<Vec3> three = {light[0], light[1], light[1] + Vec3(0.01, 0.0, 0.0)};
+  const std::vector<double> light_masses(3, kLightMass), heavy_masses(2, kHeavyMass);
+  const std::vector<std::uint8_t> free_three(3, 0), free_two(2, 0);
+  const int body = grown.add_body("pair", three, light_masses, free_three);
+  grown_terms.push_back(std::make_unique<OffsetSprings>(
+      body, std::vector<std::array<int, 2>>{{0, 1}, {1, 2}}, kStiff, grown));
+  const auto heavy = both.range(both.positions, 1);
+  const std::vector<Vec3> two = {heavy[0], heavy[1]};
+  const int second = grown.add_body("pair", two, heavy_masses, free_two);
+  grown_terms.push_back(std::make_unique<OffsetSprings>(
+      second, std::vector<std::array<int, 2>>{{3, 4}}, kSoft, grown));
+  ExplicitVerlet woken = integrator;
+  integrator.body_topology_changed(grown, pointers(grown_terms), 0);
+  ExplicitVerlet whole;
+  whole.topology_changed(grown, pointers(grown_terms));
+  EXPECT_EQ(integrator.island_stable_steps(), whole.island_stable_steps());
+  EXPECT_EQ(integrator.stable_step(), whole.stable_step());
+  EXPECT_EQ(integrator.island_stable_steps()[1], before[1]);
+  EXPECT_EQ(integrator.islands_asleep(), 1);  // the heavy pair sleeps on at its new indices
+  const std::vector<Vec3> resting(grown.positions.begin() + 3, grown.positions.end());
+  integrator.step(grown, pointers(grown_terms), StepContext{0.201, 1e-3, 201});
+  EXPECT_EQ(grown.positions[3], resting[0]);
+  EXPECT_EQ(grown.positions[4], resting[1]);
+  woken.topology_changed(grown, pointers(grown_terms));
+  EXPECT_EQ(woken.islands_asleep(), 0);
+}
+
 }  // namespace viscera::sim

@@ -140,7 +140,7 @@ class ExplicitVerlet : public Integrator {
   bool ready_ = false;
   std::vector<Island> islands_;
   std::vector<int> island_of_body_;
-  std::vector<int> planned_layout_;  ///< per body, its node count at the last plan
+  std::vector<int> planned_layout_;      ///< per body, its node count at the last plan
   bool every_node_in_an_island_ = true;  ///< else the uniform step (no node left unstepped)
   double sleep_threshold_ = 0.0;
   std::vector<Vec3> forces_, shared_impulse_;

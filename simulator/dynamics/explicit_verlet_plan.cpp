@@ -1,11 +1,10 @@
-#include "simulator/dynamics/explicit_verlet.h"
-
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
 #include <map>
 
+#include "simulator/dynamics/explicit_verlet.h"
 #include "simulator/physics/stable_step.h"
 
 // The plan of an explicit step: the islands, their stable sub-steps from the largest
@@ -296,8 +295,8 @@ std::vector<int> ExplicitVerlet::islands_kept(std::span<const BodyNodes> bodies,
     const int old = island_of_body_before[static_cast<std::size_t>(members.front())];
     if (old < 0 || bodies_then[static_cast<std::size_t>(old)] != members) continue;
     const bool unchanged = std::all_of(members.begin(), members.end(), [&](int b) {
-      return b != changed_body &&
-             planned_layout_[static_cast<std::size_t>(b)] == bodies[static_cast<std::size_t>(b)].count;
+      return b != changed_body && planned_layout_[static_cast<std::size_t>(b)] ==
+                                      bodies[static_cast<std::size_t>(b)].count;
     });
     if (unchanged && before[static_cast<std::size_t>(old)].nodes.size() == islands_[g].nodes.size())
       kept[g] = old;

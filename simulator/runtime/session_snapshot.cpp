@@ -119,9 +119,9 @@ void capture_snapshot(const SessionRunner& runner, SessionSnapshot& out) {
     for (std::size_t i = 0; i < debris.size(); ++i)
       out.debris_size[i] = static_cast<float>(std::min(1.0, debris.radii()[i] / largest));
     const double depth = flow->settings().view_depth;
-    const double transmission = flow->view_transmission(
-        camera_pose(out.instrument).tip,
-        view_direction(camera_pose(out.instrument), out.optics_angle));
+    const double transmission =
+        flow->view_transmission(camera_pose(out.instrument).tip,
+                                view_direction(camera_pose(out.instrument), out.optics_angle));
     if (depth > 0.0 && transmission > 0.0) out.haze_density = -std::log(transmission) / depth;
   }
 }

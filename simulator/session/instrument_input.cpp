@@ -310,7 +310,8 @@ ScriptedTrajectory ScriptedTrajectory::from_json(const nlohmann::json& json,
   const auto first_held = std::find_if(script.states_.begin(), script.states_.end(),
                                        [](const InstrumentState& s) { return s.camera.held; });
   if (first_held != script.states_.end())
-    for (auto it = script.states_.begin(); it != first_held; ++it) it->camera = first_held->camera;
+    for (auto it = script.states_.begin(); it != first_held; ++it)
+      it->camera = first_held->camera;
   return script;
 }
 

@@ -49,7 +49,7 @@ enum class ManualCommand {
   /// the first time, it is taken up where the working port's optics are, so the view stays.
   /// The tools' switches still act on the hand last moved; SwitchHand goes back to the tools.
   TakeCamera,
-  Abort                ///< the trainee ends the session
+  Abort  ///< the trainee ends the session
 };
 
 /// Motion rates of the manual controls.

@@ -305,9 +305,8 @@ void SessionRunner::flow_cavity(double dt) {
                     world_.state());
   }
   CavityFlowSummary& summary = *report_.cavity_flow;
-  const double transmission =
-      cavity_->view_transmission(camera_pose(state_).tip,
-                                   view_direction(camera_pose(state_), instrument_.optics_angle));
+  const double transmission = cavity_->view_transmission(
+      camera_pose(state_).tip, view_direction(camera_pose(state_), instrument_.optics_angle));
   summary.lowest_transmission = std::min(summary.lowest_transmission, transmission);
   if (transmission < cavity_->settings().obscured_transmission)
     summary.view_obscured_time += cavity_->settings().interval;

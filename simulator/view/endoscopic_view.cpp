@@ -24,8 +24,8 @@
 namespace viscera::view {
 
 namespace {
-constexpr double kNearPlane = 0.0005;  // m: the optics see from half a millimetre
-constexpr double kFarPlane = 0.3;      // m
+constexpr double kNearPlane = 0.0005;              // m: the optics see from half a millimetre
+constexpr double kFarPlane = 0.3;                  // m
 constexpr double kEndoscopeLightFalloff = 0.03;    // m
 constexpr double kLaparoscopeLightFalloff = 0.08;  // m
 

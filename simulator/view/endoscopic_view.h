@@ -1,9 +1,10 @@
 #pragma once
 /// The endoscopic view of a session (seed 000 §7, seed 002 §4–§6): the scene seen from the
-/// optics' tip (the instrument's, or the laparoscope's when held apart) through angled optics (0°, 12°, 30°), lit by a head light at the tip, through
-/// the lens pass (barrel distortion, depth of field, round field stop), with the force bars and
-/// the session-info panel on top. A VTK render window, on screen or offscreen (X only: offscreen
-/// still needs an X server, e.g. Xvfb). Headless sessions never construct one.
+/// optics' tip (the instrument's, or the laparoscope's when held apart) through angled optics (0°,
+/// 12°, 30°), lit by a head light at the tip, through the lens pass (barrel distortion, depth of
+/// field, round field stop), with the force bars and the session-info panel on top. A VTK render
+/// window, on screen or offscreen (X only: offscreen still needs an X server, e.g. Xvfb). Headless
+/// sessions never construct one.
 
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>

@@ -76,9 +76,9 @@ TEST(LaparoscopeCamera, a_script_holds_it_from_the_start_aims_it_blends_it_and_g
   EXPECT_FALSE(released.camera.held);
   EXPECT_EQ(camera_pose(released).tip, released.tip);
   // Without a camera the optics are the instrument's own.
-  const InstrumentState plain = ScriptedTrajectory::from_json(
-                                    script({{{"t", 0.0}, {"tip", {0, 0, 0.05}}}}), "s.json")
-                                    .state(0, 0.0);
+  const InstrumentState plain =
+      ScriptedTrajectory::from_json(script({{{"t", 0.0}, {"tip", {0, 0, 0.05}}}}), "s.json")
+          .state(0, 0.0);
   EXPECT_FALSE(plain.camera.held);
   EXPECT_EQ(camera_pose(plain).axis, plain.axis);
 }

@@ -120,25 +120,6 @@ LaparoscopeCamera blend(const LaparoscopeCamera& a, const LaparoscopeCamera& b, 
   return blend_pose(a, b, f, &LaparoscopeCamera::held);
 }
 
-namespace {
-
-core::Vec3 step_towards(const core::Vec3& from, const core::Vec3& to, double max_step) {
-  const core::Vec3 move = to - from;
-  const double length = move.norm();
-  return length <= max_step ? to : core::Vec3(from + (max_step / length) * move);
-}
-
-}  // namespace
-
-InstrumentState within_hand_speed(const InstrumentState& previous, const InstrumentState& next,
-                                  double max_step) {
-  InstrumentState s = next;
-  s.tip = step_towards(previous.tip, next.tip, max_step);
-  if (previous.second.inserted && next.second.inserted)
-    s.second.tip = step_towards(previous.second.tip, next.second.tip, max_step);
-  return s;
-}
-
 InstrumentState camera_pose(const InstrumentState& state) {
   InstrumentState s;
   s.tip = state.camera.held ? state.camera.tip : state.tip;

@@ -125,15 +125,6 @@ inline constexpr int kInstrumentPorts = 2;
 /// is `state.second`'s pose and controls with everything else at its default.
 InstrumentState in_port(const InstrumentState& state, int port);
 
-/// Fastest a hand moves a tool's tip, m/s: peak tip speeds of laparoscopic and hysteroscopic
-/// tasks are 0.1–0.3 m/s; the shipped scripts stay below 0.25 m/s.
-inline constexpr double kMaxToolSpeed = 1.0;
-
-/// `next` with the tips of the working port's and (when it stays in) the second port's tool
-/// moved at most `max_step` m from `previous`'s, towards `next`'s; everything else as `next`.
-InstrumentState within_hand_speed(const InstrumentState& previous, const InstrumentState& next,
-                                  double max_step);
-
 /// The optics' pose as an instrument state: the held laparoscope's tip, axis and up, else
 /// `state`'s own (the optics at the working port's tip); everything else at its default.
 InstrumentState camera_pose(const InstrumentState& state);

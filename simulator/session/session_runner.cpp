@@ -104,7 +104,7 @@ SessionRunner::SessionRunner(const core::Scenario& scenario, const HeadlessRunOp
 
   std::string surface_object;
   if (options.instrument != nullptr) {
-    state_ = input_ = reachable_ = options.instrument->state(0, 0.0);
+    state_ = input_ = options.instrument->state(0, 0.0);
     tissue_ = make_tissue(scenario, world_, options, state_, perforation_depth_);
     if (options.record_inputs) report_.inputs.emplace_back(0, state_);
     report_.metrics.start_at(state_.tip);
@@ -311,8 +311,7 @@ void SessionRunner::step(const InstrumentState& input) {
       report_.inputs.emplace_back(world_.steps() + 1, input);
     if (!(input == input_)) instrument_moved_ = true;
     input_ = input;
-    reachable_ = within_hand_speed(reachable_, input, kMaxToolSpeed * world_.time_step());
-    state_ = followed(reachable_, world_.bodies(), tissue_->body());
+    state_ = followed(input, world_.bodies(), tissue_->body());
     move_tissue();
     move_second_port();
   }

@@ -140,9 +140,6 @@ class SessionRunner {
   core::InstrumentSpec instrument_;
   SessionReport report_;
   InstrumentState input_;  ///< the input as given
-  /// The input with each tool's tip no faster than a hand moves it (within_hand_speed): a
-  /// device's glitch or a script's jump does not teleport a grasped tube 4 cm in a step.
-  InstrumentState reachable_;
   InstrumentState state_;  ///< the input with its tip where the tissue it follows is now
   std::unique_ptr<InstrumentTissue> tissue_;
   std::unique_ptr<SurfaceCoverage> coverage_;

@@ -223,38 +223,5 @@ TEST(SecondPort, its_grasper_holds_and_moves_the_tube_and_lets_go_when_withdrawn
   EXPECT_NEAR(r.laparoscopy->path_per_hand.at("left"), 0.03 + 0.002, 1e-4);
 }
 
-TEST(SecondPort, a_tool_moves_no_faster_than_a_hand_whatever_its_input_does) {
-  InstrumentState from, to;
-  from.tip = {0.0, 0.0, 0.05};
-  to.tip = {0.04, 0.0, 0.05};  // 4 cm in one step: a device's glitch
-  from.second.inserted = to.second.inserted = true;
-  from.second.tip = {0.0, 0.01, 0.0};
-  to.second.tip = {0.0, 0.01, -0.03};
-  to.tool = LaparoscopicTool::Grasper;
-  const InstrumentState limited = within_hand_speed(from, to, 0.001);
-  EXPECT_NEAR((limited.tip - core::Vec3(0.001, 0.0, 0.05)).norm(), 0.0, 1e-15);
-  EXPECT_NEAR((limited.second.tip - core::Vec3(0.0, 0.01, -0.001)).norm(), 0.0, 1e-15);
-  EXPECT_EQ(limited.tool, LaparoscopicTool::Grasper);  // the rest is the input's
-  // Within reach the input is taken as it is; a tool put in enters where it is placed.
-  EXPECT_EQ(within_hand_speed(limited, limited, 0.001), limited);
-  from.second.inserted = false;
-  EXPECT_EQ(within_hand_speed(from, to, 0.001).second.tip, to.second.tip);
-
-  // In a session the left grasper, closed on the tube, jumps 4 cm: it follows at 1 m/s.
-  const Isthmus i = isthmus();
-  const core::Vec3 grip = i.point - 0.0085 * i.along + 0.008 * i.into;
-  const auto grasper = [&](const core::Vec3& at) {
-    return nlohmann::json{
-        {"tip", at}, {"axis", i.into}, {"up", i.across}, {"tool", "grasper"}, {"close", 1}};
-  };
-  const core::Vec3 far = grip + 0.04 * i.along;
-  const auto input =
-      two_handed({{0.0, grasper(grip)}, {0.2, grasper(grip)}, {0.201, grasper(far)}});
-  SessionRunner runner(left_tube_patient(), on_the_tube(input, 0.21));
-  run(runner, input);
-  const double travelled = (runner.instrument_state().second.tip - grip).norm();
-  EXPECT_NEAR(travelled, kMaxToolSpeed * (0.21 - 0.2), 2e-4);
-}
-
 }  // namespace
 }  // namespace viscera::sim

@@ -14,6 +14,7 @@
 #include "simulator/session/session_trace.h"
 #include "tests/simulator/left_tube_patient.h"
 #include "tests/support/command_runner.h"
+#include "tests/support/free_port.h"
 #include "tests/support/test_paths.h"
 
 namespace viscera {
@@ -22,11 +23,7 @@ namespace {
 using testing::run_program;
 using testing::shell_quote;
 
-/// A port free on loopback a moment ago (bound to port 0, then released).
-std::uint16_t free_port() {
-  const sim::UdpSocket probe("127.0.0.1", 0);
-  return probe.local().port;
-}
+using testing::free_port;
 
 /// The left tube patient written once as a package.
 const std::filesystem::path& tube_package() {

@@ -66,16 +66,7 @@ Isthmus isthmus() {
   const auto& marks = left_tube_patient().landmarks;
   const auto it = std::find_if(marks.begin(), marks.end(),
                                [](const auto& l) { return l.id == "fallopian-tube-left"; });
-  World settled(left_tube_patient());
-  settled.settle();
-  const int tube = settled.body_index("tube-left");
-  const auto rest = settled.state().range(settled.state().rest_positions, tube);
-  const auto now = settled.state().range(settled.state().positions, tube);
-  core::Vec3 sag = core::Vec3::Zero();
-  int near = 0;
-  for (std::size_t k = 0; k < rest.size(); ++k)
-    if ((rest[k] - it->position).norm() < 0.004) sag += now[k] - rest[k], ++near;
-  return {it->position + sag / std::max(near, 1), -it->normal};
+  return {testing::settled_left_isthmus(), -it->normal};
 }
 
 /// The right hand holding the laparoscope still (the working port's input of these tests).

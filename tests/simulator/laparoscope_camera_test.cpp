@@ -15,24 +15,15 @@
 #include "simulator/session/instrument_input.h"
 #include "simulator/session/manual_control.h"
 #include "tests/simulator/left_tube_patient.h"
+#include "tests/simulator/script_json.h"
 
 namespace viscera::sim {
 namespace {
 
 using testing::left_tube_patient;
 
-nlohmann::json script(nlohmann::json waypoints) {
-  return {{"format", "viscera-script"}, {"version", 2}, {"waypoints", std::move(waypoints)}};
-}
-
-std::string input_error(const nlohmann::json& json) {
-  try {
-    ScriptedTrajectory::from_json(json, "s.json", 30.0);
-  } catch (const core::InputError& e) {
-    return e.what();
-  }
-  return "accepted";
-}
+using testing::input_error;
+using testing::script;
 
 double angle_between(const core::Vec3& a, const core::Vec3& b) {
   return std::acos(std::clamp(a.normalized().dot(b.normalized()), -1.0, 1.0));

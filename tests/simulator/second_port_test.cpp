@@ -13,24 +13,15 @@
 #include "simulator/session/session_runner.h"
 #include "simulator/world/world.h"
 #include "tests/simulator/left_tube_patient.h"
+#include "tests/simulator/script_json.h"
 
 namespace viscera::sim {
 namespace {
 
 using testing::left_tube_patient;
 
-nlohmann::json script(nlohmann::json waypoints) {
-  return {{"format", "viscera-script"}, {"version", 2}, {"waypoints", std::move(waypoints)}};
-}
-
-std::string input_error(const nlohmann::json& json) {
-  try {
-    ScriptedTrajectory::from_json(json, "s.json");
-  } catch (const core::InputError& e) {
-    return e.what();
-  }
-  return "accepted";
-}
+using testing::input_error;
+using testing::script;
 
 TEST(SecondPort, a_script_puts_a_tool_in_blends_its_pose_holds_its_switches_and_withdraws_it) {
   const auto trajectory = ScriptedTrajectory::from_json(
@@ -93,19 +84,8 @@ Isthmus isthmus() {
   const auto& marks = left_tube_patient().landmarks;
   const auto it = std::find_if(marks.begin(), marks.end(),
                                [](const auto& l) { return l.id == "fallopian-tube-left"; });
-  // The session starts from the settled patient: the free isthmus hangs a few millimetres below
-  // its authored place, by the mean displacement of its knots within 4 mm of the landmark.
-  World settled(left_tube_patient());
-  settled.settle();
-  const int tube = settled.body_index("tube-left");
-  const auto rest = settled.state().range(settled.state().rest_positions, tube);
-  const auto now = settled.state().range(settled.state().positions, tube);
-  core::Vec3 sag = core::Vec3::Zero();
-  int near = 0;
-  for (std::size_t k = 0; k < rest.size(); ++k)
-    if ((rest[k] - it->position).norm() < 0.004) sag += now[k] - rest[k], ++near;
   Isthmus i;
-  i.point = it->position + sag / std::max(near, 1);
+  i.point = testing::settled_left_isthmus();
   i.into = -it->normal;
   // The template's left tube runs out from the cornu along +x, rising 1 in 3 over its first
   // segment.

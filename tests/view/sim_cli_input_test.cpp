@@ -13,6 +13,7 @@
 #include "simulator/session/manual_control.h"
 #include "simulator/session/session_trace.h"
 #include "tests/support/command_runner.h"
+#include "tests/support/free_port.h"
 #include "tests/support/test_paths.h"
 #include "tests/view/view_fixtures.h"
 
@@ -22,11 +23,7 @@ namespace {
 using testing::run_program;
 using testing::shell_quote;
 
-/// A port free on loopback a moment ago (bound to port 0, then released).
-std::uint16_t free_port() {
-  const sim::UdpSocket probe("127.0.0.1", 0);
-  return probe.local().port;
-}
+using testing::free_port;
 
 /// Runs `viscera-sim run PATIENT --device udp:PORT` with `mode` (" --headless" or a window's
 /// size) for 1 s while a simulated device pushes the tool 2 mm along its shaft; checks the

@@ -7,7 +7,7 @@
 
 namespace viscera::sim {
 
-InstrumentState instrument_from_pose(const DevicePose& pose) {
+InstrumentState instrument_from_pose(const DevicePose& pose, LaparoscopicTool kept) {
   const auto& o = pose.orientation;
   Eigen::Quaterniond q(o[0], o[1], o[2], o[3]);
   if (q.norm() < 1e-12) q = Eigen::Quaterniond::Identity();
@@ -24,28 +24,16 @@ InstrumentState instrument_from_pose(const DevicePose& pose) {
   state.jaws_closed = (pose.buttons & kDeviceJawsClosed) != 0U;
   state.irrigating = (pose.buttons & kDeviceIrrigating) != 0U;
   const std::uint32_t tool = (pose.buttons & kDeviceToolMask) >> kDeviceToolShift;
-  if (tool <= static_cast<std::uint32_t>(kLastLaparoscopicTool))
-    state.tool = static_cast<LaparoscopicTool>(tool);
+  state.tool = tool <= static_cast<std::uint32_t>(kLastLaparoscopicTool)
+                   ? static_cast<LaparoscopicTool>(tool)
+                   : kept;
   orthonormalise(state);
   return state;
 }
 
 SecondPort second_port_from_pose(const DevicePose& pose, const SecondPort& before) {
   if ((pose.buttons & kDeviceWithdrawn) != 0U) return SecondPort{};
-  const InstrumentState state = instrument_from_pose(pose);
-  SecondPort port;
-  port.inserted = true;
-  port.tip = state.tip;
-  port.axis = state.axis;
-  port.up = state.up;
-  port.tool = state.tool;
-  if (((pose.buttons & kDeviceToolMask) >> kDeviceToolShift) == kDeviceToolUnchanged)
-    port.tool = before.tool;
-  port.jaws_closed = state.jaws_closed;
-  port.coagulation = state.coagulation;
-  port.electrode = state.electrode;
-  port.irrigating = state.irrigating;
-  return port;
+  return port_tool(instrument_from_pose(pose, before.tool));
 }
 
 DeviceInput::DeviceInput(const BridgeOptions& options, const InstrumentState& start,
@@ -57,12 +45,7 @@ DeviceInput::~DeviceInput() {
 }
 
 InstrumentState DeviceInput::next(double) {
-  if (const auto pose = link_.take_pose()) {
-    const LaparoscopicTool before = state_.tool;
-    state_ = instrument_from_pose(*pose);
-    if (((pose->buttons & kDeviceToolMask) >> kDeviceToolShift) == kDeviceToolUnchanged)
-      state_.tool = before;
-  }
+  if (const auto pose = link_.take_pose()) state_ = instrument_from_pose(*pose, state_.tool);
   return state_;
 }
 

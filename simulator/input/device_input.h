@@ -43,9 +43,10 @@ inline constexpr std::uint32_t kDeviceWithdrawn = 1U << 8;
 /// The instrument state a pose describes: tip = position, axis = q·ẑ, up = q·ŷ (q normalised;
 /// a zero quaternion counts as the identity), valves from the pose, abort, the pedals, the
 /// laparoscopic tool, its jaws and the irrigation valve from the buttons. The loop stands at the
-/// sheath (the device moves the whole instrument). Tool bits 7 give LaparoscopicTool::None here;
-/// the inputs keep their previous tool for them.
-InstrumentState instrument_from_pose(const DevicePose& pose);
+/// sheath (the device moves the whole instrument). Tool bits 7 keep `kept`, the tool the input
+/// had.
+InstrumentState instrument_from_pose(const DevicePose& pose,
+                                     LaparoscopicTool kept = LaparoscopicTool::None);
 
 /// The second port a pose of the left hand's device describes, from the port as it was
 /// (`before`): with kDeviceWithdrawn an empty port; else the tool in, its tip, axis and up as

@@ -120,6 +120,20 @@ LaparoscopeCamera blend(const LaparoscopeCamera& a, const LaparoscopeCamera& b, 
   return blend_pose(a, b, f, &LaparoscopeCamera::held);
 }
 
+SecondPort port_tool(const InstrumentState& tool, bool inserted) {
+  SecondPort port;
+  port.inserted = inserted;
+  port.tip = tool.tip;
+  port.axis = tool.axis;
+  port.up = tool.up;
+  port.tool = tool.tool;
+  port.jaws_closed = tool.jaws_closed;
+  port.coagulation = tool.coagulation;
+  port.electrode = tool.electrode;
+  port.irrigating = tool.irrigating;
+  return port;
+}
+
 InstrumentState camera_pose(const InstrumentState& state) {
   InstrumentState s;
   s.tip = state.camera.held ? state.camera.tip : state.tip;

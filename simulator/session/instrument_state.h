@@ -124,6 +124,9 @@ inline constexpr int kInstrumentPorts = 2;
 /// The tool in port `port` (0 or 1) as an instrument state of its own: port 0 is `state`; port 1
 /// is `state.second`'s pose and controls with everything else at its default.
 InstrumentState in_port(const InstrumentState& state, int port);
+/// The inverse: `tool`'s pose and controls (tip, axis, up, tool, jaws, both pedals, irrigation)
+/// as a port's tool, in the port when `inserted`.
+SecondPort port_tool(const InstrumentState& tool, bool inserted = true);
 
 /// The optics' pose as an instrument state: the held laparoscope's tip, axis and up, else
 /// `state`'s own (the optics at the working port's tip); everything else at its default.

@@ -139,16 +139,7 @@ void ManualControl::sync_second() {
     state_.camera.axis = camera_.axis;
     state_.camera.up = camera_.up;
   }
-  if (tool_hand_ != 1) return;
-  SecondPort& port = state_.second;
-  port.tip = left_.tip;
-  port.axis = left_.axis;
-  port.up = left_.up;
-  port.tool = left_.tool;
-  port.jaws_closed = left_.jaws_closed;
-  port.coagulation = left_.coagulation;
-  port.electrode = left_.electrode;
-  port.irrigating = left_.irrigating;
+  if (tool_hand_ == 1) state_.second = port_tool(left_);
 }
 
 void ManualControl::drag(double dx, double dy) {

@@ -28,20 +28,6 @@ constexpr double kNearPlane = 0.0005;              // m: the optics see from hal
 constexpr double kFarPlane = 0.3;                  // m
 constexpr double kEndoscopeLightFalloff = 0.03;    // m
 constexpr double kLaparoscopeLightFalloff = 0.08;  // m
-
-/// The working port's tool as a port of its own: in view while the laparoscope is held apart
-/// (otherwise it runs along the optics, out of their view).
-sim::SecondPort working_port(const sim::InstrumentState& state) {
-  sim::SecondPort port;
-  port.inserted = state.camera.held;
-  port.tip = state.tip;
-  port.axis = state.axis;
-  port.up = state.up;
-  port.tool = state.tool;
-  port.jaws_closed = state.jaws_closed;
-  return port;
-}
-
 }  // namespace
 
 EndoscopicView::EndoscopicView(const core::Scenario& scenario, const std::filesystem::path& package,
@@ -152,7 +138,9 @@ void EndoscopicView::update(const sim::SessionSnapshot& snapshot) {
     lens_->lens_fog = snapshot.lens_fog;
   }
   left_tool_->update(snapshot.instrument.second);
-  right_tool_->update(working_port(snapshot.instrument));
+  // The working port's tool is in view while the laparoscope is held apart; otherwise it runs
+  // along the optics, out of their view.
+  right_tool_->update(sim::port_tool(snapshot.instrument, snapshot.instrument.camera.held));
   set_instrument(sim::camera_pose(snapshot.instrument), snapshot.optics_angle);
   {
     // The smoke faces the camera just placed.
